@@ -1,0 +1,12 @@
+// Subcommands of the luxplan executable; each lives in its own cmd_*.cpp and
+// registers its options and callback on the CLI11 app.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+namespace luxplan::cli {
+
+void registerValidateCommand(CLI::App& app);
+void registerInfoCommand(CLI::App& app);
+
+}  // namespace luxplan::cli
