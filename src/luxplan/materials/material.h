@@ -1,0 +1,27 @@
+// A surface material as the scene file describes it (SCENE-FORMAT.md, "materials").
+// Reflectances are linear RGB in [0,1]; photometric results use their luminance.
+#pragma once
+
+#include <string>
+
+#include <luxplan/core/math.h>
+
+namespace luxplan {
+
+enum class MaterialType { Diffuse, Glossy, Glass, Mirror };
+
+struct Material {
+    std::string name;
+    MaterialType type = MaterialType::Diffuse;
+    // diffuse: Lambertian albedo. glossy: specular reflectance at normal incidence
+    // (the coat's F0). mirror: reflectance. Unused by glass.
+    Vec3 reflectance{0.5, 0.5, 0.5};
+    // glossy only: albedo of the diffuse base under the coat.
+    Vec3 base{0.0, 0.0, 0.0};
+    // glossy only: GGX alpha (the microfacet roughness, not squared again), in (0, 1].
+    double roughness = 0.1;
+    // glass only: transmittance of the thin pane at normal incidence, in [0, 1].
+    double transmittance = 0.88;
+};
+
+}  // namespace luxplan
