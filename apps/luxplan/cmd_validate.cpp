@@ -1,18 +1,141 @@
-// `luxplan validate SCENE`: exit 0, or print every problem as FILE: /json/path: message.
+// `luxplan validate SCENE` (exit 0, or every problem as FILE: /json/path: message)
+// and `luxplan info SCENE` (a summary of what the scene holds).
+#include <iomanip>
+#include <iostream>
+
 #include "commands.h"
+#include <luxplan/io/layout_io.h>
+#include <luxplan/io/scene_loader.h>
+#include <luxplan/scene/layout.h>
 
 namespace luxplan::cli {
+namespace {
+
+const char* wallName(Wall w) {
+    switch (w) {
+        case Wall::North: return "north";
+        case Wall::South: return "south";
+        case Wall::East: return "east";
+        case Wall::West: return "west";
+        case Wall::Ceiling: return "ceiling";
+    }
+    return "?";
+}
+
+const char* samplerTypeName(LightSamplerType t) {
+    switch (t) {
+        case LightSamplerType::Planar: return "planar";
+        case LightSamplerType::Directional: return "directional";
+        case LightSamplerType::Volume: return "volume";
+    }
+    return "?";
+}
+
+const char* constraintName(ConstraintType t) {
+    switch (t) {
+        case ConstraintType::Alignment: return "alignment";
+        case ConstraintType::Distance: return "distance";
+        case ConstraintType::Focus: return "focus";
+        case ConstraintType::Conversation: return "conversation";
+        case ConstraintType::Overlap: return "overlap";
+    }
+    return "?";
+}
+
+std::string entityName(const Scene& s, int e) { return e == kRoomEntity ? "room" : e >= 0 ? s.entities[e].path : "?"; }
+
+void printSummary(const Scene& s, std::ostream& out) {
+    out << std::fixed << std::setprecision(2);
+    out << "scene \"" << s.name << "\" (" << s.file.string() << ")\n";
+    out << "  site: latitude " << s.site.latitude << ", longitude " << s.site.longitude << ", north " << s.site.northDeg
+        << " deg\n";
+    if (s.daylight) {
+        const DaylightSpec& d = *s.daylight;
+        const char* model = d.sky == SkyModel::Preetham ? "preetham" : d.sky == SkyModel::CieOvercast ? "cie_overcast" : "uniform";
+        out << "  daylight: " << model << " sky" << (d.sun ? " + sun" : "");
+        if (d.from) out << ", " << *d.from << (d.to ? " to " + *d.to : "");
+        out << "\n";
+    } else {
+        out << "  daylight: none (artificial light only)\n";
+    }
+    int rooms = 0, openings = 0, glazed = 0;
+    for (const auto& g : s.geometry)
+        if (g.room) {
+            ++rooms;
+            for (const auto& o : g.room->openings) ++openings, glazed += o.material.has_value();
+        }
+    out << "  materials: " << s.materials.size() << "\n";
+    out << "  rooms: " << rooms << ", openings: " << openings << " (" << glazed << " glazed)\n";
+    for (const auto& g : s.geometry)
+        if (g.room) {
+            Vec3 size = g.room->box.size();
+            out << "    " << g.name << ": " << size.x << " x " << size.y << " x " << size.z << " m, floor "
+                << size.x * size.y << " m2\n";
+            for (const auto& o : g.room->openings) {
+                out << "      opening on " << wallName(o.wall) << ": ";
+                if (o.wall == Wall::Ceiling) out << o.size.x << " x " << o.size.y << " m";
+                else out << o.width << " x " << o.height << " m at offset " << o.offset << ", sill " << o.sill;
+                out << (o.material ? " glazed (" + s.materials[*o.material].name + ")" : " open") << "\n";
+            }
+        }
+    int blockers = 0;
+    for (const auto& g : s.geometry) blockers += g.invisible;
+    out << "  static items: " << s.geometry.size() << " (" << blockers << " invisible blockers)\n";
+    int fixedLights = 0;
+    double flux = 0;
+    for (const auto& e : s.emitters) fixedLights += e.entity < 0, flux += e.fluxLm;
+    out << "  luminaires: " << fixedLights << " fixed, " << s.emitters.size() - fixedLights << " on entities, "
+        << std::setprecision(0) << flux << " lm in all\n" << std::setprecision(2);
+    int groups = 0, movable = 0;
+    for (const auto& e : s.entities) groups += e.isGroup(), movable += e.movable();
+    out << "  entities: " << s.entities.size() << " (" << groups << " groups, " << movable << " movable)\n";
+    for (const auto& e : s.entities) {
+        int depth = 0;
+        for (int p = e.parent; p >= 0; p = s.entities[p].parent) ++depth;
+        out << "    " << std::string(2 * depth, ' ') << e.path << (e.isGroup() ? " [group]" : "");
+        if (!e.parts.empty()) {
+            out << " parts:";
+            for (const auto& p : e.parts) out << " " << p.kind;
+        }
+        out << (e.movable() ? " regions: " + std::to_string(e.regions.size()) : " fixed");
+        if (e.hasGeometry()) out << ", volume " << std::setprecision(3) << e.voxels.volume() << " m3" << std::setprecision(2);
+        out << "\n";
+    }
+    out << "  samplers: " << s.samplers.size() << "\n";
+    for (const auto& sp : s.samplers)
+        out << "    " << sp.name << " (" << samplerTypeName(sp.type) << (sp.entity >= 0 ? ", on " + s.entities[sp.entity].path : "")
+            << "): target [" << sp.targetMin << ", " << sp.targetMax << "] " << sp.unit() << "\n";
+    out << "  constraints: " << s.constraints.size() << "\n";
+    for (const auto& c : s.constraints) {
+        out << "    " << constraintName(c.type);
+        if (c.type != ConstraintType::Overlap) out << " " << entityName(s, c.a) << " - " << entityName(s, c.b);
+        else out << " tolerance " << s.overlapTolerance;
+        out << "\n";
+    }
+    out << "  objective: lighting weight " << s.objective.lightingWeight << "; optimizer: " << s.optimizer.iterations
+        << " iterations, seed " << s.optimizer.seed << ", " << s.optimizer.pathsPerPoint << " paths per point\n";
+}
+
+}  // namespace
 
 void registerValidateCommand(CLI::App& app) {
     auto* cmd = app.add_subcommand("validate", "Check a scene file against the format; print every error");
     auto scene = std::make_shared<std::string>();
+    auto layout = std::make_shared<std::string>();
     cmd->add_option("scene", *scene, "Scene JSON file")->required();
+    cmd->add_option("--layout", *layout, "Also check a layout.json against the scene");
+    cmd->callback([scene, layout] {
+        Scene s = io::loadScene(*scene);
+        if (!layout->empty()) io::readLayout(*layout, s);
+        std::cout << *scene << ": valid\n";
+    });
 }
 
 void registerInfoCommand(CLI::App& app) {
     auto* cmd = app.add_subcommand("info", "Validate a scene and print a summary of it");
     auto scene = std::make_shared<std::string>();
     cmd->add_option("scene", *scene, "Scene JSON file")->required();
+    cmd->callback([scene] { printSummary(io::loadScene(*scene), std::cout); });
 }
 
 }  // namespace luxplan::cli

@@ -25,7 +25,10 @@ public:
 private:
     static std::string join(const std::vector<Diagnostic>& d) {
         std::string s;
-        for (size_t i = 0; i < d.size(); ++i) s += (i ? "\n" : "") + d[i].str();
+        for (size_t i = 0; i < d.size(); ++i) {
+            if (i) s += '\n';
+            s += d[i].str();
+        }
         return s;
     }
     std::vector<Diagnostic> diagnostics_;

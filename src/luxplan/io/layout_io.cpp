@@ -1,0 +1,91 @@
+#include <luxplan/io/layout_io.h>
+
+#include <fstream>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include <luxplan/io/json_fields.h>
+
+namespace luxplan::io {
+
+std::string layoutToJson(const Scene& scene, const Layout& layout) {
+    Json entities = Json::object();
+    for (size_t i = 0; i < scene.entities.size(); ++i) {
+        if (!scene.entities[i].movable()) continue;
+        const Placement& p = layout.placements[i];
+        entities[scene.entities[i].path] = {{"position", {p.position.x, p.position.y, p.position.z}},
+                                            {"rotation", p.rotationDeg},
+                                            {"region", p.region}};
+    }
+    return Json{{"entities", entities}}.dump(2) + "\n";
+}
+
+void writeLayout(const std::filesystem::path& file, const Scene& scene, const Layout& layout) {
+    std::ofstream out(file);
+    out << layoutToJson(scene, layout);
+    if (!out) throw IoError("cannot write " + file.string());
+}
+
+Layout readLayout(const std::filesystem::path& file, const Scene& scene) {
+    DiagnosticSink sink;
+    sink.file = file.string();
+    std::ifstream in(file);
+    if (!in) {
+        sink.error("", "cannot open the file");
+        throw SceneError(sink.diagnostics);
+    }
+    std::stringstream text;
+    text << in.rdbuf();
+    Json root;
+    try {
+        root = Json::parse(text.str());
+    } catch (const Json::parse_error& e) {
+        sink.error("", std::string("malformed JSON: ") + e.what());
+        throw SceneError(sink.diagnostics);
+    }
+    Layout layout = initialLayout(scene);
+    Fields top(sink, root, "", {"entities"}, "a layout object");
+    if (top.valid() && !top.has("entities")) top.missing("entities");
+    if (top.has("entities")) {
+        const Json& entities = top.get("entities");
+        if (!entities.is_object()) sink.error("/entities", "expected an object keyed by entity path, got " + typeName(entities));
+        else
+            for (const auto& [name, value] : entities.items()) {
+                std::string path = pointer("/entities", name);
+                int index = scene.findEntity(name);
+                if (index < 0) {
+                    sink.error(path, "unknown entity \"" + name + "\" in scene " + scene.file.string());
+                    continue;
+                }
+                const Entity& e = scene.entities[index];
+                Fields f(sink, value, path, {"position", "rotation", "region"});
+                if (!f.valid()) continue;
+                if (!e.movable()) {
+                    sink.error(path, "entity \"" + name + "\" is fixed (it has no placement regions)");
+                    continue;
+                }
+                Placement& p = layout.placements[index];
+                if (f.has("position")) {
+                    const Json& pos = f.get("position");
+                    auto n = readNumbers(sink, pos, f.at("position"), pos.is_array() && pos.size() == 2 ? 2 : 3);
+                    if (n) p.position = Vec3((*n)[0], (*n)[1], n->size() == 3 ? (*n)[2] : e.position.z);
+                }
+                p.rotationDeg = f.number("rotation", p.rotationDeg);
+                auto region = f.integer("region", Range::closed(0, double(e.regions.size()) - 1));
+                if (region) {
+                    p.region = *region;
+                    if (!regionContains(e.regions[*region], {p.position.x, p.position.y}, p.rotationDeg, 1e-6))
+                        f.error("region", "position (" + formatNumber(p.position.x) + ", " + formatNumber(p.position.y) +
+                                              ") with rotation " + formatNumber(p.rotationDeg) + " lies outside region " +
+                                              std::to_string(*region));
+                } else if (!f.has("region")) {
+                    p.region = findRegion(e, {p.position.x, p.position.y}, p.rotationDeg);
+                }
+            }
+    }
+    if (sink.count()) throw SceneError(sink.diagnostics);
+    return layout;
+}
+
+}  // namespace luxplan::io

@@ -1,0 +1,18 @@
+// Loads and validates a scene file (SCENE-FORMAT.md, version 1) into the scene model.
+#pragma once
+
+#include <filesystem>
+
+#include <luxplan/scene/scene.h>
+
+namespace luxplan::io {
+
+struct LoadOptions {
+    double voxelSize = 0.02;  // target voxel edge (m) for the overlap volumes
+};
+
+// Reads, validates and builds the scene. Every problem found is reported at once:
+// throws SceneError whose diagnostics read FILE: /json/path: message.
+Scene loadScene(const std::filesystem::path& file, const LoadOptions& options = {});
+
+}  // namespace luxplan::io

@@ -1,0 +1,250 @@
+#include <luxplan/rt/embree_scene.h>
+
+#include <cstring>
+#include <mutex>
+
+#include <luxplan/core/error.h>
+
+namespace luxplan {
+
+// ---- device ----
+
+static const char* errorName(RTCError code) {
+    switch (code) {
+        case RTC_ERROR_NONE: return "no error";
+        case RTC_ERROR_UNKNOWN: return "unknown error";
+        case RTC_ERROR_INVALID_ARGUMENT: return "invalid argument";
+        case RTC_ERROR_INVALID_OPERATION: return "invalid operation";
+        case RTC_ERROR_OUT_OF_MEMORY: return "out of memory";
+        case RTC_ERROR_UNSUPPORTED_CPU: return "unsupported CPU";
+        case RTC_ERROR_CANCELLED: return "cancelled";
+    }
+    return "unrecognized error";
+}
+
+EmbreeDevice::EmbreeDevice() {
+    device_ = rtcNewDevice(nullptr);
+    if (!device_) throw EmbreeError("cannot create the Embree device: " + std::string(errorName(rtcGetDeviceError(nullptr))));
+    rtcSetDeviceErrorFunction(device_, &EmbreeDevice::onError, this);
+}
+
+EmbreeDevice::~EmbreeDevice() { rtcReleaseDevice(device_); }
+
+std::shared_ptr<EmbreeDevice> EmbreeDevice::shared() {
+    static std::mutex mutex;
+    static std::weak_ptr<EmbreeDevice> instance;
+    std::lock_guard lock(mutex);
+    auto device = instance.lock();
+    if (!device) {
+        device = std::make_shared<EmbreeDevice>();
+        instance = device;
+    }
+    return device;
+}
+
+void EmbreeDevice::onError(void* self, RTCError code, const char* message) {
+    auto* device = static_cast<EmbreeDevice*>(self);
+    if (!device->pendingError_.empty()) device->pendingError_ += "; ";
+    device->pendingError_ += std::string(errorName(code)) + (message ? std::string(": ") + message : "");
+}
+
+void EmbreeDevice::check(const char* during) {
+    if (pendingError_.empty()) return;
+    std::string message = "Embree error during " + std::string(during) + ": " + pendingError_;
+    pendingError_.clear();
+    throw EmbreeError(message);
+}
+
+// ---- scene ----
+
+namespace {
+
+void setRowMajor(RTCGeometry g, const Transform& t) {
+    float m[12] = {float(t.m[0]), float(t.m[1]), float(t.m[2]), float(t.t.x),
+                   float(t.m[3]), float(t.m[4]), float(t.m[5]), float(t.t.y),
+                   float(t.m[6]), float(t.m[7]), float(t.m[8]), float(t.t.z)};
+    rtcSetGeometryTransform(g, 0, RTC_FORMAT_FLOAT3X4_ROW_MAJOR, m);
+}
+
+RTCRay toRtcRay(const Ray& r) {
+    RTCRay ray;
+    ray.org_x = float(r.origin.x), ray.org_y = float(r.origin.y), ray.org_z = float(r.origin.z);
+    ray.dir_x = float(r.direction.x), ray.dir_y = float(r.direction.y), ray.dir_z = float(r.direction.z);
+    ray.tnear = float(r.tMin);
+    ray.tfar = std::isinf(r.tMax) ? std::numeric_limits<float>::infinity() : float(r.tMax);
+    ray.time = 0;
+    ray.mask = 0xffffffffu;
+    ray.id = 0;
+    ray.flags = 0;
+    return ray;
+}
+
+}  // namespace
+
+unsigned EmbreeScene::attachMesh(SubScene& sub, const TriangleMesh& mesh, HitKind kind, int index) {
+    RTCGeometry g = rtcNewGeometry(device_->handle(), RTC_GEOMETRY_TYPE_TRIANGLE);
+    auto* v = static_cast<float*>(
+        rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), mesh.positions.size()));
+    for (size_t i = 0; i < mesh.positions.size(); ++i) {
+        v[3 * i] = float(mesh.positions[i].x), v[3 * i + 1] = float(mesh.positions[i].y), v[3 * i + 2] = float(mesh.positions[i].z);
+    }
+    auto* idx = static_cast<unsigned*>(
+        rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), mesh.triangles.size()));
+    std::memcpy(idx, mesh.triangles.data(), mesh.triangles.size() * 3 * sizeof(unsigned));
+    rtcCommitGeometry(g);
+    unsigned id = rtcAttachGeometry(sub.scene, g);
+    rtcReleaseGeometry(g);
+    if (sub.geometries.size() <= id) sub.geometries.resize(id + 1);
+    sub.geometries[id] = {kind, index, &mesh};
+    return id;
+}
+
+void EmbreeScene::attachEmitter(SubScene& sub, const Emitter& e, int index) {
+    if (e.shape == EmitterShape::Rect) {
+        // Two triangles, wound so that their normal is the emitter's.
+        Vec3 v = e.up, u = cross(v, e.normal);
+        Vec3 hu = u * (e.size.x / 2), hv = v * (e.size.y / 2);
+        TriangleMesh& m = emitterMeshes_[index];
+        addQuad(m, e.center - hu - hv, e.center + hu - hv, e.center + hu + hv, e.center - hu + hv, 0);
+        attachMesh(sub, m, HitKind::Emitter, index);
+        return;
+    }
+    bool sphere = e.shape == EmitterShape::Sphere;
+    RTCGeometry g = rtcNewGeometry(device_->handle(), sphere ? RTC_GEOMETRY_TYPE_SPHERE_POINT : RTC_GEOMETRY_TYPE_ORIENTED_DISC_POINT);
+    auto* p = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, 4 * sizeof(float), 1));
+    p[0] = float(e.center.x), p[1] = float(e.center.y), p[2] = float(e.center.z), p[3] = float(e.radius);
+    if (!sphere) {
+        auto* n = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_NORMAL, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), 1));
+        n[0] = float(e.normal.x), n[1] = float(e.normal.y), n[2] = float(e.normal.z);
+    }
+    rtcCommitGeometry(g);
+    unsigned id = rtcAttachGeometry(sub.scene, g);
+    rtcReleaseGeometry(g);
+    if (sub.geometries.size() <= id) sub.geometries.resize(id + 1);
+    sub.geometries[id] = {HitKind::Emitter, index, nullptr};
+}
+
+void EmbreeScene::finishSubScene(SubScene& sub) {
+    rtcCommitScene(sub.scene);
+    RTCGeometry inst = rtcNewGeometry(device_->handle(), RTC_GEOMETRY_TYPE_INSTANCE);
+    rtcSetGeometryInstancedScene(inst, sub.scene);
+    setRowMajor(inst, sub.entity >= 0 ? worldFromEntity_[sub.entity] : Transform());
+    rtcCommitGeometry(inst);
+    sub.instanceId = rtcAttachGeometry(top_, inst);
+    rtcReleaseGeometry(inst);
+    if (subSceneOfInstance_.size() <= sub.instanceId) subSceneOfInstance_.resize(sub.instanceId + 1, -1);
+}
+
+EmbreeScene::EmbreeScene(const Scene& scene, const Layout& layout, std::shared_ptr<EmbreeDevice> device)
+    : scene_(scene), device_(std::move(device)) {
+    RTCDevice dev = device_->handle();
+    worldFromEntity_ = worldTransforms(scene, layout);
+    emitterMeshes_.resize(scene.emitters.size());
+    top_ = rtcNewScene(dev);
+    rtcSetSceneFlags(top_, RTC_SCENE_FLAG_DYNAMIC);
+    rtcSetSceneBuildQuality(top_, RTC_BUILD_QUALITY_LOW);
+
+    // Static sub-scene: visible static items and fixed luminaires. Invisible blockers
+    // only collide (overlap constraint) and take no part in light transport.
+    subScenes_.emplace_back();
+    subScenes_[0].scene = rtcNewScene(dev);
+    for (size_t i = 0; i < scene.geometry.size(); ++i)
+        if (!scene.geometry[i].invisible && !scene.geometry[i].mesh.empty())
+            attachMesh(subScenes_[0], scene.geometry[i].mesh, HitKind::Static, int(i));
+    for (size_t i = 0; i < scene.emitters.size(); ++i)
+        if (scene.emitters[i].entity < 0) attachEmitter(subScenes_[0], scene.emitters[i], int(i));
+
+    subSceneOfEntity_.assign(scene.entities.size(), -1);
+    for (size_t i = 0; i < scene.entities.size(); ++i) {
+        const Entity& e = scene.entities[i];
+        if (!e.hasGeometry() && e.emitters.empty()) continue;
+        SubScene sub;
+        sub.scene = rtcNewScene(dev);
+        sub.entity = int(i);
+        if (e.hasGeometry()) attachMesh(sub, e.mesh, HitKind::Entity, int(i));
+        for (int em : e.emitters) attachEmitter(sub, scene.emitters[em], em);
+        subSceneOfEntity_[i] = int(subScenes_.size());
+        subScenes_.push_back(std::move(sub));
+    }
+    for (size_t s = 0; s < subScenes_.size(); ++s) {
+        finishSubScene(subScenes_[s]);
+        subSceneOfInstance_[subScenes_[s].instanceId] = int(s);
+    }
+    commit();
+}
+
+EmbreeScene::~EmbreeScene() {
+    for (auto& sub : subScenes_) rtcReleaseScene(sub.scene);
+    rtcReleaseScene(top_);
+}
+
+size_t EmbreeScene::instanceCount() const { return subScenes_.size() - 1; }
+
+void EmbreeScene::setEntityTransform(int entity, const Transform& worldFromEntity) {
+    worldFromEntity_[entity] = worldFromEntity;
+    int s = subSceneOfEntity_[entity];
+    if (s < 0) return;
+    RTCGeometry inst = rtcGetGeometry(top_, subScenes_[s].instanceId);
+    setRowMajor(inst, worldFromEntity);
+    rtcCommitGeometry(inst);
+}
+
+void EmbreeScene::setLayout(const Layout& layout) {
+    auto world = worldTransforms(scene_, layout);
+    for (size_t i = 0; i < world.size(); ++i) setEntityTransform(int(i), world[i]);
+    commit();
+}
+
+void EmbreeScene::commit() {
+    rtcCommitScene(top_);
+    device_->check("scene commit");
+}
+
+std::optional<Hit> EmbreeScene::intersect(const Ray& r) const {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    RTCRayHit rh;
+    rh.ray = toRtcRay(r);
+    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    rtcIntersect1(top_, &context, &rh);
+    if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
+
+    const SubScene& sub = subScenes_[subSceneOfInstance_[rh.hit.instID[0]]];
+    const GeometryInfo& info = sub.geometries[rh.hit.geomID];
+    Hit hit;
+    hit.t = rh.ray.tfar;
+    hit.point = r.origin + r.direction * hit.t;
+    hit.kind = info.kind;
+    hit.index = info.index;
+    hit.primitive = rh.hit.primID;
+    // Embree's Ng is in the instance's object space, unnormalized. Entity transforms
+    // are rigid, so normals transform like vectors.
+    const Transform* world = sub.entity >= 0 ? &worldFromEntity_[sub.entity] : nullptr;
+    Vec3 ng(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z);
+    if (info.mesh) {
+        ng = info.mesh->geometricNormal(rh.hit.primID);  // exact, in double
+        hit.material = info.mesh->materials[rh.hit.primID];
+        Vec3 ns = ng;
+        if (info.mesh->normals.size() == info.mesh->positions.size()) {
+            const auto& tri = info.mesh->triangles[rh.hit.primID];
+            double u = rh.hit.u, v = rh.hit.v;
+            ns = normalize(info.mesh->normals[tri[0]] * (1 - u - v) + info.mesh->normals[tri[1]] * u +
+                           info.mesh->normals[tri[2]] * v);
+        }
+        hit.shadingNormal = world ? normalize(world->applyVector(ns)) : ns;
+    }
+    hit.geometricNormal = normalize(world ? world->applyVector(ng) : ng);
+    if (!info.mesh) hit.shadingNormal = hit.geometricNormal;
+    return hit;
+}
+
+bool EmbreeScene::occluded(const Ray& r) const {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    RTCRay ray = toRtcRay(r);
+    rtcOccluded1(top_, &context, &ray);
+    return ray.tfar < 0;  // Embree sets tfar to -inf on a hit
+}
+
+}  // namespace luxplan

@@ -1,0 +1,107 @@
+// The scene on Embree 3: one device with an error callback, the static geometry in
+// one sub-scene, and every entity with geometry (parts or emitters) in a sub-scene
+// of its own, instanced in the top-level scene. Moving furniture updates instance
+// transforms and re-commits the (small) top level only.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <embree3/rtcore.h>
+
+#include <luxplan/scene/layout.h>
+#include <luxplan/scene/scene.h>
+
+namespace luxplan {
+
+// The process's Embree device. Errors reported by Embree's callback are kept and
+// turned into EmbreeError by check().
+class EmbreeDevice {
+public:
+    EmbreeDevice();
+    ~EmbreeDevice();
+    EmbreeDevice(const EmbreeDevice&) = delete;
+    EmbreeDevice& operator=(const EmbreeDevice&) = delete;
+
+    static std::shared_ptr<EmbreeDevice> shared();
+    RTCDevice handle() const { return device_; }
+    // Throws EmbreeError if Embree reported an error since the last check.
+    void check(const char* during);
+
+private:
+    static void onError(void* self, RTCError code, const char* message);
+    RTCDevice device_ = nullptr;
+    std::string pendingError_;
+};
+
+struct Ray {
+    Vec3 origin;
+    Vec3 direction;  // need not be unit length; t is in units of its length
+    double tMin = 0;
+    double tMax = kInf;
+};
+
+enum class HitKind { Static, Entity, Emitter };
+
+struct Hit {
+    double t = 0;
+    Vec3 point;
+    Vec3 geometricNormal;  // unit, world frame, from the triangle's winding (outwards)
+    Vec3 shadingNormal;    // interpolated vertex normal if the mesh has them, else geometric
+    uint32_t material = 0; // Scene::materials index (static and entity surfaces)
+    HitKind kind = HitKind::Static;
+    int index = -1;        // static item, entity or emitter index, by kind
+    uint32_t primitive = 0;
+};
+
+class EmbreeScene {
+public:
+    EmbreeScene(const Scene& scene, const Layout& layout, std::shared_ptr<EmbreeDevice> device = EmbreeDevice::shared());
+    ~EmbreeScene();
+    EmbreeScene(const EmbreeScene&) = delete;
+    EmbreeScene& operator=(const EmbreeScene&) = delete;
+
+    // Places every entity for `layout` and commits the top level.
+    void setLayout(const Layout& layout);
+    // Lower level: set instance transforms one by one, then commit() once.
+    void setEntityTransform(int entity, const Transform& worldFromEntity);
+    void commit();
+
+    std::optional<Hit> intersect(const Ray& ray) const;
+    bool occluded(const Ray& ray) const;
+
+    const Scene& scene() const { return scene_; }
+    const Transform& worldFromEntity(int entity) const { return worldFromEntity_[entity]; }
+    // Number of entity instances in the top-level scene.
+    size_t instanceCount() const;
+
+private:
+    struct GeometryInfo {
+        HitKind kind = HitKind::Static;
+        int index = -1;
+        const TriangleMesh* mesh = nullptr;  // for triangle geometry
+    };
+    struct SubScene {
+        RTCScene scene = nullptr;
+        std::vector<GeometryInfo> geometries;  // by geomID
+        int entity = -1;                       // -1 for the static sub-scene
+        unsigned instanceId = RTC_INVALID_GEOMETRY_ID;
+    };
+
+    unsigned attachMesh(SubScene& sub, const TriangleMesh& mesh, HitKind kind, int index);
+    void attachEmitter(SubScene& sub, const Emitter& emitter, int index);
+    void finishSubScene(SubScene& sub);
+
+    const Scene& scene_;
+    std::shared_ptr<EmbreeDevice> device_;
+    RTCScene top_ = nullptr;
+    std::vector<SubScene> subScenes_;        // [0] static, then one per instanced entity
+    std::vector<int> subSceneOfInstance_;    // top-level geomID -> subScenes_ index
+    std::vector<int> subSceneOfEntity_;      // entity -> subScenes_ index, or -1
+    std::vector<Transform> worldFromEntity_;
+    std::vector<TriangleMesh> emitterMeshes_;  // rect emitters as two triangles
+};
+
+}  // namespace luxplan

@@ -1,0 +1,211 @@
+// The scene model: everything a scene file says, validated and resolved (names
+// to indices, relative paths to files, parts to triangle meshes). Built by
+// io/scene_loader; read by the ray tracer, the light samplers and the optimizer.
+#pragma once
+
+#include <array>
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <luxplan/core/math.h>
+#include <luxplan/materials/material.h>
+#include <luxplan/scene/mesh.h>
+#include <luxplan/scene/voxels.h>
+
+namespace luxplan {
+
+struct Site {
+    double latitude = 0;   // degrees, north positive
+    double longitude = 0;  // degrees, east positive
+    double northDeg = 0;   // clockwise angle from true north to the scene's +y axis
+};
+
+enum class SkyModel { Preetham, CieOvercast, Uniform };
+
+// A fixed sun position (and optionally its direct normal illuminance).
+struct SunOverride {
+    double altitudeDeg = 45;
+    double azimuthDeg = 180;  // clockwise from north
+    std::optional<double> normalIlluminanceLx;
+};
+
+// The scene's "daylight" object, as written (times kept as ISO 8601 text, already
+// checked by the loader).
+struct DaylightSpec {
+    SkyModel sky = SkyModel::Preetham;
+    double turbidity = 3.0;
+    double horizontalIlluminanceLx = 10000;  // cie_overcast
+    double luminanceNits = 1000;             // uniform
+    bool sun = true;
+    std::optional<SunOverride> sunOverride;
+    double groundReflectance = 0.2;
+    std::optional<std::string> from, to;
+    double stepMinutes = 15;
+};
+
+enum class Wall { North, South, East, West, Ceiling };
+
+struct Opening {
+    Wall wall = Wall::South;
+    double offset = 0, width = 1, sill = 0, height = 1;  // walls: metres along the wall / above the floor
+    Vec2 center, size;                                    // ceiling openings
+    std::optional<uint32_t> material;                     // the pane's material, if glazed
+};
+
+struct RoomShell {
+    Bounds3 box;
+    uint32_t floorMaterial = 0, wallMaterial = 0, ceilingMaterial = 0;
+    std::vector<Opening> openings;
+};
+
+enum class StaticKind { Room, Box, Mesh };
+
+// An immovable part of the scene (collision target and light transport geometry).
+struct StaticItem {
+    std::string name;
+    std::string jsonPath;
+    StaticKind kind = StaticKind::Box;
+    bool invisible = false;  // a blocker: collides, takes no part in light transport
+    TriangleMesh mesh;       // world frame
+    std::optional<RoomShell> room;
+    VoxelGrid voxels;        // solid volume (world frame); empty for the room shell
+};
+
+enum class EmitterShape { Rect, Disk, Sphere };
+
+// A Lambertian area emitter; fixed (entity < 0, world frame) or carried by an
+// entity (its frame).
+struct Emitter {
+    std::string name;
+    std::string jsonPath;
+    EmitterShape shape = EmitterShape::Rect;
+    Vec3 center;
+    Vec3 normal{0, 0, -1};
+    Vec3 up{0, 1, 0};  // rect: direction of the second side (size[1])
+    Vec2 size{0.6, 0.6};
+    double radius = 0.1;
+    double fluxLm = 1000;
+    double cctK = 4000;
+    int entity = -1;
+
+    double area() const;
+    // Emitted luminance in cd/m^2: flux / (pi * area) for a Lambertian emitter.
+    double luminance() const { return fluxLm / (kPi * area()); }
+};
+
+enum class LightSamplerType { Planar, Directional, Volume };
+
+// A lighting intention: where and what to measure, and the accepted range.
+struct LightSamplerSpec {
+    std::string name;
+    std::string jsonPath;
+    LightSamplerType type = LightSamplerType::Planar;
+    double targetMin = 0, targetMax = kInf;
+    double tolerance = 1;  // the paper's L_rej (same unit as the target)
+    double weight = 1;
+    int entity = -1;       // -1: world frame; else the entity it moves with
+
+    // planar: illuminance (lx) at the centres of grid[0] x grid[1] cells
+    Vec3 center;
+    Vec3 normal{0, 0, 1};
+    Vec3 up{0, 1, 0};
+    Vec2 size{1, 1};
+    std::array<int, 2> grid{4, 4};
+    // directional: max over strata of the mean luminance (cd/m^2) in a pyramidal frustum
+    Vec3 origin;
+    Vec3 direction{0, -1, 0};
+    double fovDeg = 60;
+    int strata = 8;
+    // volume: mean spherical luminance (cd/m^2) at points in an oriented box
+    std::array<Vec3, 3> axes{Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)};
+    int points = 200;
+
+    const char* unit() const { return type == LightSamplerType::Planar ? "lx" : "cd/m2"; }
+};
+
+// A valid parameter partition X_m: a box for the entity's origin and its rotations.
+struct Region {
+    Vec2 lo, hi;
+    std::vector<double> rotationsDeg;  // discrete set, or
+    bool continuousRotation = false;   // an interval [rotationMinDeg, rotationMaxDeg]
+    double rotationMinDeg = 0, rotationMaxDeg = 0;
+};
+
+// What a part was, kept for outputs (plans, glTF) and summaries.
+struct PartInfo {
+    std::string kind;    // "box", "mesh" or the preset name
+    Bounds3 bounds;      // entity frame
+    uint32_t material = 0;
+};
+
+// A movable entity: a group (children), an object (parts), or both.
+struct Entity {
+    std::string name;
+    std::string path;      // dotted path from the top level, e.g. "desk1.monitor"
+    std::string jsonPath;
+    int parent = -1;
+    std::vector<int> children;
+    Vec3 position;         // initial placement in the parent's frame
+    double rotationDeg = 0;
+    std::vector<Region> regions;  // empty: immovable
+    TriangleMesh mesh;            // all parts, entity frame
+    std::vector<PartInfo> parts;
+    std::vector<Vec2> fronts{Vec2(0, -1)};
+    std::vector<int> samplers;    // indices into Scene::samplers
+    std::vector<int> emitters;    // indices into Scene::emitters
+    VoxelGrid voxels;             // solid volume of the parts, entity frame
+
+    bool movable() const { return !regions.empty(); }
+    bool isGroup() const { return !children.empty(); }
+    bool hasGeometry() const { return !mesh.empty(); }
+};
+
+enum class ConstraintType { Alignment, Distance, Focus, Conversation, Overlap };
+
+inline constexpr int kRoomEntity = -2;  // constraint target "room"
+
+struct ConstraintSpec {
+    std::string jsonPath;
+    ConstraintType type = ConstraintType::Distance;
+    int a = -1, b = -1;           // entity indices (b may be kRoomEntity for alignment)
+    double toleranceDeg = 10;     // alignment, focus, conversation
+    double minDistance = 0, maxDistance = kInf;  // distance, conversation (metres)
+    std::optional<double> distanceTolerance;     // elastic limit (m); default 5% of the range
+    double weight = 1;
+};
+
+struct Objective {
+    double lightingWeight = 0.5;
+};
+
+struct OptimizerSettings {
+    int iterations = 10000;
+    uint64_t seed = 1;
+    int pathsPerPoint = 1000;
+};
+
+struct Scene {
+    std::filesystem::path file;
+    std::string name;
+    Site site;
+    std::optional<DaylightSpec> daylight;
+    std::vector<Material> materials;
+    std::map<std::string, uint32_t> materialIndex;
+    std::vector<StaticItem> geometry;
+    std::vector<Emitter> emitters;  // fixed luminaires first, then the ones entities carry
+    std::vector<Entity> entities;   // depth first: a parent before its children
+    std::vector<LightSamplerSpec> samplers;
+    std::vector<ConstraintSpec> constraints;
+    double overlapTolerance = 0.05;  // fraction of the smaller volume (the paper's V_ref)
+    Objective objective;
+    OptimizerSettings optimizer;
+
+    // Entity index for a dotted path, or -1.
+    int findEntity(const std::string& path) const;
+    const RoomShell* room() const;
+};
+
+}  // namespace luxplan

@@ -1,0 +1,97 @@
+// ISO 8601 parsing, printing, Julian days and minute arithmetic of DateTime.
+#include <gtest/gtest.h>
+
+#include <luxplan/daylight/datetime.h>
+
+namespace luxplan {
+namespace {
+
+DateTime parseOk(const char* s) {
+    std::string err;
+    auto t = parseIso8601(s, &err);
+    EXPECT_TRUE(t.has_value()) << s << ": " << err;
+    return t.value_or(DateTime{});
+}
+
+std::string parseError(const char* s) {
+    std::string err;
+    auto t = parseIso8601(s, &err);
+    EXPECT_FALSE(t.has_value()) << s;
+    return err;
+}
+
+TEST(DateTime, ParsesFieldsAndOffset) {
+    DateTime t = parseOk("2026-06-21T09:00+03:00");
+    EXPECT_EQ(t.year, 2026);
+    EXPECT_EQ(t.month, 6);
+    EXPECT_EQ(t.day, 21);
+    EXPECT_EQ(t.hour, 9);
+    EXPECT_EQ(t.minute, 0);
+    EXPECT_EQ(t.second, 0);
+    EXPECT_EQ(t.utcOffsetMinutes, 180);
+
+    DateTime u = parseOk("2003-10-17T12:30:30.25-07:00");
+    EXPECT_EQ(u.second, 30.25);
+    EXPECT_EQ(u.utcOffsetMinutes, -420);
+    EXPECT_EQ(parseOk("2024-02-29T23:59:59Z").utcOffsetMinutes, 0);
+    EXPECT_EQ(parseOk("2024-01-01T00:00-09:30").utcOffsetMinutes, -570);
+    EXPECT_EQ(parseOk("2024-01-01T00:00+05:45").utcOffsetMinutes, 345);
+}
+
+TEST(DateTime, RejectsInvalidInputWithReason) {
+    EXPECT_EQ(parseError("2026-13-01T09:00+03:00"), "\"2026-13-01T09:00+03:00\": month 13 outside [1, 12]");
+    EXPECT_EQ(parseError("2026-06-21T09:00"),
+              "\"2026-06-21T09:00\": has no UTC offset (append Z or an offset such as +03:00)");
+    EXPECT_NE(parseError("2025-02-29T09:00Z").find("day 29 outside [1, 28]"), std::string::npos);
+    EXPECT_NE(parseError("2026-04-31T09:00Z").find("day 31 outside [1, 30]"), std::string::npos);
+    EXPECT_NE(parseError("2026-06-21T24:00Z").find("hour 24 outside [0, 23]"), std::string::npos);
+    EXPECT_NE(parseError("2026-06-21T09:60Z").find("minute 60 outside [0, 59]"), std::string::npos);
+    EXPECT_NE(parseError("2026-06-21T09:00:60Z").find("second 60 outside [0, 60)"), std::string::npos);
+    EXPECT_NE(parseError("2026-06-21T09:00+19:00").find("outside [-18:00, +18:00]"), std::string::npos);
+    EXPECT_NE(parseError("2026-06-21T09:00+03").find("+hh:mm"), std::string::npos);
+    EXPECT_NE(parseError("2026-06-21T09:00+03:00x").find("after the UTC offset"), std::string::npos);
+    EXPECT_NE(parseError("2026-06-21 09:00+03:00").find("expected YYYY-MM-DDThh:mm"), std::string::npos);
+    EXPECT_NE(parseError("26-06-21T09:00Z").find("expected YYYY-MM-DDThh:mm"), std::string::npos);
+    EXPECT_NE(parseError("2026-06-21T09:00:3Z").find("expected"), std::string::npos);
+    EXPECT_NE(parseError("2026-06-21T09:00:30.Z").find("expected"), std::string::npos);
+    EXPECT_NE(parseError("").find("expected"), std::string::npos);
+    EXPECT_FALSE(parseIso8601("2026-06-21T09:00"));  // no error sink is fine
+}
+
+TEST(DateTime, JulianDayMatchesReferenceEpochs) {
+    // J2000.0 and the NREL SPA worked example (JD 2452930.312847, REFERENCES.md 1.1).
+    EXPECT_DOUBLE_EQ(parseOk("2000-01-01T12:00Z").julianDayUT(), 2451545.0);
+    EXPECT_NEAR(parseOk("2003-10-17T12:30:30-07:00").julianDayUT(), 2452930.312847, 5e-7);
+    // Meeus, Astronomical Algorithms, example 7.a: 1957-10-04.81 -> JD 2436116.31.
+    EXPECT_NEAR(parseOk("1957-10-04T19:26:24Z").julianDayUT(), 2436116.31, 1e-9);
+    // The same instant in two offsets has the same Julian day.
+    EXPECT_DOUBLE_EQ(parseOk("2026-06-21T09:00+03:00").julianDayUT(), parseOk("2026-06-21T06:00Z").julianDayUT());
+}
+
+TEST(DateTime, PlusMinutesNormalizesAcrossBoundaries) {
+    DateTime t = parseOk("2024-12-31T23:50:30+02:00");
+    DateTime u = t.plusMinutes(15);
+    EXPECT_EQ(u.str(), "2025-01-01T00:05:30+02:00");
+    EXPECT_NEAR(u.julianDayUT() - t.julianDayUT(), 15.0 / 1440.0, 1e-9);
+    EXPECT_EQ(parseOk("2024-03-01T00:10Z").plusMinutes(-20).str(), "2024-02-29T23:50Z");
+    EXPECT_EQ(parseOk("2026-06-21T09:00+03:00").plusMinutes(0.5).str(), "2026-06-21T09:00:30+03:00");
+    EXPECT_EQ(parseOk("2026-06-21T09:00:45+03:00").plusMinutes(0.25).str(), "2026-06-21T09:01+03:00");
+    EXPECT_EQ(parseOk("2026-06-21T09:00Z").plusMinutes(3 * 1440).str(), "2026-06-24T09:00Z");
+    // Many small steps do not drift.
+    DateTime w = parseOk("2026-06-21T09:00+03:00");
+    for (int i = 0; i < 12; ++i) w = w.plusMinutes(15);
+    EXPECT_EQ(w.str(), "2026-06-21T12:00+03:00");
+}
+
+TEST(DateTime, StrRoundTrips) {
+    for (const char* s : {"2026-06-21T09:00+03:00", "2003-10-17T12:30:30-07:00", "2024-02-29T23:59:59.125Z",
+                          "1999-01-01T00:00-09:30"}) {
+        DateTime t = parseOk(s);
+        EXPECT_EQ(t.str(), s);
+        DateTime back = parseOk(t.str().c_str());
+        EXPECT_DOUBLE_EQ(back.julianDayUT(), t.julianDayUT());
+    }
+}
+
+}  // namespace
+}  // namespace luxplan
