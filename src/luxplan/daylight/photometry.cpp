@@ -59,4 +59,11 @@ Vec3 xyYToRGB(double x, double y, double Y) {
     return xyzToRGB({x * Y / y, Y, (1 - x - y) * Y / y});
 }
 
+Vec3 clampToGamut(const Vec3& rgb) {
+    if (rgb.x >= 0 && rgb.y >= 0 && rgb.z >= 0) return rgb;
+    const Vec3 c = max(rgb, Vec3(0, 0, 0));
+    const double target = luminance(rgb), now = luminance(c);
+    return now > 0 && target > 0 ? c * (target / now) : Vec3(0, 0, 0);
+}
+
 }  // namespace luxplan

@@ -33,5 +33,7 @@ Vec3 xyzToRGB(const Vec3& xyz);
 Vec3 rgbToXYZ(const Vec3& rgb);
 // Colour of chromaticity (x, y) and luminance Y as linear sRGB; luminance(result) == Y.
 Vec3 xyYToRGB(double x, double y, double Y);
+// Clamps negative (out-of-gamut) components to 0 and rescales so that the luminance is kept.
+Vec3 clampToGamut(const Vec3& rgb);
 
 }  // namespace luxplan

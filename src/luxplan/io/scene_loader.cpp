@@ -136,8 +136,11 @@ private:
             for (size_t i = 0; i < a->size(); ++i) readStatic((*a)[i], pointer(f.at("geometry"), i));
         if (auto* a = f.array("luminaires"))
             for (size_t i = 0; i < a->size(); ++i) readEmitter((*a)[i], pointer(f.at("luminaires"), i), -1);
+        size_t before = sink_.count();
         if (auto* a = f.array("entities"))
             for (size_t i = 0; i < a->size(); ++i) readEntity((*a)[i], pointer(f.at("entities"), i), -1);
+        // Constraints naming an entity that failed to load would only repeat that error.
+        entitiesIncomplete_ = sink_.count() != before;
         if (auto* a = f.array("samplers"))
             for (size_t i = 0; i < a->size(); ++i) readSampler((*a)[i], pointer(f.at("samplers"), i), -1);
         if (auto* a = f.array("constraints"))
@@ -770,7 +773,7 @@ private:
                     e = int(i);
                 }
         }
-        if (e < 0) f.error(key, "unknown entity \"" + *name + "\"");
+        if (e < 0 && !entitiesIncomplete_) f.error(key, "unknown entity \"" + *name + "\"");
         return e;
     }
 
@@ -851,6 +854,7 @@ private:
     }
 
     LoadOptions options_;
+    bool entitiesIncomplete_ = false;
     DiagnosticSink sink_;
     Scene scene_;
     std::filesystem::path dir_;

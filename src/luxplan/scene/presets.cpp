@@ -68,7 +68,7 @@ void officeChair(Builder& b) {
 
 void screenDevice(Builder& b, double panelFrom) {
     // Foot and neck at the back, the panel on top; the screen is a thin face on -y.
-    double footD = std::min(b.d(), 0.2), neck = 0.04;
+    double footD = b.d(), neck = 0.04;
     b.box(-b.w() * 0.2, -footD / 2, 0, b.w() * 0.2, footD / 2, 0.02);
     b.box(-neck / 2, 0, 0.02, neck / 2, neck, b.h() * panelFrom + 0.02);
     double panelD = std::min(0.04, b.d() * 0.3);

@@ -1,0 +1,222 @@
+// Daylight parameters -> validated time steps -> baked, time-averaged DaylightEnvironment.
+#include <luxplan/daylight/daylight.h>
+
+#include <cmath>
+#include <cstdio>
+#include <memory>
+
+#include <luxplan/daylight/cie_sky.h>
+#include <luxplan/daylight/preetham.h>
+#include <luxplan/daylight/solar_position.h>
+
+namespace luxplan {
+namespace {
+
+std::string num(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.10g", v);
+    return buf;
+}
+
+std::string quoted(std::string_view s) {
+    std::string r(1, '"');  // appended piecewise: GCC 12 warns falsely (-Wrestrict) on "x" + string
+    r.append(s).push_back('"');
+    return r;
+}
+
+// Does the sun's brightness come from Preetham's model (and so need a valid turbidity)?
+bool sunFromPreetham(const DaylightParams& p) {
+    return p.sunEnabled() && !(p.sunOverride && p.sunOverride->normalIlluminanceLx);
+}
+
+bool usesTurbidity(const DaylightParams& p) {
+    return p.model == SkyModelType::Preetham || (p.model == SkyModelType::CieGeneral && sunFromPreetham(p));
+}
+
+// Does the sky's shape depend on where the sun is?
+bool needsSunPosition(SkyModelType m) { return m == SkyModelType::Preetham || m == SkyModelType::CieGeneral; }
+
+// Number of instants from..to every step (to included when on the grid).
+long long stepCount(const DateTime& from, const DateTime& to, double stepMinutes) {
+    const double spanMinutes = (to.julianDayUT() - from.julianDayUT()) * 1440.0;
+    return (long long)std::floor(spanMinutes / stepMinutes + 1e-9) + 1;
+}
+
+}  // namespace
+
+std::string_view skyModelName(SkyModelType m) {
+    switch (m) {
+        case SkyModelType::Preetham: return "preetham";
+        case SkyModelType::CieOvercast: return "cie_overcast";
+        case SkyModelType::Uniform: return "uniform";
+        case SkyModelType::CieGeneral: return "cie_general";
+    }
+    return "preetham";
+}
+
+std::optional<SkyModelType> parseSkyModel(std::string_view name) {
+    for (SkyModelType m : {SkyModelType::Preetham, SkyModelType::CieOvercast, SkyModelType::Uniform,
+                           SkyModelType::CieGeneral})
+        if (skyModelName(m) == name) return m;
+    return std::nullopt;
+}
+
+bool DaylightParams::sunEnabled() const {
+    if (sunOverride) return true;
+    if (sun) return *sun;
+    return needsSunPosition(model);
+}
+
+std::vector<Diagnostic> validateDaylight(const DaylightParams& p, const Site& site) {
+    std::vector<Diagnostic> d;
+    auto add = [&](std::string path, std::string message) { d.push_back({"", std::move(path), std::move(message)}); };
+    auto range = [&](const char* path, const char* key, double v, double lo, double hi) {
+        if (!(v >= lo && v <= hi)) add(path, std::string(key) + " " + num(v) + " outside [" + num(lo) + ", " + num(hi) + "]");
+    };
+
+    range("/site/latitude", "latitude", site.latitudeDeg, -90, 90);
+    range("/site/longitude", "longitude", site.longitudeDeg, -180, 180);
+    if (!std::isfinite(site.northDeg)) add("/site/north_deg", "north_deg must be a finite number");
+
+    const std::string model(skyModelName(p.model));
+    if (usesTurbidity(p)) range("/daylight/sky/turbidity", "turbidity", p.turbidity, kMinTurbidity, kMaxTurbidity);
+    if (p.model == SkyModelType::CieOvercast || p.model == SkyModelType::CieGeneral) {
+        if (!p.horizontalIlluminanceLx)
+            add("/daylight/sky", "sky model " + quoted(model) + " needs \"horizontal_illuminance_lx\"");
+        else if (!(*p.horizontalIlluminanceLx > 0) || !std::isfinite(*p.horizontalIlluminanceLx))
+            add("/daylight/sky/horizontal_illuminance_lx",
+                "horizontal_illuminance_lx " + num(*p.horizontalIlluminanceLx) + " must be > 0");
+    }
+    if (p.model == SkyModelType::Uniform) {
+        if (!p.luminanceNits)
+            add("/daylight/sky", "sky model \"uniform\" needs \"luminance_nits\"");
+        else if (!(*p.luminanceNits >= 0) || !std::isfinite(*p.luminanceNits))
+            add("/daylight/sky/luminance_nits", "luminance_nits " + num(*p.luminanceNits) + " must be >= 0");
+    }
+    if (p.model == SkyModelType::CieGeneral && (p.cieSkyType < 1 || p.cieSkyType > 15))
+        add("/daylight/sky/type", "type " + std::to_string(p.cieSkyType) + " outside [1, 15]");
+
+    if (p.sunOverride) {
+        const SunOverride& s = *p.sunOverride;
+        range("/daylight/sun/altitude_deg", "altitude_deg", s.altitudeDeg, 0, 90);
+        range("/daylight/sun/azimuth_deg", "azimuth_deg", s.azimuthDeg, 0, 360);
+        if (s.normalIlluminanceLx && (!(*s.normalIlluminanceLx >= 0) || !std::isfinite(*s.normalIlluminanceLx)))
+            add("/daylight/sun/normal_illuminance_lx",
+                "normal_illuminance_lx " + num(*s.normalIlluminanceLx) + " must be >= 0");
+        if (p.from || p.to) add("/daylight/sun", "only one of \"sun\" override and \"from\"/\"to\"");
+    }
+    if (!needsSunPosition(p.model) && p.sunEnabled() && !(p.sunOverride && p.sunOverride->normalIlluminanceLx))
+        add("/daylight/sun", "sky model " + quoted(model) +
+                                 " has no sun of its own; set \"sun\": false or give a fixed sun with "
+                                 "\"normal_illuminance_lx\"");
+    if (needsSunPosition(p.model) && !p.sunOverride && !p.from)
+        add("/daylight", "sky model " + quoted(model) +
+                             " needs a time (\"from\") or a fixed \"sun\" {\"altitude_deg\", \"azimuth_deg\"}");
+    if (p.to && !p.from) add("/daylight/to", "\"to\" needs \"from\"");
+    if (!(p.stepMinutes > 0) || !std::isfinite(p.stepMinutes))
+        add("/daylight/step_minutes", "step_minutes " + num(p.stepMinutes) + " must be > 0");
+    else if (p.from && p.to) {
+        if (p.to->julianDayUT() < p.from->julianDayUT())
+            add("/daylight/to", "\"to\" " + p.to->str() + " is before \"from\" " + p.from->str());
+        else if (stepCount(*p.from, *p.to, p.stepMinutes) > kMaxDaylightSteps)
+            add("/daylight/step_minutes", "from..to every " + num(p.stepMinutes) + " minutes is " +
+                                              std::to_string(stepCount(*p.from, *p.to, p.stepMinutes)) +
+                                              " time steps, more than " + std::to_string(kMaxDaylightSteps));
+    }
+    range("/daylight/ground_reflectance", "ground_reflectance", p.groundReflectance, 0, 1);
+    if (!(p.pressureMbar > 0) || !std::isfinite(p.pressureMbar))
+        add("/daylight/pressure_mbar", "pressure_mbar " + num(p.pressureMbar) + " must be > 0");
+    if (!(p.temperatureC > -273.15) || !std::isfinite(p.temperatureC))
+        add("/daylight/temperature_c", "temperature_c " + num(p.temperatureC) + " must be > -273.15");
+    return d;
+}
+
+std::vector<DaylightInstant> daylightInstants(const DaylightParams& p, const Site& site) {
+    if (auto diags = validateDaylight(p, site); !diags.empty()) throw SceneError(std::move(diags));
+    std::vector<DaylightInstant> out;
+    const bool sunOn = p.sunEnabled();
+    auto sunIlluminance = [&](double altitudeDeg) {
+        if (!sunOn || altitudeDeg < 0) return 0.0;
+        if (p.sunOverride && p.sunOverride->normalIlluminanceLx) return *p.sunOverride->normalIlluminanceLx;
+        return preethamSunNormalIlluminance(p.turbidity, radians(90 - altitudeDeg));
+    };
+
+    if (p.sunOverride) {
+        DaylightInstant i;
+        i.hasSunPosition = true;
+        i.sunAltitudeDeg = p.sunOverride->altitudeDeg;
+        i.sunAzimuthDeg = p.sunOverride->azimuthDeg;
+        i.sunDirection = horizonToScene(i.sunAltitudeDeg, i.sunAzimuthDeg, site.northDeg);
+        i.sunNormalIlluminanceLx = sunIlluminance(i.sunAltitudeDeg);
+        out.push_back(i);
+    } else if (p.from) {
+        SolarObserver observer;
+        observer.latitudeDeg = site.latitudeDeg;
+        observer.longitudeDeg = site.longitudeDeg;
+        observer.pressureMbar = p.pressureMbar;
+        observer.temperatureC = p.temperatureC;
+        const long long n = p.to ? stepCount(*p.from, *p.to, p.stepMinutes) : 1;
+        out.reserve(size_t(n));
+        for (long long k = 0; k < n; ++k) {
+            DaylightInstant i;
+            i.time = p.from->plusMinutes(double(k) * p.stepMinutes);
+            SolarPosition sp = solarPosition(*i.time, observer);
+            i.hasSunPosition = true;
+            i.sunAltitudeDeg = sp.altitudeDeg;
+            i.sunAzimuthDeg = sp.azimuthDeg;
+            i.sunDirection = horizonToScene(sp.altitudeDeg, sp.azimuthDeg, site.northDeg);
+            i.sunNormalIlluminanceLx = sunIlluminance(sp.altitudeDeg);
+            out.push_back(i);
+        }
+    } else {
+        out.push_back(DaylightInstant{});  // time-independent sky (uniform, overcast)
+    }
+    return out;
+}
+
+DaylightEnvironment buildDaylight(const DaylightParams& p, const Site& site, const DaylightBakeOptions& options) {
+    const std::vector<DaylightInstant> instants = daylightInstants(p, site);
+    SkyMap map(options.width, options.height);
+    const int skyRows = options.height / 2, ss = std::max(1, options.supersample);
+    const double weight = 1.0 / double(instants.size());
+
+    // The sky: time-independent models are baked once, the others once per instant with the
+    // sun up (a sun below the horizon leaves that instant's sky dark; twilight is not modelled).
+    if (p.model == SkyModelType::CieOvercast) {
+        CieOvercastSky sky(*p.horizontalIlluminanceLx);
+        map.accumulate([&](const Vec3& w) { double l = sky.luminance(w); return Vec3(l, l, l); }, 1.0, ss, 0, skyRows);
+    } else if (p.model == SkyModelType::Uniform) {
+        const double l = *p.luminanceNits;
+        map.accumulate([&](const Vec3&) { return Vec3(l, l, l); }, 1.0, 1, 0, skyRows);
+    } else {
+        for (const DaylightInstant& i : instants) {
+            if (!i.hasSunPosition || i.sunAltitudeDeg < 0) continue;
+            if (p.model == SkyModelType::Preetham) {
+                PreethamSky sky(p.turbidity, i.sunDirection);
+                map.accumulate([&](const Vec3& w) { return sky.rgb(w); }, weight, ss, 0, skyRows);
+            } else {
+                CieGeneralSky sky(p.cieSkyType, i.sunDirection, *p.horizontalIlluminanceLx);
+                map.accumulate([&](const Vec3& w) { double l = sky.luminance(w); return Vec3(l, l, l); }, weight, ss,
+                               0, skyRows);
+            }
+        }
+    }
+
+    // One sharp disk per instant with the sun up, carrying that instant's share of the average.
+    std::vector<SunDisk> disks;
+    for (const DaylightInstant& i : instants) {
+        if (!i.hasSunPosition || i.sunAltitudeDeg < 0 || !(i.sunNormalIlluminanceLx > 0)) continue;
+        SunDisk s;
+        s.direction = i.sunDirection;
+        s.altitudeDeg = i.sunAltitudeDeg;
+        s.azimuthDeg = i.sunAzimuthDeg;
+        s.weight = weight;
+        s.normalIlluminanceLx = i.sunNormalIlluminanceLx;
+        s.luminance = weight * i.sunNormalIlluminanceLx / kSunDiskProjectedSolidAngle;
+        s.color = usesTurbidity(p) ? preethamSunColor(p.turbidity, radians(90 - i.sunAltitudeDeg)) : Vec3(1, 1, 1);
+        disks.push_back(s);
+    }
+    return DaylightEnvironment(std::move(map), std::move(disks), p.groundReflectance);
+}
+
+}  // namespace luxplan

@@ -1,0 +1,178 @@
+// SkyMap geometry and DaylightEnvironment: ground, illuminance integrals, lookups, sampling.
+#include <luxplan/daylight/environment.h>
+
+#include <stdexcept>
+
+#include <luxplan/core/warp.h>
+#include <luxplan/daylight/preetham.h>
+
+namespace luxplan {
+namespace {
+
+// Directions within this much (in cosine) outside a disk's rim still count as inside it, so
+// that cone samples land in their own disk despite rounding; it widens the 1.1e-5 of
+// (1 - cos half-angle) by 1e-7 relative.
+constexpr double kDiskRimTolerance = 1e-12;
+
+}  // namespace
+
+SkyMap::SkyMap(int width, int height) : width_(width), height_(height) {
+    if (width < 1 || height < 2 || height % 2 != 0)
+        throw std::invalid_argument("SkyMap: width must be >= 1 and height even and >= 2");
+    pixels_.assign(size_t(width) * size_t(height), Vec3{});
+    cosEdges_.resize(size_t(height) + 1);
+    // Exactly symmetric edges, with the horizon at exactly 0.
+    for (int i = 0; i <= height / 2; ++i) {
+        double c = i == height / 2 ? 0.0 : std::cos(kPi * i / height);
+        cosEdges_[size_t(i)] = c;
+        cosEdges_[size_t(height - i)] = -c;
+    }
+}
+
+void SkyMap::pixelOf(const Vec3& w, int& ix, int& iy) const {
+    const double z = std::clamp(w.z, -1.0, 1.0);
+    iy = std::clamp(int(std::acos(z) / kPi * height_), 0, height_ - 1);
+    while (iy > 0 && z > cosEdges_[size_t(iy)]) --iy;
+    while (iy < height_ - 1 && z <= cosEdges_[size_t(iy) + 1]) ++iy;
+    double phi = std::atan2(w.y, w.x);
+    if (phi < 0) phi += 2 * kPi;
+    ix = std::clamp(int(phi / (2 * kPi) * width_), 0, width_ - 1);
+}
+
+double SkyMap::pixelSolidAngle(int iy) const {
+    return (2 * kPi / width_) * (cosEdges_[size_t(iy)] - cosEdges_[size_t(iy) + 1]);
+}
+
+Vec3 SkyMap::direction(int ix, int iy, double fx, double fz) const {
+    const double phi = 2 * kPi * (ix + fx) / width_;
+    const double z = cosEdges_[size_t(iy)] + fz * (cosEdges_[size_t(iy) + 1] - cosEdges_[size_t(iy)]);
+    const double r = std::sqrt(std::max(0.0, 1 - z * z));
+    return {r * std::cos(phi), r * std::sin(phi), z};
+}
+
+DaylightEnvironment::DaylightEnvironment(SkyMap sky, std::vector<SunDisk> suns, double groundReflectance)
+    : map_(std::move(sky)), suns_(std::move(suns)), groundReflectance_(groundReflectance) {
+    const int w = map_.width(), h = map_.height();
+    if (w == 0) throw std::invalid_argument("DaylightEnvironment: empty sky map");
+    const double dPhi = 2 * kPi / w;
+
+    // Horizontal illuminance of the sky: each pixel's cosine-weighted solid angle is
+    // dPhi * (z0^2 - z1^2) / 2 exactly.
+    Vec3 skyE;
+    for (int iy = 0; iy < h / 2; ++iy) {
+        const double z0 = map_.cosEdge(iy), z1 = map_.cosEdge(iy + 1);
+        const double projected = dPhi * (z0 * z0 - z1 * z1) / 2;
+        Vec3 row;
+        for (int ix = 0; ix < w; ++ix) row += map_.at(ix, iy);
+        skyE += row * projected;
+    }
+    // Sun disks: integral of a uniform cone of radiance L over a plane is L pi sin^2(a) cos(altitude).
+    Vec3 sunE;
+    for (const SunDisk& s : suns_) sunE += s.radiance() * (kSunDiskProjectedSolidAngle * std::max(0.0, s.direction.z));
+    skyHorizontal_ = luminance(skyE);
+    sunHorizontal_ = luminance(sunE);
+
+    // Ground: diffuse reflection of the light on the open horizontal plane.
+    ground_ = (skyE + sunE) * (groundReflectance_ * kInvPi);
+    for (int iy = h / 2; iy < h; ++iy)
+        for (int ix = 0; ix < w; ++ix) map_.at(ix, iy) = ground_;
+
+    // Sampling in (phi, -cos theta), where area equals solid angle, proportional to luminance.
+    std::vector<double> values(size_t(w) * h), xEdges(size_t(w) + 1), yEdges(size_t(h) + 1);
+    for (int ix = 0; ix <= w; ++ix) xEdges[size_t(ix)] = dPhi * ix;
+    for (int iy = 0; iy <= h; ++iy) yEdges[size_t(iy)] = -map_.cosEdge(iy);
+    skyIntegral_ = 0;
+    for (int iy = 0; iy < h; ++iy)
+        for (int ix = 0; ix < w; ++ix) {
+            double lv = std::max(0.0, luminance(map_.at(ix, iy)));
+            values[size_t(iy) * w + ix] = lv;
+            skyIntegral_ += lv * map_.pixelSolidAngle(iy);
+        }
+    skyDistribution_ = Distribution2D(values, xEdges, yEdges);
+
+    if (!suns_.empty()) {
+        std::vector<double> weights;
+        for (const SunDisk& s : suns_) weights.push_back(std::max(0.0, s.luminance));
+        sunDistribution_ = Distribution1D(weights);
+        sunIntegral_ = sunDistribution_.integral() * double(suns_.size()) * kSunSolidAngle;
+    }
+}
+
+Vec3 DaylightEnvironment::Le(const Vec3& w) const {
+    if (map_.width() == 0) return {};
+    int ix, iy;
+    map_.pixelOf(w, ix, iy);
+    return map_.at(ix, iy);
+}
+
+double DaylightEnvironment::skyPdf(const Vec3& w) const {
+    if (map_.width() == 0) return 0;
+    int ix, iy;
+    map_.pixelOf(w, ix, iy);
+    return skyDistribution_.cellPdf(size_t(ix), size_t(iy));
+}
+
+EnvironmentSample DaylightEnvironment::sampleSky(Vec2 u) const {
+    EnvironmentSample s;
+    if (map_.width() == 0) return s;
+    Distribution2D::Sample d = skyDistribution_.sample(u);
+    const double phi = d.p.x, z = std::clamp(-d.p.y, -1.0, 1.0);
+    const double r = std::sqrt(std::max(0.0, 1 - z * z));
+    s.wi = {r * std::cos(phi), r * std::sin(phi), z};
+    // Evaluate through the same pixel lookup as Le()/skyPdf() so that all three agree.
+    int ix, iy;
+    map_.pixelOf(s.wi, ix, iy);
+    s.pdf = skyDistribution_.cellPdf(size_t(ix), size_t(iy));
+    s.Le = map_.at(ix, iy);
+    return s;
+}
+
+Vec3 DaylightEnvironment::sunLe(const Vec3& w) const {
+    Vec3 sum;
+    for (const SunDisk& s : suns_)
+        if (dot(w, s.direction) >= kSunCosHalfAngle - kDiskRimTolerance) sum += s.radiance();
+    return sum;
+}
+
+double DaylightEnvironment::sunPdf(const Vec3& w) const {
+    if (suns_.empty()) return 0;
+    double pmfSum = 0;
+    for (size_t k = 0; k < suns_.size(); ++k)
+        if (dot(w, suns_[k].direction) >= kSunCosHalfAngle - kDiskRimTolerance) pmfSum += sunDistribution_.pmf(k);
+    return pmfSum / kSunSolidAngle;
+}
+
+EnvironmentSample DaylightEnvironment::sampleSun(double uDisk, Vec2 u) const {
+    EnvironmentSample s;
+    if (suns_.empty()) return s;
+    const size_t k = sunDistribution_.sampleDiscrete(uDisk);
+    s.wi = normalize(Frame::fromNormal(suns_[k].direction).toWorld(sampleUniformCone(u, kSunCosHalfAngle)));
+    s.Le = sunLe(s.wi);
+    s.pdf = sunPdf(s.wi);
+    return s;
+}
+
+double DaylightEnvironment::illuminance(const Vec3& n, bool withGround, bool withSun) const {
+    double e = 0;
+    if (map_.width() > 0) {
+        const int sub = 4, rows = withGround ? map_.height() : map_.height() / 2;
+        for (int iy = 0; iy < rows; ++iy) {
+            const double cellWeight = map_.pixelSolidAngle(iy) / (sub * sub);
+            for (int ix = 0; ix < map_.width(); ++ix) {
+                const double lv = luminance(map_.at(ix, iy));
+                if (lv == 0) continue;
+                double cosSum = 0;
+                for (int a = 0; a < sub; ++a)
+                    for (int b = 0; b < sub; ++b)
+                        cosSum += std::max(0.0, dot(n, map_.direction(ix, iy, (a + 0.5) / sub, (b + 0.5) / sub)));
+                e += lv * cosSum * cellWeight;
+            }
+        }
+    }
+    if (withSun)
+        for (const SunDisk& s : suns_)
+            e += s.luminance * kSunDiskProjectedSolidAngle * std::max(0.0, dot(n, s.direction));
+    return e;
+}
+
+}  // namespace luxplan
