@@ -24,8 +24,8 @@ TEST(PreethamSky, ZenithLuminanceMatchesFormula) {
             EXPECT_NEAR(preethamZenithLuminance(t, ts), yz, 1e-9 * yz) << "T " << t << " theta_s " << deg;
             EXPECT_GT(preethamZenithLuminance(t, ts), 0);
         }
-    // Spot value: T = 3, sun 45 deg high: chi = (4/9 - 1/40) pi/2 = 0.658972 rad -> 7.2853 kcd/m^2 (derived).
-    EXPECT_NEAR(preethamZenithLuminance(3, radians(45)), 7285.3, 0.1);
+    // Spot value: T = 3, sun 45 deg high: chi = (4/9 - 1/40) pi/2 = 0.658862 rad -> 7.3204 kcd/m^2 [DERIVED].
+    EXPECT_NEAR(preethamZenithLuminance(3, radians(45)), 7320.36, 0.01);
 }
 
 TEST(PreethamSky, PerezNormalizationGivesZenithValues) {
@@ -67,7 +67,7 @@ TEST(PreethamSun, ExtraterrestrialIlluminanceIsTheSolarConstant) {
 
 TEST(PreethamSun, AttenuationFollowsAirMassAndTurbidity) {
     // Air mass (Kasten 1966 form of PSS99): 1 at the zenith, ~2 at 60 deg, ~36.5 at the horizon.
-    EXPECT_NEAR(relativeAirMass(0), 1.0, 3e-4);
+    EXPECT_NEAR(relativeAirMass(0), 1.0, 1e-3);
     EXPECT_NEAR(relativeAirMass(radians(60)), 1.995, 0.005);
     EXPECT_NEAR(relativeAirMass(kPi / 2), 36.4, 0.5);
     double previous = kInf;
@@ -120,7 +120,7 @@ TEST(CieGeneralSky, NormalizedToHorizontalIlluminance) {
         CieGeneralSky sky(type, sun, 20000);
         EXPECT_NEAR(sky.relativeLuminance({0, 0, 1}), 1.0, 1e-12) << type;
         double e = 0;
-        const int nz = 400, np = 400;
+        const int nz = 200, np = 200;
         for (int i = 0; i < nz; ++i)
             for (int j = 0; j < np; ++j) {
                 double z = (i + 0.5) / nz;

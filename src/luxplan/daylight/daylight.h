@@ -12,6 +12,7 @@
 #include <luxplan/core/error.h>
 #include <luxplan/daylight/datetime.h>
 #include <luxplan/daylight/environment.h>
+#include <luxplan/daylight/solar_position.h>
 
 namespace luxplan {
 

@@ -1,0 +1,280 @@
+// DaylightEnvironment: illuminance of analytic skies (by quadrature and by importance
+// sampling), ground light, chi-square tests of sky and sun sampling, pdf normalization.
+#include <gtest/gtest.h>
+
+#include <luxplan/core/rng.h>
+#include <luxplan/daylight/daylight.h>
+#include <luxplan/daylight/preetham.h>
+#include "support/chi2.h"
+
+namespace luxplan {
+namespace {
+
+DaylightEnvironment uniformSky(double nits, double rho, int w = 128, int h = 64) {
+    DaylightParams p;
+    p.model = SkyModelType::Uniform;
+    p.luminanceNits = nits;
+    p.groundReflectance = rho;
+    return buildDaylight(p, Site{}, {w, h, 1});
+}
+
+DaylightEnvironment overcastSky(double lux, double rho) {
+    DaylightParams p;
+    p.model = SkyModelType::CieOvercast;
+    p.horizontalIlluminanceLx = lux;
+    p.groundReflectance = rho;
+    return buildDaylight(p, Site{}, {256, 128, 2});
+}
+
+DaylightEnvironment preethamSky(int w = 64, int h = 32) {
+    DaylightParams p;
+    p.turbidity = 3;
+    p.sunOverride = SunOverride{35, 200, std::nullopt};
+    p.groundReflectance = 0.2;
+    return buildDaylight(p, Site{}, {w, h, 2});
+}
+
+// Monte Carlo estimate of the illuminance on the open horizontal plane by sampling the sky
+// distribution, with its standard error.
+struct Estimate {
+    double mean, stdError;
+};
+Estimate horizontalByImportanceSampling(const DaylightEnvironment& env, int n, uint64_t seed) {
+    Rng rng(seed);
+    double sum = 0, sum2 = 0;
+    for (int k = 0; k < n; ++k) {
+        EnvironmentSample s = env.sampleSky({rng.uniform(), rng.uniform()});
+        double f = s.pdf > 0 ? luminance(s.Le) * std::max(0.0, s.wi.z) / s.pdf : 0;
+        sum += f;
+        sum2 += f * f;
+    }
+    double mean = sum / n, var = std::max(0.0, sum2 / n - mean * mean);
+    return {mean, std::sqrt(var / n)};
+}
+
+TEST(UniformSky, GivesPiLOnTheOpenHorizontalPlane) {
+    const double L = 1000;
+    DaylightEnvironment env = uniformSky(L, 0.0);
+    EXPECT_NEAR(env.skyHorizontalIlluminance(), kPi * L, 1e-9 * L);
+    EXPECT_NEAR(env.totalHorizontalIlluminance(), kPi * L, 1e-9 * L);
+    EXPECT_NEAR(env.illuminance({0, 0, 1}), kPi * L, 1e-4 * L);  // 4x4 sub-sample quadrature
+    EXPECT_DOUBLE_EQ(env.Lv({0.3, 0.1, 0.9}), L);
+    EXPECT_DOUBLE_EQ(env.Lv({0.3, 0.1, -0.9}), 0.0);
+    // Importance sampling: unbiased within 4 standard errors.
+    Estimate e = horizontalByImportanceSampling(env, 100000, 1);
+    EXPECT_NEAR(e.mean, kPi * L, 4 * e.stdError);
+    EXPECT_LT(e.stdError, 0.01 * kPi * L);
+}
+
+TEST(UniformSky, GroundReflectsTheSky) {
+    const double L = 1000, rho = 0.3;
+    DaylightEnvironment env = uniformSky(L, rho);
+    EXPECT_NEAR(env.groundLuminance(), rho * kPi * L / kPi, 1e-9 * L);
+    EXPECT_NEAR(env.Lv({0, 0, -1}), rho * L, 1e-9 * L);
+    // A plane facing down sees only the ground: E = pi L_ground.
+    EXPECT_NEAR(env.illuminance({0, 0, -1}), kPi * rho * L, 1e-4 * L);
+    // Sampling the whole sphere and integrating cos+ over the upper hemisphere is still pi L.
+    Estimate e = horizontalByImportanceSampling(env, 100000, 2);
+    EXPECT_NEAR(e.mean, kPi * L, 4 * e.stdError);
+}
+
+TEST(CieOvercastSky, GivesItsHorizontalIlluminanceAndVerticalRatio) {
+    const double eh = 10000;
+    DaylightEnvironment env = overcastSky(eh, 0.0);
+    EXPECT_NEAR(env.totalHorizontalIlluminance(), eh, 1e-4 * eh);
+    EXPECT_NEAR(env.illuminance({0, 0, 1}), eh, 1e-4 * eh);
+    // Open vertical plane, no ground: Lz (pi/6 + 4/9) = 0.396 E_h.
+    const double ratio = (kPi / 6 + 4.0 / 9.0) / (7 * kPi / 9);
+    EXPECT_NEAR(ratio, 0.396, 5e-4);
+    for (Vec3 n : {Vec3(1, 0, 0), Vec3(0, -1, 0), normalize(Vec3(1, 1, 0))})
+        EXPECT_NEAR(env.illuminance(n, /*withGround=*/false), ratio * eh, 2e-4 * eh);
+    // Zenith three times as bright as the horizon.
+    EXPECT_NEAR(env.Lv({0, 0, 1}) / env.Lv({1, 0, 1e-4}), 3.0, 0.05);
+    Estimate e = horizontalByImportanceSampling(env, 100000, 3);
+    EXPECT_NEAR(e.mean, eh, 4 * e.stdError);
+}
+
+TEST(CieOvercastSky, GroundAddsHalfItsLuminanceTimesPiOnAVerticalPlane) {
+    // Ground of reflectance rho: L_g = rho E_h / pi; a vertical plane sees half the lower
+    // hemisphere, so it gains L_g pi / 2 = rho E_h / 2.
+    const double eh = 10000, rho = 0.2;
+    DaylightEnvironment env = overcastSky(eh, rho);
+    EXPECT_NEAR(env.groundLuminance(), rho * eh / kPi, 1e-4 * eh);
+    const double ratio = (kPi / 6 + 4.0 / 9.0) / (7 * kPi / 9);
+    EXPECT_NEAR(env.illuminance({1, 0, 0}), (ratio + rho / 2) * eh, 2e-4 * eh);
+    EXPECT_NEAR(env.illuminance({1, 0, 0}, false), ratio * eh, 2e-4 * eh);
+}
+
+TEST(SkySampling, PdfIsNormalizedAndMatchesEvaluation) {
+    DaylightEnvironment env = preethamSky();
+    const SkyMap& map = env.skyMap();
+    // Exact: sum of pixel pdf x pixel solid angle.
+    double total = 0;
+    for (int iy = 0; iy < map.height(); ++iy)
+        for (int ix = 0; ix < map.width(); ++ix)
+            total += env.skyPdf(map.direction(ix, iy, 0.5, 0.5)) * map.pixelSolidAngle(iy);
+    EXPECT_NEAR(total, 1.0, 1e-12);
+    // Quadrature on a grid unrelated to the pixels: midpoint rule in (cos theta, phi).
+    double q = 0;
+    const int nz = 1000, np = 1000;
+    for (int i = 0; i < nz; ++i)
+        for (int j = 0; j < np; ++j) {
+            double z = -1 + 2 * (i + 0.5) / nz, phi = 2 * kPi * (j + 0.37) / np, r = std::sqrt(1 - z * z);
+            q += env.skyPdf({r * std::cos(phi), r * std::sin(phi), z});
+        }
+    EXPECT_NEAR(q * (2.0 / nz) * (2 * kPi / np), 1.0, 2e-3);
+    // pdf is proportional to luminance: pdf = Lv / integral of Lv over the sphere.
+    Rng rng(4);
+    for (int k = 0; k < 1000; ++k) {
+        EnvironmentSample s = env.sampleSky({rng.uniform(), rng.uniform()});
+        ASSERT_GT(s.pdf, 0);
+        EXPECT_NEAR(length(s.wi), 1.0, 1e-12);
+        EXPECT_DOUBLE_EQ(s.pdf, env.skyPdf(s.wi));
+        EXPECT_EQ(s.Le, env.Le(s.wi));
+        EXPECT_NEAR(s.pdf, luminance(s.Le) / env.skyIntegral(), 1e-9 * s.pdf);
+    }
+}
+
+TEST(SkySampling, ChiSquareAgainstPdf) {
+    DaylightEnvironment env = preethamSky(64, 32);
+    const SkyMap& map = env.skyMap();
+    // Cells: 2 x 2 pixel blocks, whose probability is exact (the map is piecewise constant).
+    const int cw = map.width() / 2, ch = map.height() / 2, n = 300000;
+    std::vector<double> observed(cw * ch, 0), expected(cw * ch, 0);
+    Rng rng(12);
+    for (int k = 0; k < n; ++k) {
+        EnvironmentSample s = env.sampleSky({rng.uniform(), rng.uniform()});
+        int ix, iy;
+        map.pixelOf(s.wi, ix, iy);
+        observed[(iy / 2) * cw + ix / 2] += 1;
+    }
+    for (int iy = 0; iy < map.height(); ++iy)
+        for (int ix = 0; ix < map.width(); ++ix)
+            expected[(iy / 2) * cw + ix / 2] += env.skyPdf(map.direction(ix, iy, 0.5, 0.5)) * map.pixelSolidAngle(iy) * n;
+    auto r = test::chi2Test(observed, expected);
+    EXPECT_GT(r.pValue, 0.01) << r.table;
+}
+
+// Two overlapping disks and one apart, with different luminance.
+DaylightEnvironment threeSuns() {
+    DaylightParams p;
+    p.model = SkyModelType::Uniform;
+    p.luminanceNits = 0;
+    p.groundReflectance = 0;
+    p.sun = false;
+    DaylightEnvironment sky = buildDaylight(p, Site{}, {16, 8, 1});
+    std::vector<SunDisk> disks;
+    auto disk = [&](double alt, double az, double en) {
+        SunDisk s;
+        s.altitudeDeg = alt;
+        s.azimuthDeg = az;
+        s.direction = horizonToScene(alt, az, 0);
+        s.weight = 1.0 / 3;
+        s.normalIlluminanceLx = en;
+        s.luminance = s.weight * en / kSunDiskProjectedSolidAngle;
+        disks.push_back(s);
+    };
+    disk(40.0, 180.0, 90000);
+    disk(40.2, 180.1, 60000);  // overlaps the first
+    disk(41.0, 181.0, 30000);
+    return DaylightEnvironment(sky.skyMap(), disks, 0.0);
+}
+
+TEST(SunSampling, ChiSquareAgainstPdfOnTheTangentPlane) {
+    DaylightEnvironment env = threeSuns();
+    // Project onto the plane tangent at the cluster's middle; bins of a 24 x 24 grid over
+    // [-r, r]^2, expected counts by integrating sunPdf with 24 x 24 sub-cells (dw = dA / (1 + x^2 + y^2)^1.5).
+    const Frame f = Frame::fromNormal(horizonToScene(40.5, 180.5, 0));
+    const double r = std::tan(radians(1.2));
+    const int bins = 24, sub = 24, n = 200000;
+    std::vector<double> observed(bins * bins, 0), expected(bins * bins, 0);
+    Rng rng(21);
+    int outside = 0;
+    for (int k = 0; k < n; ++k) {
+        EnvironmentSample s = env.sampleSun(rng.uniform(), {rng.uniform(), rng.uniform()});
+        ASSERT_GT(s.pdf, 0);
+        EXPECT_DOUBLE_EQ(s.pdf, env.sunPdf(s.wi));
+        EXPECT_EQ(s.Le, env.sunLe(s.wi));
+        Vec3 l = f.toLocal(s.wi);
+        double x = l.x / l.z, y = l.y / l.z;
+        int i = int((x + r) / (2 * r) * bins), j = int((y + r) / (2 * r) * bins);
+        if (i < 0 || j < 0 || i >= bins || j >= bins) { ++outside; continue; }
+        observed[j * bins + i] += 1;
+    }
+    EXPECT_EQ(outside, 0);
+    const double h = 2 * r / (bins * sub);
+    for (int j = 0; j < bins; ++j)
+        for (int i = 0; i < bins; ++i) {
+            double sum = 0;
+            for (int b = 0; b < sub; ++b)
+                for (int a = 0; a < sub; ++a) {
+                    double x = -r + (i * sub + a + 0.5) * h, y = -r + (j * sub + b + 0.5) * h;
+                    double jac = 1 / std::pow(1 + x * x + y * y, 1.5);
+                    sum += env.sunPdf(normalize(f.toWorld({x, y, 1}))) * jac * h * h;
+                }
+            expected[j * bins + i] = sum * n;
+        }
+    double total = 0;
+    for (double e : expected) total += e / n;
+    EXPECT_NEAR(total, 1.0, 2e-3);  // the pdf integrates to 1 (quadrature of the disk rims)
+    auto res = test::chi2Test(observed, expected);
+    EXPECT_GT(res.pValue, 0.01) << res.table;
+}
+
+TEST(SunSampling, DisksArePickedByLuminanceAndStaySharp) {
+    DaylightEnvironment env = threeSuns();
+    const auto& disks = env.sunDisks();
+    double sumL = 0;
+    for (const SunDisk& s : disks) sumL += s.luminance;
+    EXPECT_NEAR(env.sunIntegral(), sumL * kSunSolidAngle, 1e-9 * env.sunIntegral());
+    // Inside the lone disk, pdf = pmf / solid angle; outside every disk both vanish.
+    EXPECT_NEAR(env.sunPdf(disks[2].direction), disks[2].luminance / sumL / kSunSolidAngle, 1e-6);
+    EXPECT_EQ(env.sunPdf(horizonToScene(45, 180, 0)), 0.0);
+    EXPECT_EQ(env.sunLv(horizonToScene(40, 180.3, 0)), 0.0);  // 0.23 deg from the centre > 0.2665
+    EXPECT_NEAR(env.sunLv(horizonToScene(40, 180.25, 0)), disks[0].luminance, 1e-9 * disks[0].luminance);
+    // Horizontal illuminance of the disks: sum of weight x E_n x sin(altitude).
+    double eh = 0;
+    for (const SunDisk& s : disks) eh += s.weight * s.normalIlluminanceLx * std::sin(radians(s.altitudeDeg));
+    EXPECT_NEAR(env.sunHorizontalIlluminance(), eh, 1e-9 * eh);
+    // Illuminance at normal incidence on the lone disk.
+    EXPECT_NEAR(env.illuminance(disks[2].direction, false, true) - env.illuminance(disks[2].direction, false, false),
+                disks[2].weight * disks[2].normalIlluminanceLx + disks[1].weight * disks[1].normalIlluminanceLx *
+                    dot(disks[1].direction, disks[2].direction) + disks[0].weight * disks[0].normalIlluminanceLx *
+                    dot(disks[0].direction, disks[2].direction), 1e-6);
+}
+
+TEST(DaylightEnvironment, NightIsBlack) {
+    DaylightEnvironment night;
+    EXPECT_EQ(night.Le({0, 0, 1}), Vec3());
+    EXPECT_EQ(night.skyPdf({0, 0, 1}), 0.0);
+    EXPECT_EQ(night.sampleSky({0.5, 0.5}).pdf, 0.0);
+    EXPECT_EQ(night.sampleSun(0.5, {0.5, 0.5}).pdf, 0.0);
+    EXPECT_FALSE(night.hasSky());
+    EXPECT_FALSE(night.hasSun());
+    EXPECT_EQ(night.totalHorizontalIlluminance(), 0.0);
+}
+
+TEST(SkyMap, PixelLookupAgreesWithPixelDirections) {
+    SkyMap map(32, 16);
+    for (int iy = 0; iy < 16; ++iy)
+        for (int ix = 0; ix < 32; ++ix)
+            for (double f : {0.01, 0.5, 0.99}) {
+                int jx, jy;
+                map.pixelOf(map.direction(ix, iy, f, f), jx, jy);
+                EXPECT_EQ(jx, ix);
+                EXPECT_EQ(jy, iy);
+            }
+    int ix, iy;
+    map.pixelOf({1, 0, 0}, ix, iy);
+    EXPECT_EQ(iy, 8);  // horizontal directions belong to the ground
+    map.pixelOf({0, 0, 1}, ix, iy);
+    EXPECT_EQ(iy, 0);
+    map.pixelOf({0, 0, -1}, ix, iy);
+    EXPECT_EQ(iy, 15);
+    double total = 0;
+    for (int r = 0; r < 16; ++r) total += map.pixelSolidAngle(r) * 32;
+    EXPECT_NEAR(total, 4 * kPi, 1e-12);
+}
+
+}  // namespace
+}  // namespace luxplan
