@@ -47,13 +47,13 @@ std::string entityName(const Scene& s, int e) { return e == kRoomEntity ? "room"
 void printSummary(const Scene& s, std::ostream& out) {
     out << std::fixed << std::setprecision(2);
     out << "scene \"" << s.name << "\" (" << s.file.string() << ")\n";
-    out << "  site: latitude " << s.site.latitude << ", longitude " << s.site.longitude << ", north " << s.site.northDeg
+    out << "  site: latitude " << s.site.latitudeDeg << ", longitude " << s.site.longitudeDeg << ", north " << s.site.northDeg
         << " deg\n";
     if (s.daylight) {
-        const DaylightSpec& d = *s.daylight;
-        const char* model = d.sky == SkyModel::Preetham ? "preetham" : d.sky == SkyModel::CieOvercast ? "cie_overcast" : "uniform";
-        out << "  daylight: " << model << " sky" << (d.sun ? " + sun" : "");
-        if (d.from) out << ", " << *d.from << (d.to ? " to " + *d.to : "");
+        const DaylightParams& d = *s.daylight;
+        out << "  daylight: " << skyModelName(d.model) << " sky" << (d.sunEnabled() ? " + sun" : "");
+        if (d.sunOverride) out << " fixed at altitude " << d.sunOverride->altitudeDeg << ", azimuth " << d.sunOverride->azimuthDeg;
+        if (d.from) out << ", " << d.from->str() << (d.to ? " to " + d.to->str() + " every " + std::to_string(int(d.stepMinutes)) + " min" : "");
         out << "\n";
     } else {
         out << "  daylight: none (artificial light only)\n";

@@ -8,5 +8,6 @@ namespace luxplan::cli {
 
 void registerValidateCommand(CLI::App& app);
 void registerInfoCommand(CLI::App& app);
+void registerSunCommand(CLI::App& app);
 
 }  // namespace luxplan::cli

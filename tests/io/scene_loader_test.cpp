@@ -251,11 +251,11 @@ TEST(SceneLoader, DaylightChecks) {
     s["daylight"] = {{"sky", {{"model", "preetham"}}}, {"from", "2026-06-21T09:00"}};
     EXPECT_TRUE(startsWith(onlyProblem(s), "/daylight/from: ")) << onlyProblem(s);
     s["daylight"] = {{"sky", {{"model", "preetham"}}}};
-    EXPECT_TRUE(startsWith(onlyProblem(s), "/daylight: the preetham sky needs the sun's position"));
+    EXPECT_TRUE(startsWith(onlyProblem(s), "/daylight: sky model \"preetham\" needs a time")) << onlyProblem(s);
     s["daylight"] = {{"sky", {{"model", "cie_overcast"}}}, {"sun", false}};
-    EXPECT_EQ(onlyProblem(s), "/daylight/sky: missing required key \"horizontal_illuminance_lx\"");
+    EXPECT_EQ(onlyProblem(s), "/daylight/sky: sky model \"cie_overcast\" needs \"horizontal_illuminance_lx\"");
     s["daylight"] = {{"sky", {{"model", "preetham"}}}, {"from", "2026-06-21T12:00+03:00"}, {"to", "2026-06-21T09:00+03:00"}};
-    EXPECT_EQ(onlyProblem(s), "/daylight/to: interval ends (2026-06-21T09:00+03:00) before it starts (2026-06-21T12:00+03:00)");
+    EXPECT_EQ(onlyProblem(s), "/daylight/to: \"to\" 2026-06-21T09:00+03:00 is before \"from\" 2026-06-21T12:00+03:00");
     s["daylight"] = {{"sky", {{"model", "uniform"}, {"luminance_nits", 1000}, {"turbidity", 3}}}, {"sun", false}};
     EXPECT_EQ(onlyProblem(s), "/daylight/sky/turbidity: \"turbidity\" does not apply to the uniform sky");
     s["daylight"] = {{"sky", {{"model", "preetham"}}}, {"sun", {{"altitude_deg", 40}, {"azimuth_deg", 180}}}};

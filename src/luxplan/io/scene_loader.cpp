@@ -129,7 +129,9 @@ private:
         if (auto v = f.integer("luxplan", {}, true); v && *v != 1)
             f.error("luxplan", "unsupported format version " + std::to_string(*v) + " (this luxplan reads version 1)");
         scene_.name = f.string("name").value_or(scene_.file.stem().string());
+        size_t beforeSite = sink_.count();
         if (f.has("site")) readSite(f.get("site"), f.at("site"));
+        siteValid_ = sink_.count() == beforeSite;
         if (f.has("daylight")) readDaylight(f.get("daylight"), f.at("daylight"));
         if (f.has("materials")) readMaterials(f.get("materials"), f.at("materials"));
         if (auto* a = f.array("geometry"))
@@ -160,8 +162,8 @@ private:
 
     void readSite(const Json& j, const std::string& path) {
         Fields f(sink_, j, path, {"latitude", "longitude", "north_deg"});
-        scene_.site.latitude = f.number("latitude", 0.0, Range::closed(-90, 90, "deg"));
-        scene_.site.longitude = f.number("longitude", 0.0, Range::closed(-180, 180, "deg"));
+        scene_.site.latitudeDeg = f.number("latitude", 0.0, Range::closed(-90, 90, "deg"));
+        scene_.site.longitudeDeg = f.number("longitude", 0.0, Range::closed(-180, 180, "deg"));
         scene_.site.northDeg = f.number("north_deg", 0.0, Range::closed(-360, 360, "deg"));
     }
 
@@ -174,35 +176,40 @@ private:
         return t;
     }
 
+    // Types, units and keys here; the cross-field rules (what each sky model needs, the
+    // time interval) are the daylight module's validateDaylight(), run once this passes.
     void readDaylight(const Json& j, const std::string& path) {
-        Fields f(sink_, j, path, {"sky", "sun", "ground_reflectance", "from", "to", "step_minutes"});
+        size_t before = sink_.count();
+        Fields f(sink_, j, path,
+                 {"sky", "sun", "ground_reflectance", "from", "to", "step_minutes", "pressure_mbar", "temperature_c"});
         if (!f.valid()) return;
-        DaylightSpec d;
+        DaylightParams d;
         if (!f.has("sky")) f.missing("sky");
         else {
-            Fields s(sink_, f.get("sky"), f.at("sky"), {"model", "turbidity", "horizontal_illuminance_lx", "luminance_nits"});
+            Fields s(sink_, f.get("sky"), f.at("sky"),
+                     {"model", "turbidity", "horizontal_illuminance_lx", "luminance_nits", "type"});
             auto model = s.string("model", true);
-            auto inapplicable = [&](std::initializer_list<const char*> keys, const std::string& m) {
-                for (const char* k : keys)
-                    if (s.has(k)) s.error(k, std::string("\"") + k + "\" does not apply to the " + m + " sky");
-            };
-            if (model == "preetham") {
-                d.sky = SkyModel::Preetham;
-                d.turbidity = s.number("turbidity", 3.0, Range::closed(1.0, 20.0));
-                inapplicable({"horizontal_illuminance_lx", "luminance_nits"}, *model);
-            } else if (model == "cie_overcast") {
-                d.sky = SkyModel::CieOvercast;
-                d.horizontalIlluminanceLx = s.number("horizontal_illuminance_lx", Range::positive("lx"), true).value_or(1);
-                inapplicable({"turbidity", "luminance_nits"}, *model);
-            } else if (model == "uniform") {
-                d.sky = SkyModel::Uniform;
-                d.luminanceNits = s.number("luminance_nits", kNonNegative, true).value_or(0);
-                inapplicable({"turbidity", "horizontal_illuminance_lx"}, *model);
-            } else if (model) {
-                s.error("model", "unknown sky model \"" + *model + "\" (preetham, cie_overcast or uniform)");
+            auto parsed = model ? parseSkyModel(*model) : std::nullopt;
+            if (model && !parsed)
+                s.error("model", "unknown sky model \"" + *model + "\" (preetham, cie_overcast, uniform or cie_general)");
+            if (parsed) {
+                d.model = *parsed;
+                std::vector<const char*> own;
+                switch (d.model) {
+                    case SkyModelType::Preetham: own = {"turbidity"}; break;
+                    case SkyModelType::CieOvercast: own = {"horizontal_illuminance_lx"}; break;
+                    case SkyModelType::Uniform: own = {"luminance_nits"}; break;
+                    case SkyModelType::CieGeneral: own = {"horizontal_illuminance_lx", "type", "turbidity"}; break;
+                }
+                for (const char* k : {"turbidity", "horizontal_illuminance_lx", "luminance_nits", "type"})
+                    if (s.has(k) && std::none_of(own.begin(), own.end(), [&](const char* o) { return std::string(o) == k; }))
+                        s.error(k, std::string("\"") + k + "\" does not apply to the " + *model + " sky");
             }
+            d.turbidity = s.number("turbidity", 3.0);
+            d.horizontalIlluminanceLx = s.number("horizontal_illuminance_lx");
+            d.luminanceNits = s.number("luminance_nits");
+            d.cieSkyType = s.integer("type").value_or(12);
         }
-        d.sun = d.sky == SkyModel::Preetham;
         if (f.has("sun")) {
             const Json& sun = f.get("sun");
             if (sun.is_boolean()) {
@@ -210,30 +217,25 @@ private:
             } else if (sun.is_object()) {
                 Fields o(sink_, sun, f.at("sun"), {"altitude_deg", "azimuth_deg", "normal_illuminance_lx"});
                 SunOverride so;
-                so.altitudeDeg = o.number("altitude_deg", Range::closed(-90, 90, "deg"), true).value_or(45);
-                so.azimuthDeg = o.number("azimuth_deg", Range::closed(-360, 360, "deg"), true).value_or(180);
-                so.normalIlluminanceLx = o.number("normal_illuminance_lx", kNonNegative);
-                d.sun = true;
+                so.altitudeDeg = o.number("altitude_deg", {}, true).value_or(45);
+                so.azimuthDeg = o.number("azimuth_deg", {}, true).value_or(180);
+                so.normalIlluminanceLx = o.number("normal_illuminance_lx");
                 d.sunOverride = so;
             } else {
                 f.error("sun", "expected true, false or a sun object, got " + typeName(sun));
             }
         }
-        if (d.sun && d.sky != SkyModel::Preetham && !(d.sunOverride && d.sunOverride->normalIlluminanceLx))
-            f.error("sun", "the " + std::string(d.sky == SkyModel::Uniform ? "uniform" : "cie_overcast") +
-                               " sky has no sun model; set \"sun\": false or give a sun object with "
-                               "\"normal_illuminance_lx\"");
-        d.groundReflectance = f.number("ground_reflectance", 0.2, kUnit);
-        d.stepMinutes = f.number("step_minutes", 15.0, Range::positive("min"));
-        auto from = readTime(f, "from"), to = readTime(f, "to");
-        if (f.has("from")) d.from = f.get("from").get<std::string>();
-        if (f.has("to")) d.to = f.get("to").get<std::string>();
-        if (f.has("to") && !f.has("from")) f.error("to", "\"to\" needs \"from\"");
-        if (from && to && to->julianDayUT() < from->julianDayUT())
-            f.error("to", "interval ends (" + to->str() + ") before it starts (" + from->str() + ")");
-        bool needsTime = d.sky == SkyModel::Preetham && !d.sunOverride;
-        if (needsTime && !f.has("from"))
-            sink_.error(path, "the preetham sky needs the sun's position: give \"from\" (and \"to\") or a sun object");
+        d.groundReflectance = f.number("ground_reflectance", 0.2);
+        d.stepMinutes = f.number("step_minutes", 15.0);
+        d.pressureMbar = f.number("pressure_mbar", 1010.0);
+        d.temperatureC = f.number("temperature_c", 10.0);
+        d.from = readTime(f, "from");
+        d.to = readTime(f, "to");
+        if (sink_.count() == before && siteValid_)
+            for (Diagnostic diag : validateDaylight(d, scene_.site)) {
+                diag.file = sink_.file;
+                sink_.diagnostics.push_back(diag);
+            }
         scene_.daylight = d;
     }
 
@@ -855,6 +857,7 @@ private:
 
     LoadOptions options_;
     bool entitiesIncomplete_ = false;
+    bool siteValid_ = true;
     DiagnosticSink sink_;
     Scene scene_;
     std::filesystem::path dir_;

@@ -11,40 +11,12 @@
 #include <vector>
 
 #include <luxplan/core/math.h>
+#include <luxplan/daylight/daylight.h>
 #include <luxplan/materials/material.h>
 #include <luxplan/scene/mesh.h>
 #include <luxplan/scene/voxels.h>
 
 namespace luxplan {
-
-struct Site {
-    double latitude = 0;   // degrees, north positive
-    double longitude = 0;  // degrees, east positive
-    double northDeg = 0;   // clockwise angle from true north to the scene's +y axis
-};
-
-enum class SkyModel { Preetham, CieOvercast, Uniform };
-
-// A fixed sun position (and optionally its direct normal illuminance).
-struct SunOverride {
-    double altitudeDeg = 45;
-    double azimuthDeg = 180;  // clockwise from north
-    std::optional<double> normalIlluminanceLx;
-};
-
-// The scene's "daylight" object, as written (times kept as ISO 8601 text, already
-// checked by the loader).
-struct DaylightSpec {
-    SkyModel sky = SkyModel::Preetham;
-    double turbidity = 3.0;
-    double horizontalIlluminanceLx = 10000;  // cie_overcast
-    double luminanceNits = 1000;             // uniform
-    bool sun = true;
-    std::optional<SunOverride> sunOverride;
-    double groundReflectance = 0.2;
-    std::optional<std::string> from, to;
-    double stepMinutes = 15;
-};
 
 enum class Wall { North, South, East, West, Ceiling };
 
@@ -191,7 +163,7 @@ struct Scene {
     std::filesystem::path file;
     std::string name;
     Site site;
-    std::optional<DaylightSpec> daylight;
+    std::optional<DaylightParams> daylight;  // absent: night
     std::vector<Material> materials;
     std::map<std::string, uint32_t> materialIndex;
     std::vector<StaticItem> geometry;

@@ -1,0 +1,32 @@
+// The penalty function P of the paper's Eq. 2, shared by the geometric terms
+// (stiffness 2, rejecting past P = 1) and the lighting terms (stiffness 1, Eq. 3).
+#pragma once
+
+#include <vector>
+
+#include <luxplan/scene/scene.h>
+
+namespace luxplan {
+
+// Stiffness factors alpha: quadratic for geometric rules (Eqs. 4-8), linear for
+// light samplers (Eq. 3).
+inline constexpr double kGeometricStiffness = 2.0;
+inline constexpr double kLightingStiffness = 1.0;
+
+// Eq. 2: 0 inside (bmin, bmax), k (bmin - c)^alpha below, k (c - bmax)^alpha above,
+// with k = brej^-alpha, so P reaches 1 at brej outside the range. Infinite bounds
+// are open ends. brej must be > 0 (throws std::invalid_argument otherwise).
+double penalty(double c, double bmin, double bmax, double brej, double alpha);
+
+// A geometric term rejects its layout when its penalty exceeds 1 (Section 3).
+inline bool rejects(double geometricPenalty) { return geometricPenalty > 1.0; }
+
+// Eq. 3 for one sampler: P(value, target min, target max, tolerance, 1). Never rejects.
+double lightingPenalty(const LightSamplerSpec& sampler, double value);
+
+// Eq. 3: L = sum_k w_k P_k / sum_k w_k, i.e. the paper's (1/N_S) sum_k w_k P_k with
+// the weights normalized to a mean of 1; 0 when there are no samplers or all
+// weights are 0. `values[k]` is the measurement of scene.samplers[k].
+double lightingCost(const Scene& scene, const std::vector<double>& values);
+
+}  // namespace luxplan

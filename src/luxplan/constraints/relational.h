@@ -1,0 +1,50 @@
+// The relational rules of Section 5.2 on world transforms: alignment (Eq. 4),
+// distance (Eq. 5), focus (Eq. 7) and conversation (Eq. 8).
+#pragma once
+
+#include <vector>
+
+#include <luxplan/constraints/entity_info.h>
+#include <luxplan/constraints/terms.h>
+
+namespace luxplan {
+
+// The elastic limit of Eq. 4 as a fraction of the angular tolerance: rejection at
+// theta + theta/8.
+inline constexpr double kAlignmentRejectFraction = 1.0 / 8.0;
+// Eq. 5: the default rejection bound l_rej is 5% of the valid distance range.
+inline constexpr double kDistanceRejectFraction = 0.05;
+// l_rej when the range gives no length to take 5% of (min = max = 0, or [0, inf)):
+// one centimetre, half the default voxel edge.
+inline constexpr double kMinDistanceElasticLimit = 0.01;
+
+// Fronts of an entity in world space, unit vectors in the xy plane.
+std::vector<Vec2> worldFronts(const Scene& scene, const std::vector<Transform>& world, int e);
+
+// Eq. 4's measured value: the smallest angle (radians, [0, pi/2]) between the axis
+// of any front of a and the axis of any front of b (b = kRoomEntity: the room axes
+// x and y). Axial: parallel and antiparallel fronts are both aligned.
+double alignmentAngle(const Scene& scene, const std::vector<Transform>& world, int a, int b);
+
+// Eq. 7's measured value: the smallest angle (radians, [0, pi]) between a front of s
+// and the horizontal direction from s's centre to t's centre. Directional: a front
+// pointing away from t is pi. Coincident centres count as pi/2.
+double focusAngle(const Scene& scene, const EntityInfo& info, const std::vector<Transform>& world, int s, int t);
+
+// Eq. 5's measured value: the distance between the two entities' centres (m).
+double centerDistance(const EntityInfo& info, const std::vector<Transform>& world, int s, int t);
+
+// Eq. 4 read in angle space: P(angle, 0, theta, theta/8, 2). Zero up to the
+// tolerance theta, quadratic beyond, 1 at theta + theta/8.
+double anglePenalty(double angleRad, double toleranceDeg);
+
+// l_rej of a distance or conversation constraint: its `tolerance`, else 5% of
+// max - min; with an infinite (or empty) range, 5% of the finite non-zero bound;
+// else kMinDistanceElasticLimit.
+double distanceElasticLimit(const ConstraintSpec& spec);
+
+// Evaluates one alignment, distance, focus or conversation constraint.
+PenaltyTerm evaluateRelational(const Scene& scene, const EntityInfo& info, const std::vector<Transform>& world,
+                               int constraintIndex);
+
+}  // namespace luxplan
