@@ -10,6 +10,7 @@ int main(int argc, char** argv) {
     app.set_version_flag("--version", "luxplan 0.1.0");
     luxplan::cli::registerValidateCommand(app);
     luxplan::cli::registerInfoCommand(app);
+    luxplan::cli::registerMeasureCommand(app);
     luxplan::cli::registerSunCommand(app);
     try {
         app.parse(argc, argv);

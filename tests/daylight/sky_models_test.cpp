@@ -38,6 +38,11 @@ TEST(PreethamSky, PerezNormalizationGivesZenithValues) {
             EXPECT_NEAR(zenith.x, c.x, 1e-12);
             EXPECT_NEAR(zenith.y, c.y, 1e-12);
             EXPECT_NEAR(luminance(sky.rgb({0, 0, 1})), zenith.z, 1e-9 * zenith.z);
+            // The per-row evaluator and the direct luminance agree with xyY().
+            Vec3 w = fromAngles(radians(70), 2.0);
+            Vec3 a = sky.row(w.z).xyY(w), b = sky.xyY(w);
+            EXPECT_NEAR(a.z, b.z, 1e-12 * b.z);
+            EXPECT_NEAR(sky.luminance(w), b.z, 1e-9 * b.z);
         }
 }
 

@@ -1,19 +1,10 @@
-// Eq. 2 of the paper and its use for the lighting term (Eq. 3).
+// The lighting term of Eq. 3 from Eq. 2 penalties.
 #include <luxplan/constraints/penalty.h>
 
-#include <cmath>
 #include <stdexcept>
 #include <string>
 
 namespace luxplan {
-
-double penalty(double c, double bmin, double bmax, double brej, double alpha) {
-    if (!(brej > 0)) throw std::invalid_argument("penalty: elastic limit b_rej must be > 0, got " + std::to_string(brej));
-    double k = std::pow(brej, -alpha);
-    if (c <= bmin) return k * std::pow(bmin - c, alpha);
-    if (c >= bmax) return k * std::pow(c - bmax, alpha);
-    return 0.0;
-}
 
 double lightingPenalty(const LightSamplerSpec& sampler, double value) {
     return penalty(value, sampler.targetMin, sampler.targetMax, sampler.tolerance, kLightingStiffness);

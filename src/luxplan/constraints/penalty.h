@@ -1,9 +1,11 @@
-// The penalty function P of the paper's Eq. 2, shared by the geometric terms
-// (stiffness 2, rejecting past P = 1) and the lighting terms (stiffness 1, Eq. 3).
+// How the constraints use the penalty P of the paper's Eq. 2 (core/penalty.h):
+// geometric terms with stiffness 2, rejecting past P = 1; lighting terms (Eq. 3)
+// with stiffness 1, never rejecting.
 #pragma once
 
 #include <vector>
 
+#include <luxplan/core/penalty.h>  // penalty(c, bmin, bmax, brej, alpha): Eq. 2, infinite bounds open
 #include <luxplan/scene/scene.h>
 
 namespace luxplan {
@@ -12,11 +14,6 @@ namespace luxplan {
 // light samplers (Eq. 3).
 inline constexpr double kGeometricStiffness = 2.0;
 inline constexpr double kLightingStiffness = 1.0;
-
-// Eq. 2: 0 inside (bmin, bmax), k (bmin - c)^alpha below, k (c - bmax)^alpha above,
-// with k = brej^-alpha, so P reaches 1 at brej outside the range. Infinite bounds
-// are open ends. brej must be > 0 (throws std::invalid_argument otherwise).
-double penalty(double c, double bmin, double bmax, double brej, double alpha);
 
 // A geometric term rejects its layout when its penalty exceeds 1 (Section 3).
 inline bool rejects(double geometricPenalty) { return geometricPenalty > 1.0; }

@@ -16,7 +16,12 @@ const char* termName(TermKind kind) {
     return "?";
 }
 
-static std::string quoted(const Scene& scene, int e) { return "\"" + scene.entities[e].path + "\""; }
+static std::string quoted(const std::string& name) {
+    std::string s;
+    s.reserve(name.size() + 2);
+    s.append(1, '"').append(name).append(1, '"');
+    return s;
+}
 
 static std::string number(double v) {
     char buffer[32];
@@ -26,15 +31,15 @@ static std::string number(double v) {
 
 std::string describe(const Scene& scene, const PenaltyTerm& t) {
     std::string s = termName(t.kind);
-    s += " " + quoted(scene, t.a) + " / ";
+    s.append(1, ' ').append(quoted(scene.entities[t.a].path)).append(" / ");
     if (t.kind == TermKind::Overlap) {
-        if (t.target == OverlapTarget::Entity) s += quoted(scene, t.b);
-        else if (t.target == OverlapTarget::Static) s += "geometry \"" + scene.geometry[t.b].name + "\"";
+        if (t.target == OverlapTarget::Entity) s += quoted(scene.entities[t.b].path);
+        else if (t.target == OverlapTarget::Static) s.append("geometry ").append(quoted(scene.geometry[t.b].name));
         else s += "walls";
     } else {
-        s += t.b == kRoomEntity ? std::string("room") : quoted(scene, t.b);
+        s += t.b == kRoomEntity ? std::string("room") : quoted(scene.entities[t.b].path);
     }
-    if (t.constraint >= 0) s += " (" + scene.constraints[t.constraint].jsonPath + ")";
+    if (t.constraint >= 0) s.append(" (").append(scene.constraints[t.constraint].jsonPath).append(1, ')');
     s += ": ";
     switch (t.kind) {
         case TermKind::Alignment:

@@ -184,20 +184,23 @@ DaylightEnvironment buildDaylight(const DaylightParams& p, const Site& site, con
     // sun up (a sun below the horizon leaves that instant's sky dark; twilight is not modelled).
     if (p.model == SkyModelType::CieOvercast) {
         CieOvercastSky sky(*p.horizontalIlluminanceLx);
-        map.accumulate([&](const Vec3& w) { double l = sky.luminance(w); return Vec3(l, l, l); }, 1.0, ss, 0, skyRows);
+        map.accumulate([&](double) { return [&](const Vec3& w) { double l = sky.luminance(w); return Vec3(l, l, l); }; },
+                       1.0, ss, 0, skyRows);
     } else if (p.model == SkyModelType::Uniform) {
         const double l = *p.luminanceNits;
-        map.accumulate([&](const Vec3&) { return Vec3(l, l, l); }, 1.0, 1, 0, skyRows);
+        map.accumulate([&](double) { return [&](const Vec3&) { return Vec3(l, l, l); }; }, 1.0, 1, 0, skyRows);
     } else {
         for (const DaylightInstant& i : instants) {
             if (!i.hasSunPosition || i.sunAltitudeDeg < 0) continue;
             if (p.model == SkyModelType::Preetham) {
                 PreethamSky sky(p.turbidity, i.sunDirection);
-                map.accumulate([&](const Vec3& w) { return sky.rgb(w); }, weight, ss, 0, skyRows);
+                map.accumulate([&](double z) { return [row = sky.row(z)](const Vec3& w) { return row.rgb(w); }; },
+                               weight, ss, 0, skyRows);
             } else {
                 CieGeneralSky sky(p.cieSkyType, i.sunDirection, *p.horizontalIlluminanceLx);
-                map.accumulate([&](const Vec3& w) { double l = sky.luminance(w); return Vec3(l, l, l); }, weight, ss,
-                               0, skyRows);
+                map.accumulate(
+                    [&](double) { return [&](const Vec3& w) { double l = sky.luminance(w); return Vec3(l, l, l); }; },
+                    weight, ss, 0, skyRows);
             }
         }
     }

@@ -10,6 +10,9 @@
 
 #include <vector>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <luxplan/core/math.h>
 #include <luxplan/daylight/distribution.h>
 
@@ -42,10 +45,13 @@ public:
     // Cosine of the zenith angle at the top edge of row iy (row iy spans [cosEdge(iy+1), cosEdge(iy)]).
     double cosEdge(int iy) const { return cosEdges_[size_t(iy)]; }
 
-    // Adds weight * average over each pixel of f(direction) for the rows [rowBegin, rowEnd),
-    // with s x s sub-samples per pixel, equal in solid angle. Rows run in parallel.
-    template <class F>
-    void accumulate(const F& f, double weight, int s, int rowBegin, int rowEnd);
+    // Adds weight * (average over each pixel of the radiance) for the rows [rowBegin, rowEnd),
+    // with s x s sub-samples per pixel, equal in solid angle. `rowFunction(z)` returns a
+    // callable g(w) giving the radiance for directions w with w.z == z (so work that depends
+    // only on the zenith angle is done once per sub-row). Rows run in parallel; each pixel is
+    // computed on its own, so the result does not depend on the thread count.
+    template <class RowFunction>
+    void accumulate(const RowFunction& rowFunction, double weight, int s, int rowBegin, int rowEnd);
 
 private:
     int width_ = 0, height_ = 0;
@@ -133,24 +139,32 @@ private:
 
 // ---- template implementation ----
 
-}  // namespace luxplan
-
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
-namespace luxplan {
-
-template <class F>
-void SkyMap::accumulate(const F& f, double weight, int s, int rowBegin, int rowEnd) {
+template <class RowFunction>
+void SkyMap::accumulate(const RowFunction& rowFunction, double weight, int s, int rowBegin, int rowEnd) {
     const double inv = 1.0 / s, norm = weight / (double(s) * s);
+    // cos/sin of every sub-sample column, shared by all rows.
+    std::vector<Vec2> columns(size_t(width_) * size_t(s));
+    for (int ix = 0; ix < width_; ++ix)
+        for (int a = 0; a < s; ++a) {
+            const double phi = 2 * kPi * (ix + (a + 0.5) * inv) / width_;
+            columns[size_t(ix) * s + a] = {std::cos(phi), std::sin(phi)};
+        }
     tbb::parallel_for(tbb::blocked_range<int>(rowBegin, rowEnd), [&](const tbb::blocked_range<int>& rows) {
-        for (int iy = rows.begin(); iy != rows.end(); ++iy)
-            for (int ix = 0; ix < width_; ++ix) {
-                Vec3 sum;
-                for (int a = 0; a < s; ++a)
-                    for (int b = 0; b < s; ++b) sum += f(direction(ix, iy, (a + 0.5) * inv, (b + 0.5) * inv));
-                at(ix, iy) += sum * norm;
+        std::vector<Vec3> sums(static_cast<size_t>(width_));
+        for (int iy = rows.begin(); iy != rows.end(); ++iy) {
+            std::fill(sums.begin(), sums.end(), Vec3{});
+            for (int b = 0; b < s; ++b) {
+                const double z = direction(0, iy, 0, (b + 0.5) * inv).z;
+                const double r = std::sqrt(std::max(0.0, 1 - z * z));
+                const auto g = rowFunction(z);
+                for (int ix = 0; ix < width_; ++ix)
+                    for (int a = 0; a < s; ++a) {
+                        const Vec2 c = columns[size_t(ix) * s + a];
+                        sums[size_t(ix)] += g(Vec3(r * c.x, r * c.y, z));
+                    }
             }
+            for (int ix = 0; ix < width_; ++ix) at(ix, iy) += sums[size_t(ix)] * norm;
+        }
     });
 }
 

@@ -61,12 +61,10 @@ double clampedZenith(const Vec3& sun) { return std::acos(std::clamp(sun.z, 0.0, 
 
 }  // namespace
 
-double PerezCoefficients::operator()(double cosTheta, double gamma) const {
+double PerezCoefficients::gradation(double cosTheta) const {
     // Directions at or below the horizon are evaluated at the horizon (B < 0 makes the
     // exponential vanish there); the small floor avoids 0/0.
-    double ct = std::max(cosTheta, 1e-6);
-    double cg = std::cos(gamma);
-    return (1 + a * std::exp(b / ct)) * (1 + c * std::exp(d * gamma) + e * cg * cg);
+    return 1 + a * std::exp(b / std::max(cosTheta, 1e-6));
 }
 
 PerezCoefficients preethamPerezY(double t) {
@@ -114,20 +112,34 @@ PreethamSky::PreethamSky(double turbidity, const Vec3& sunDirection)
     normYc_ = zenithYc_ / perezYc_(1.0, thetaS);
 }
 
-double PreethamSky::luminance(const Vec3& w) const {
-    double gamma = std::acos(std::clamp(dot(w, sun_), -1.0, 1.0));
-    return normY_ * perezY_(w.z, gamma);
+PreethamSky::Row PreethamSky::row(double cosTheta) const {
+    Row r;
+    r.sky_ = this;
+    r.x_ = normX_ * perezX_.gradation(cosTheta);
+    r.yc_ = normYc_ * perezYc_.gradation(cosTheta);
+    r.y_ = normY_ * perezY_.gradation(cosTheta);
+    return r;
 }
 
-Vec3 PreethamSky::xyY(const Vec3& w) const {
-    double gamma = std::acos(std::clamp(dot(w, sun_), -1.0, 1.0));
-    return {normX_ * perezX_(w.z, gamma), normYc_ * perezYc_(w.z, gamma), normY_ * perezY_(w.z, gamma)};
+Vec3 PreethamSky::Row::xyY(const Vec3& w) const {
+    const double cg = std::clamp(dot(w, sky_->sun_), -1.0, 1.0), gamma = std::acos(cg);
+    return {x_ * sky_->perezX_.indicatrix(gamma, cg), yc_ * sky_->perezYc_.indicatrix(gamma, cg),
+            y_ * sky_->perezY_.indicatrix(gamma, cg)};
 }
 
-Vec3 PreethamSky::rgb(const Vec3& w) const {
+Vec3 PreethamSky::Row::rgb(const Vec3& w) const {
     Vec3 c = xyY(w);
     return clampToGamut(xyYToRGB(c.x, c.y, c.z));
 }
+
+double PreethamSky::luminance(const Vec3& w) const {
+    const double cg = std::clamp(dot(w, sun_), -1.0, 1.0);
+    return normY_ * perezY_.gradation(w.z) * perezY_.indicatrix(std::acos(cg), cg);
+}
+
+Vec3 PreethamSky::xyY(const Vec3& w) const { return row(w.z).xyY(w); }
+
+Vec3 PreethamSky::rgb(const Vec3& w) const { return row(w.z).rgb(w); }
 
 double relativeAirMass(double sunZenith) {
     double deg = degrees(sunZenith);

@@ -28,7 +28,11 @@ inline constexpr double kMaxTurbidity = 10.0;
 // F(theta, gamma) = (1 + A exp(B / cos theta)) (1 + C exp(D gamma) + E cos^2 gamma).
 struct PerezCoefficients {
     double a = 0, b = 0, c = 0, d = 0, e = 0;
-    double operator()(double cosTheta, double gamma) const;
+    double operator()(double cosTheta, double gamma) const { return gradation(cosTheta) * indicatrix(gamma, std::cos(gamma)); }
+    // The two factors: zenith-angle (evaluated at cos theta >= 1e-6, i.e. at the horizon for
+    // directions at or below it) and sun-angle.
+    double gradation(double cosTheta) const;
+    double indicatrix(double gamma, double cosGamma) const { return 1 + c * std::exp(d * gamma) + e * cosGamma * cosGamma; }
 };
 // PSS99 table 2 (paper's 4-decimal values) for luminance Y and chromaticities x, y.
 PerezCoefficients preethamPerezY(double turbidity);
@@ -52,6 +56,20 @@ public:
     double luminance(const Vec3& w) const;
     Vec3 xyY(const Vec3& w) const;  // (x, y, Y)
     Vec3 rgb(const Vec3& w) const;
+
+    // Evaluates directions that share one cos(theta) (a row of a map) with the zenith-angle
+    // factors computed once; results equal xyY()/rgb().
+    class Row {
+    public:
+        Vec3 xyY(const Vec3& w) const;
+        Vec3 rgb(const Vec3& w) const;
+
+    private:
+        friend class PreethamSky;
+        const PreethamSky* sky_ = nullptr;
+        double x_ = 0, yc_ = 0, y_ = 0;  // normalization x gradation per channel
+    };
+    Row row(double cosTheta) const;
 
 private:
     Vec3 sun_;

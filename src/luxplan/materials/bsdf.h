@@ -40,6 +40,12 @@ struct BsdfSample {
     bool isTransmission = false;  // wi is on the other side of the surface than wo
 };
 
+// f and pdf of one direction pair, as eval() and pdf() return them.
+struct BsdfEval {
+    Vec3 f;
+    double pdf = 0;
+};
+
 enum class BsdfType : uint8_t { Diffuse, Glossy, ThinGlass, Mirror };
 
 class Bsdf {
@@ -70,10 +76,13 @@ public:
     // to the normal (ThinGlass::transmittance), 0 for opaque materials.
     double straightTransmittance(double cosTheta) const;
 
-    Vec3 eval(const Vec3& wo, const Vec3& wi) const;
+    Vec3 eval(const Vec3& wo, const Vec3& wi) const { return evalPdf(wo, wi).f; }
     double pdf(const Vec3& wo, const Vec3& wi) const;
-    // uLobe picks the lobe, u the direction within it; nullopt when nothing is
-    // scattered (a black surface, wo.z == 0, or a microfacet sample below the surface).
+    // Both at once (what light sampling with MIS needs), sharing the work.
+    BsdfEval evalPdf(const Vec3& wo, const Vec3& wi) const;
+    // uLobe picks the lobe, u the direction within it (all uniform in [0, 1)). nullopt when
+    // no direction is produced: wo.z == 0, or a microfacet reflected below the surface
+    // (pdf() integrates to the probability of producing one, so the estimate stays unbiased).
     std::optional<BsdfSample> sample(const Vec3& wo, double uLobe, Vec2 u) const;
 
     // The fraction of the flux arriving from wo that is scattered, int f |wi.z| dwi plus
@@ -87,10 +96,14 @@ public:
     const ThinGlass& glass() const { return glass_; }
 
 private:
-    // Glossy: the probability of sampling the coat rather than the base, seen from wo.z > 0.
-    double coatProbability(double cosO) const;
-    Vec3 evalGlossy(const Vec3& wo, const Vec3& wi) const;
-    double pdfGlossy(const Vec3& wo, const Vec3& wi) const;
+    // Glossy terms that depend on wo alone (wo.z > 0).
+    struct GlossyView {
+        Vec3 coatAlbedo;         // E(wo), per channel
+        double coatProbability;  // of sampling the coat rather than the base
+    };
+    GlossyView glossyView(double cosO) const;
+    // wo.z > 0 and wi.z > 0; `pdf` may be null when only f is wanted.
+    Vec3 evalGlossy(const Vec3& wo, const Vec3& wi, const GlossyView& view, double* pdf) const;
 
     BsdfType type_ = BsdfType::Diffuse;
     Vec3 a_{0, 0, 0}, b_{0, 0, 0};

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <luxplan/core/math.h>
+#include <luxplan/materials/microfacet.h>
 
 namespace luxplan {
 
@@ -35,12 +36,15 @@ GgxAlbedo ggxAverageAlbedo(GgxAlbedoRow row);
 // quadrature over microfacet normals, to an absolute `tolerance` (slow: milliseconds).
 GgxAlbedo ggxAlbedoQuadrature(double cosTheta, double alpha, double tolerance = 1e-7);
 
-// The table's grid, for its generator and its tests.
-inline constexpr int kGgxAlbedoCosCount = 64;
-inline constexpr int kGgxAlbedoAlphaCount = 32;
-// Row j holds alpha = kMinGgxAlpha^(1 - j / (count - 1)) (log-spaced up to 1); column i
-// holds the cosine mu with s(mu) = i / (count - 1), s = log(1 + mu/mu0) / log(1 + 1/mu0),
-// which is dense at grazing angles where E changes on the scale mu ~ alpha.
+// The table's grid, for its generator and its tests: row j holds alpha at a coordinate
+// j / (rows - 1) that blends linear and log(alpha) spacing from kMinGgxAlpha to 1; column i
+// holds mu at i / (columns - 1) of a blend of linear and log(1 + mu / 1e-3) spacing, dense
+// at grazing angles where E changes on the scale mu ~ alpha.
+inline constexpr int kGgxAlbedoCosCount = 128;
+inline constexpr int kGgxAlbedoAlphaCount = 64;
+// Bound on |table - quadrature| anywhere (alpha >= kMinGgxAlpha), asserted by the tests;
+// the worst cells are at mu ~ alpha < 0.01 (beyond 89 degrees), elsewhere it is ~1e-5.
+inline constexpr double kGgxAlbedoTableError = 1e-3;
 double ggxAlbedoTableAlpha(int row);
 double ggxAlbedoTableCos(int column);
 

@@ -1,0 +1,43 @@
+// Path tracer throughput on the furnished office (daylight + 6 panels), next to raw
+// Embree throughput on the same scene (embree_bench.cpp), single-threaded so that the
+// two compare as a ratio on a shared machine.
+#include <benchmark/benchmark.h>
+
+#include <luxplan/io/scene_loader.h>
+#include <luxplan/lightsamplers/light_samplers.h>
+
+namespace luxplan {
+namespace {
+
+struct Office {
+    Scene scene = io::loadScene(std::string(LUXPLAN_SOURCE_DIR) + "/scenes/demo/office.json");
+    DaylightEnvironment daylight = buildDaylight(*scene.daylight, scene.site);
+    EmbreeScene rt{scene, initialLayout(scene)};
+    PathTracer tracer{rt, &daylight};
+};
+
+Office& office() {
+    static Office o;
+    return o;
+}
+
+void BM_MeasureOffice(benchmark::State& state) {
+    Office& o = office();
+    MeasureOptions options;
+    options.pathsPerPoint = int(state.range(0));
+    options.threads = 1;
+    uint64_t paths = 0, rays = 0;
+    for (auto _ : state) {
+        MeasureResult r = measureSamplers(o.tracer, options);
+        paths += r.paths;
+        rays += r.rays.closest + r.rays.shadow;
+        ++options.seed;
+    }
+    state.counters["paths/s"] = benchmark::Counter(double(paths), benchmark::Counter::kIsRate);
+    state.counters["rays/s"] = benchmark::Counter(double(rays), benchmark::Counter::kIsRate);
+    state.counters["rays/path"] = double(rays) / double(paths);
+}
+BENCHMARK(BM_MeasureOffice)->Arg(64)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+}  // namespace luxplan

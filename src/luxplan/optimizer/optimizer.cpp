@@ -1,0 +1,276 @@
+// Hierarchical Metropolis over layouts: start state, level schedule, proposals,
+// geometric gate, lighting hook, acceptance and the best layout.
+#include <luxplan/optimizer/optimizer.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+
+#include <luxplan/optimizer/placement.h>
+
+namespace luxplan {
+namespace {
+
+constexpr uint64_t kStreamTag = 0x6c75786f7074ULL;  // "luxopt": the optimizer's random streams
+constexpr uint64_t kStartStream = 0, kGroupStream = 1, kObjectStream = 2, kFlatStream = 3;
+constexpr int kTraceRows = 10000;
+
+}  // namespace
+
+const char* stopReasonName(StopReason reason) {
+    switch (reason) {
+        case StopReason::Iterations: return "iterations";
+        case StopReason::ZeroCost: return "zero_cost";
+        case StopReason::Cancelled: return "cancelled";
+        case StopReason::NothingToMove: return "nothing_to_move";
+    }
+    return "?";
+}
+
+double Schedule::temperature(int iteration, int iterations) const {
+    if (kind == Kind::Constant || iterations <= 1) return start;
+    double t = std::clamp(double(iteration) / double(iterations - 1), 0.0, 1.0);
+    return start * std::pow(end / start, t);
+}
+
+OptimizerOptions optimizerOptions(const Scene& scene) {
+    OptimizerOptions o;
+    o.iterations = scene.optimizer.iterations;
+    o.seed = scene.optimizer.seed;
+    return o;
+}
+
+Optimizer::Optimizer(const Scene& scene, OptimizerOptions options, LightingEvaluator* lighting)
+    : scene_(&scene), options_(options), lighting_(lighting), geometry_(scene) {
+    auto check = [](bool ok, const char* what) {
+        if (!ok) throw std::invalid_argument(std::string("optimizer options: ") + what);
+    };
+    check(options_.iterations >= 0, "iterations must be >= 0");
+    check(options_.innerIterations >= 1, "inner iterations must be >= 1");
+    check(options_.schedule.start > 0 && options_.schedule.end > 0, "temperatures must be > 0");
+    check(options_.startAttempts >= 1, "start attempts must be >= 1");
+    check(options_.moves.sigmaFraction > 0, "sigma fraction must be > 0");
+    check(options_.progressEvery >= 1, "progress interval must be >= 1");
+    check(options_.traceEvery >= 0, "trace interval must be >= 0");
+
+    std::vector<int> all, outer, inner;
+    for (size_t i = 0; i < scene.entities.size(); ++i) {
+        if (!scene.entities[i].movable()) continue;
+        all.push_back(int(i));
+        (scene.entities[i].parent < 0 ? outer : inner).push_back(int(i));
+    }
+    auto addLevel = [&](const char* name, const std::vector<int>& entities, uint64_t stream) {
+        MoveSet moves(scene, entities, options_.moves);
+        if (moves.empty()) return;
+        levels_.push_back(std::move(moves));
+        stats_.push_back({name, entities, {}});
+        rngs_.emplace_back(hashValues({options_.seed, kStreamTag, stream}));
+        streams_.push_back(stream);
+    };
+    if (options_.hierarchy == Hierarchy::Flat) {
+        addLevel("flat", all, kFlatStream);
+    } else {
+        addLevel("group", outer, kGroupStream);
+        addLevel("object", inner, kObjectStream);
+    }
+    traceEvery_ = options_.traceEvery > 0 ? options_.traceEvery : std::max(1, options_.iterations / kTraceRows);
+}
+
+Evaluation Optimizer::evaluate(const Layout& layout, const std::vector<Transform>& world) {
+    GeometryResult g = geometry_.evaluate(world);
+    Evaluation e;
+    e.geometry = g.cost;
+    e.rejected = g.rejected;
+    e.violation = g.violation;
+    e.rejectedBy = std::move(g.rejectedBy);
+    const double w = scene_->objective.lightingWeight;
+    // Section 3: the lighting term only for layouts that pass the geometric test.
+    if (!e.rejected && lighting_ && !scene_->samplers.empty() && w > 0) {
+        e.lighting = lighting_->evaluate(layout, world, &e.samplers);
+        e.lightingEvaluated = true;
+    }
+    e.cost = w * e.lighting + (1 - w) * e.geometry;  // Eq. 1
+    return e;
+}
+
+void Optimizer::initialize() {
+    for (size_t i = 0; i < levels_.size(); ++i) {
+        rngs_[i] = Rng(hashValues({options_.seed, kStreamTag, streams_[i]}));
+        stats_[i].moves = {};
+    }
+    geometry_.revert();
+    Rng rng(hashValues({options_.seed, kStreamTag, kStartStream}));
+    Layout base = initialLayout(*scene_);
+    Layout start = base;
+    if (options_.start == StartFrom::Scene) {
+        for (size_t i = 0; i < scene_->entities.size(); ++i)
+            if (scene_->entities[i].movable() && start.placements[i].region < 0)
+                start.placements[i] = samplePlacement(scene_->entities[i], base.placements[i].position.z, rng);
+    } else {
+        // The paper's start: uniform draws; the first that no geometric term rejects,
+        // else the least violating one (the chain then repairs it, see step()).
+        double leastViolation = kInf;
+        for (int attempt = 0; attempt < options_.startAttempts; ++attempt) {
+            Layout candidate = sampleLayout(*scene_, base, rng);
+            GeometryResult g = geometry_.evaluate(worldTransforms(*scene_, candidate));
+            geometry_.commit();
+            if (g.rejected && g.violation >= leastViolation) continue;
+            leastViolation = g.violation;
+            start = std::move(candidate);
+            if (!g.rejected) break;
+        }
+    }
+    current_ = start;
+    currentEval_ = evaluate(current_, worldTransforms(*scene_, current_));
+    geometry_.commit();
+    startEval_ = currentEval_;
+    best_ = current_;
+    bestEval_ = currentEval_;
+    feasible_ = !currentEval_.rejected;
+    iteration_ = bestIteration_ = 0;
+    trace_.clear();
+    record();
+    initialized_ = true;
+}
+
+int Optimizer::levelAt(int iteration) const {
+    if (levels_.size() < 2) return 0;
+    // One group-level proposal, then innerIterations object-level ones.
+    return iteration % (1 + options_.innerIterations) == 0 ? 0 : 1;
+}
+
+void Optimizer::record() {
+    trace_.push_back({iteration_, currentEval_.cost, feasible_ ? bestEval_.cost : kInf, !currentEval_.rejected});
+}
+
+void Optimizer::step() {
+    if (!initialized_) initialize();
+    if (levels_.empty()) {
+        ++iteration_;
+        return;
+    }
+    const int level = levelAt(iteration_);
+    const double temperature = options_.schedule.temperature(iteration_, options_.iterations);
+    Rng& rng = rngs_[size_t(level)];
+    Layout proposed = current_;
+    Proposal p = levels_[size_t(level)].propose(proposed, rng);
+    MoveStats& stats = stats_[size_t(level)].moves[int(p.type)];
+    ++stats.proposed;
+
+    bool accept = false;
+    Evaluation e;
+    if (!p.valid) {
+        ++stats.outside;
+    } else {
+        e = evaluate(proposed, worldTransforms(*scene_, proposed));
+        if (currentEval_.rejected) {
+            // Repair (only before the first feasible state): descend on the total
+            // violation; a feasible proposal always ends the repair.
+            accept = !e.rejected || e.violation <= currentEval_.violation;
+        } else if (!e.rejected) {
+            // Metropolis-Hastings: min(1, exp(-(C' - C) / T) q(x'->x) / q(x->x')).
+            double logA = -(e.cost - currentEval_.cost) / temperature + p.logHastings;
+            accept = logA >= 0 || rng.uniform() < std::exp(logA);
+        }
+        if (e.rejected && !accept) ++stats.rejectedGeometry;
+        if (accept) geometry_.commit();
+        else geometry_.revert();
+    }
+    ++iteration_;
+    if (accept) {
+        ++stats.accepted;
+        current_ = std::move(proposed);
+        currentEval_ = std::move(e);
+        bool better = !feasible_ || currentEval_.cost < bestEval_.cost;
+        if (!currentEval_.rejected && better) {
+            feasible_ = true;
+            best_ = current_;
+            bestEval_ = currentEval_;
+            bestIteration_ = iteration_;
+        } else if (!feasible_) {
+            best_ = current_;  // the least violating layout so far
+            bestEval_ = currentEval_;
+            bestIteration_ = iteration_;
+        }
+    }
+    if (iteration_ % traceEvery_ == 0) record();
+}
+
+OptimizerResult Optimizer::run(const ProgressCallback& progress, const std::atomic<bool>* cancel) {
+    using Clock = std::chrono::steady_clock;
+    const auto started = Clock::now();
+    auto seconds = [&] { return std::chrono::duration<double>(Clock::now() - started).count(); };
+    if (!initialized_) initialize();
+    const int first = iteration_;
+    int reported = -1;
+    auto report = [&] {
+        if (!progress || reported == iteration_) return;
+        reported = iteration_;
+        Progress pr;
+        pr.iteration = iteration_;
+        pr.iterations = options_.iterations;
+        pr.current = currentEval_.cost;
+        pr.best = feasible_ ? bestEval_.cost : kInf;
+        pr.feasible = !currentEval_.rejected;
+        pr.temperature = options_.schedule.temperature(iteration_, options_.iterations);
+        for (MoveType t : kMoveTypes) {
+            MoveStats total;
+            for (const auto& level : stats_) {
+                total.proposed += level.moves[int(t)].proposed;
+                total.accepted += level.moves[int(t)].accepted;
+            }
+            pr.acceptance[int(t)] = total.acceptance();
+        }
+        pr.seconds = seconds();
+        int done = iteration_ - first;
+        pr.etaSeconds = done > 0 ? pr.seconds / done * std::max(0, options_.iterations - iteration_) : 0.0;
+        progress(pr);
+    };
+    auto solved = [&] { return options_.stopAtZeroCost && feasible_ && bestEval_.cost == 0; };
+
+    StopReason stop = StopReason::Iterations;
+    if (levels_.empty()) stop = StopReason::NothingToMove;
+    else if (solved()) stop = StopReason::ZeroCost;
+    else
+        while (iteration_ < options_.iterations) {
+            if (cancel && cancel->load(std::memory_order_relaxed)) {
+                stop = StopReason::Cancelled;
+                break;
+            }
+            step();
+            if (iteration_ % options_.progressEvery == 0) report();
+            if (solved()) {
+                stop = StopReason::ZeroCost;
+                break;
+            }
+        }
+    if (trace_.empty() || trace_.back().iteration != iteration_) record();
+    report();
+
+    OptimizerResult r;
+    r.best = best_;
+    // The per-term breakdown of the best layout; the cache goes back to the current one.
+    std::vector<Transform> world = worldTransforms(*scene_, best_);
+    r.bestGeometry = geometry_.evaluate(world, /* breakdown = */ true);
+    geometry_.revert();
+    if (lighting_ && !scene_->samplers.empty() && !bestEval_.rejected && !bestEval_.lightingEvaluated) {
+        // Lighting weight 0: L took no part in the run, but the report still shows it.
+        bestEval_.lighting = lighting_->evaluate(best_, world, &bestEval_.samplers);
+        bestEval_.lightingEvaluated = true;
+    }
+    r.bestEvaluation = bestEval_;
+    r.startEvaluation = startEval_;
+    r.iterations = iteration_;
+    r.bestIteration = bestIteration_;
+    r.seconds = seconds();
+    r.stop = stop;
+    r.feasible = feasible_;
+    r.startFeasible = !startEval_.rejected;
+    r.levels = stats_;
+    r.trace = trace_;
+    r.options = options_;
+    return r;
+}
+
+}  // namespace luxplan

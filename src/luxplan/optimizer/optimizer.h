@@ -1,0 +1,171 @@
+// The hierarchical Metropolis optimizer of the paper's Section 6: group-level and
+// object-level proposals, the geometric test before the lighting hook, Metropolis
+// acceptance on C = w L + (1 - w) G (Eq. 1) under a temperature schedule, and the
+// best layout kept.
+#pragma once
+
+#include <array>
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <luxplan/constraints/geometry_cost.h>
+#include <luxplan/core/rng.h>
+#include <luxplan/optimizer/lighting.h>
+#include <luxplan/optimizer/moves.h>
+
+namespace luxplan {
+
+// Hierarchical: two levels as in the paper (top-level entities, then the entities
+// inside groups). Flat: one level holding every movable entity.
+enum class Hierarchy { Hierarchical, Flat };
+
+// Uniform: the paper's start, every movable entity drawn uniformly from its regions
+// (redrawn until no geometric term rejects, up to `startAttempts` draws). Scene: the
+// placement the scene file gives (entities outside their regions drawn uniformly).
+enum class StartFrom { Uniform, Scene };
+
+// Temperature T of the Metropolis test exp(-(C' - C) / T). Costs are dimensionless:
+// every penalty is 1 at its rule's elastic limit. Geometric cooling (Kirkpatrick et
+// al. 1983) from `start` to `end` over the run: at T = 0.1 a step that costs a tenth
+// of an elastic limit passes with probability 1/e, so the chain crosses mildly
+// penalized states early; at T = 0.001 the same step passes with e^-100, so the last
+// iterations descend into the best basin found. Constant keeps T = `start`
+// (a plain Metropolis chain whose stationary law is exp(-C/T)).
+struct Schedule {
+    enum class Kind { Constant, Geometric };
+    Kind kind = Kind::Geometric;
+    double start = 0.1;
+    double end = 0.001;
+    // T at `iteration` of a run of `iterations`: start (end / start)^(i / (n - 1)).
+    double temperature(int iteration, int iterations) const;
+};
+
+struct OptimizerOptions {
+    int iterations = 10000;  // proposals, both levels together
+    uint64_t seed = 1;
+    Hierarchy hierarchy = Hierarchy::Hierarchical;
+    // Object-level proposals after each group-level one (the paper gives the inner
+    // level more iterations, so that a group arrangement is refined before the next
+    // group-level change).
+    int innerIterations = 4;
+    Schedule schedule;
+    StartFrom start = StartFrom::Uniform;
+    int startAttempts = 1000;
+    MoveOptions moves;
+    bool stopAtZeroCost = true;  // the paper stops as soon as C = 0
+    int progressEvery = 100;     // iterations between progress callbacks
+    int traceEvery = 0;          // iterations between trace rows; 0: about 10^4 rows per run
+};
+
+// Iterations and seed from the scene's "optimizer" object; the rest at their defaults.
+OptimizerOptions optimizerOptions(const Scene& scene);
+
+// The cost of one layout.
+struct Evaluation {
+    double cost = 0;      // C = w L + (1 - w) G; for a rejected layout (1 - w) G (no lighting)
+    double lighting = 0;  // L (0 when not evaluated)
+    double geometry = 0;  // G
+    bool rejected = false;
+    bool lightingEvaluated = false;
+    double violation = 0;  // GeometryResult::violation
+    std::string rejectedBy;
+    LightingBreakdown samplers;
+};
+
+struct MoveStats {
+    int64_t proposed = 0;
+    int64_t outside = 0;           // left the regions (or a null move): stayed without evaluating
+    int64_t rejectedGeometry = 0;  // a geometric term rejected the proposal (no lighting evaluated)
+    int64_t accepted = 0;
+    double acceptance() const { return proposed ? double(accepted) / double(proposed) : 0.0; }
+};
+
+struct LevelStats {
+    std::string name;  // "group", "object" or "flat"
+    std::vector<int> entities;
+    std::array<MoveStats, kMoveTypeCount> moves{};
+};
+
+struct TracePoint {
+    int iteration = 0;  // proposals made so far
+    double current = 0;
+    double best = 0;        // kInf while no feasible layout has been found
+    bool feasible = false;  // the current layout passes the geometric test
+};
+
+enum class StopReason { Iterations, ZeroCost, Cancelled, NothingToMove };
+const char* stopReasonName(StopReason reason);
+
+struct Progress {
+    int iteration = 0, iterations = 0;
+    double current = 0, best = 0, temperature = 0;
+    bool feasible = false;
+    std::array<double, kMoveTypeCount> acceptance{};  // per move type, over the run so far
+    double seconds = 0, etaSeconds = 0;
+};
+using ProgressCallback = std::function<void(const Progress&)>;
+
+struct OptimizerResult {
+    Layout best;
+    Evaluation bestEvaluation;
+    GeometryResult bestGeometry;  // with every term (per-constraint penalties)
+    Evaluation startEvaluation;
+    int iterations = 0;  // proposals made
+    int bestIteration = 0;
+    double seconds = 0;
+    StopReason stop = StopReason::Iterations;
+    bool feasible = false;       // some layout passed the geometric test
+    bool startFeasible = false;  // the start did
+    std::vector<LevelStats> levels;
+    std::vector<TracePoint> trace;
+    OptimizerOptions options;
+};
+
+class Optimizer {
+public:
+    // `lighting` may be null: L = 0 (so it is when the scene has no samplers).
+    Optimizer(const Scene& scene, OptimizerOptions options, LightingEvaluator* lighting = nullptr);
+
+    // The start state (StartFrom); resets the counters and random streams, so a
+    // second call starts the same chain again. Called by run() when not called before.
+    void initialize();
+    // One proposal at the level the hierarchy schedule gives, then the Metropolis test.
+    void step();
+    // Runs to the iteration limit, C = 0 or cancellation (checked before every
+    // iteration), then evaluates the best layout's breakdown.
+    OptimizerResult run(const ProgressCallback& progress = {}, const std::atomic<bool>* cancel = nullptr);
+
+    const Layout& current() const { return current_; }
+    const Evaluation& currentEvaluation() const { return currentEval_; }
+    const Layout& best() const { return best_; }
+    const Evaluation& bestEvaluation() const { return bestEval_; }
+    int iteration() const { return iteration_; }
+    const std::vector<LevelStats>& levels() const { return stats_; }
+    // Evaluates a layout: G first, the lighting hook only when nothing rejects. The
+    // overlap cache follows the layout until step() commits or reverts it.
+    Evaluation evaluate(const Layout& layout, const std::vector<Transform>& world);
+
+private:
+    int levelAt(int iteration) const;
+    void record();
+
+    const Scene* scene_;
+    OptimizerOptions options_;
+    LightingEvaluator* lighting_;
+    GeometryEvaluator geometry_;
+    std::vector<MoveSet> levels_;
+    std::vector<LevelStats> stats_;
+    std::vector<Rng> rngs_;  // one stream per level
+    std::vector<uint64_t> streams_;  // the stream id each level's Rng is seeded with
+    bool initialized_ = false;
+    Layout current_, best_;
+    Evaluation currentEval_, bestEval_, startEval_;
+    bool feasible_ = false;
+    int iteration_ = 0, bestIteration_ = 0, traceEvery_ = 1;
+    std::vector<TracePoint> trace_;
+};
+
+}  // namespace luxplan

@@ -1,0 +1,183 @@
+// Writers for the optimizer's report.json and trace.csv.
+#include <luxplan/optimizer/report.h>
+
+#include <cmath>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include <luxplan/core/error.h>
+#include <luxplan/io/layout_io.h>
+
+namespace luxplan {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+// Infinite or undefined numbers are written as null.
+Json number(double v) { return std::isfinite(v) ? Json(v) : Json(nullptr); }
+
+const char* samplerTypeName(LightSamplerType t) {
+    switch (t) {
+        case LightSamplerType::Planar: return "planar";
+        case LightSamplerType::Directional: return "directional";
+        case LightSamplerType::Volume: return "volume";
+    }
+    return "?";
+}
+
+const char* targetName(OverlapTarget t) {
+    switch (t) {
+        case OverlapTarget::Entity: return "entity";
+        case OverlapTarget::Static: return "static";
+        case OverlapTarget::Walls: return "walls";
+    }
+    return "?";
+}
+
+Json moveJson(const MoveStats& s) {
+    return {{"proposed", s.proposed}, {"accepted", s.accepted}, {"outside", s.outside},
+            {"rejected_geometry", s.rejectedGeometry}, {"acceptance", s.acceptance()}};
+}
+
+Json termJson(const Scene& scene, const PenaltyTerm& t) {
+    Json j;
+    j["type"] = termName(t.kind);
+    if (t.constraint >= 0) j["json_path"] = scene.constraints[t.constraint].jsonPath;
+    j["a"] = scene.entities[t.a].path;
+    bool angle = t.kind == TermKind::Alignment || t.kind == TermKind::Focus;
+    if (t.kind == TermKind::Overlap) {
+        j["target"] = targetName(t.target);
+        if (t.target == OverlapTarget::Entity) j["b"] = scene.entities[t.b].path;
+        else if (t.target == OverlapTarget::Static) j["b"] = scene.geometry[t.b].name;
+        else j["b"] = "walls";
+    } else {
+        j["b"] = t.b == kRoomEntity ? std::string("room") : scene.entities[t.b].path;
+    }
+    j["value"] = number(angle ? degrees(t.value) : t.value);
+    j["unit"] = angle ? "deg" : (t.kind == TermKind::Overlap ? "m3" : "m");
+    if (angle) j["tolerance"] = t.constraint >= 0 ? scene.constraints[t.constraint].toleranceDeg : degrees(t.reference);
+    if (t.kind == TermKind::Distance || t.kind == TermKind::Conversation) {
+        const ConstraintSpec& c = scene.constraints[t.constraint];
+        j["range"] = {number(c.minDistance), number(c.maxDistance)};
+    }
+    if (t.kind == TermKind::Conversation) {
+        j["tolerance_deg"] = scene.constraints[t.constraint].toleranceDeg;
+        j["focus_ab"] = t.parts[0];
+        j["focus_ba"] = t.parts[1];
+        j["distance_penalty"] = t.parts[2];
+    }
+    if (t.kind == TermKind::Overlap) j["reference"] = t.reference;
+    j["penalty"] = number(t.penalty);
+    j["weight"] = t.weight;
+    j["rejects"] = t.rejects;
+    return j;
+}
+
+}  // namespace
+
+std::string reportJson(const Scene& scene, const OptimizerResult& r) {
+    const Evaluation& best = r.bestEvaluation;
+    Json j;
+    j["scene"] = scene.name;
+    j["file"] = scene.file.string();
+    j["C"] = number(best.cost);
+    j["L"] = number(best.lighting);
+    j["G"] = number(best.geometry);
+    j["lighting_weight"] = scene.objective.lightingWeight;
+    j["lighting_evaluated"] = best.lightingEvaluated;
+    j["feasible"] = r.feasible;
+    if (best.rejected) j["rejected_by"] = best.rejectedBy;
+    j["iterations"] = r.iterations;
+    j["best_iteration"] = r.bestIteration;
+    j["seconds"] = r.seconds;
+    j["stop_reason"] = stopReasonName(r.stop);
+    j["start"] = {{"C", number(r.startEvaluation.cost)}, {"L", number(r.startEvaluation.lighting)},
+                  {"G", number(r.startEvaluation.geometry)}, {"feasible", r.startFeasible}};
+
+    Json constraints = Json::array();
+    Json pairs = Json::array();
+    for (const PenaltyTerm& t : r.bestGeometry.terms)
+        (t.kind == TermKind::Overlap ? pairs : constraints).push_back(termJson(scene, t));
+    j["constraints"] = constraints;
+    double overlapWeight = 1;
+    for (const ConstraintSpec& c : scene.constraints)
+        if (c.type == ConstraintType::Overlap) overlapWeight = c.weight;
+    j["overlap"] = {{"tolerance", scene.overlapTolerance}, {"weight", overlapWeight},
+                    {"penalty", r.bestGeometry.overlapPenalty}, {"pairs", pairs}};
+
+    Json samplers = Json::array();
+    for (const SamplerMeasurement& m : best.samplers.samplers) {
+        if (m.sampler < 0 || size_t(m.sampler) >= scene.samplers.size()) continue;
+        const LightSamplerSpec& s = scene.samplers[size_t(m.sampler)];
+        Json e = {{"name", s.name}, {"type", samplerTypeName(s.type)}, {"unit", s.unit()},
+                  {"value", number(m.value)}, {"target", {number(s.targetMin), number(s.targetMax)}},
+                  {"tolerance", s.tolerance}, {"weight", s.weight}, {"penalty", number(m.penalty)}};
+        if (!m.points.empty()) e["points"] = m.points;
+        samplers.push_back(e);
+    }
+    j["samplers"] = samplers;
+
+    Json moves, levels = Json::array();
+    for (MoveType t : kMoveTypes) {
+        MoveStats total;
+        for (const LevelStats& level : r.levels) {
+            const MoveStats& s = level.moves[int(t)];
+            total.proposed += s.proposed, total.accepted += s.accepted;
+            total.outside += s.outside, total.rejectedGeometry += s.rejectedGeometry;
+        }
+        moves[moveName(t)] = moveJson(total);
+    }
+    for (const LevelStats& level : r.levels) {
+        Json entities = Json::array(), m;
+        for (int e : level.entities) entities.push_back(scene.entities[size_t(e)].path);
+        for (MoveType t : kMoveTypes) m[moveName(t)] = moveJson(level.moves[int(t)]);
+        levels.push_back({{"name", level.name}, {"entities", entities}, {"moves", m}});
+    }
+    j["moves"] = moves;
+    j["levels"] = levels;
+
+    const OptimizerOptions& o = r.options;
+    j["settings"] = {
+        {"iterations", o.iterations},
+        {"seed", o.seed},
+        {"hierarchy", o.hierarchy == Hierarchy::Flat ? "flat" : "hierarchical"},
+        {"inner_iterations", o.innerIterations},
+        {"schedule", {{"kind", o.schedule.kind == Schedule::Kind::Constant ? "constant" : "geometric"},
+                      {"start", o.schedule.start}, {"end", o.schedule.end}}},
+        {"start", o.start == StartFrom::Scene ? "scene" : "uniform"},
+        {"start_attempts", o.startAttempts},
+        {"sigma_fraction", o.moves.sigmaFraction},
+        {"jump_hastings", o.moves.jumpHastings},
+        {"stop_at_zero_cost", o.stopAtZeroCost}};
+    return j.dump(2) + "\n";
+}
+
+void writeReport(const std::filesystem::path& file, const Scene& scene, const OptimizerResult& result) {
+    std::ofstream out(file);
+    out << reportJson(scene, result);
+    if (!out) throw IoError("cannot write " + file.string());
+}
+
+void writeTrace(const std::filesystem::path& file, const OptimizerResult& result) {
+    std::ofstream out(file);
+    out.precision(10);
+    out << "iteration,current,best,feasible\n";
+    for (const TracePoint& t : result.trace) {
+        out << t.iteration << ',' << t.current << ',';
+        if (std::isfinite(t.best)) out << t.best;
+        out << ',' << (t.feasible ? 1 : 0) << '\n';
+    }
+    if (!out) throw IoError("cannot write " + file.string());
+}
+
+void writeOptimizerOutputs(const std::filesystem::path& folder, const Scene& scene, const OptimizerResult& result) {
+    std::error_code ec;
+    std::filesystem::create_directories(folder, ec);
+    if (ec) throw IoError("cannot create " + folder.string() + ": " + ec.message());
+    io::writeLayout(folder / "layout.json", scene, result.best);
+    writeReport(folder / "report.json", scene, result);
+    writeTrace(folder / "trace.csv", result);
+}
+
+}  // namespace luxplan

@@ -1,0 +1,23 @@
+// Optimizer outputs: report.json (costs, per-constraint penalties, samplers, move
+// statistics, settings), trace.csv (iteration, current, best) and layout.json.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include <luxplan/optimizer/optimizer.h>
+
+namespace luxplan {
+
+// report.json as text (see docs/optimizer.md for every key).
+std::string reportJson(const Scene& scene, const OptimizerResult& result);
+void writeReport(const std::filesystem::path& file, const Scene& scene, const OptimizerResult& result);
+
+// trace.csv: "iteration,current,best,feasible"; best is empty while no feasible
+// layout has been found.
+void writeTrace(const std::filesystem::path& file, const OptimizerResult& result);
+
+// layout.json (io::writeLayout), report.json and trace.csv in `folder` (created).
+void writeOptimizerOutputs(const std::filesystem::path& folder, const Scene& scene, const OptimizerResult& result);
+
+}  // namespace luxplan

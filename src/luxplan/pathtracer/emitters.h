@@ -1,0 +1,67 @@
+// Area emitters in world space (fixed luminaires and the ones entities carry, placed
+// by the current layout), their sampling from a shading point with pdfs per unit
+// solid angle, and the choice of which emitter to sample (EmitterSelector).
+#pragma once
+
+#include <vector>
+
+#include <luxplan/pathtracer/spherical_rect.h>
+#include <luxplan/scene/scene.h>
+
+namespace luxplan {
+
+struct WorldEmitter {
+    EmitterShape shape = EmitterShape::Rect;
+    Vec3 center, normal, up;
+    Rect3 rect;          // rect emitters
+    double radius = 0;   // disk, sphere
+    double luminance = 0;  // cd/m^2 (flux / (pi A))
+    double flux = 0;       // lm
+    double area = 0;
+};
+
+// A sampled point on an emitter as seen from a shading point.
+struct EmitterSample {
+    Vec3 wi;          // unit, from the shading point to the emitter
+    double distance = 0;
+    double Lv = 0;    // emitted luminance towards the point (0 if it sees the back)
+    double pdf = 0;   // per unit solid angle, including the emitter's selection probability
+    int emitter = -1; // which emitter (shadow rays end when they reach it)
+};
+
+enum class EmitterSelection {
+    Uniform,        // every emitter equally likely
+    PowerDistance,  // flux / distance^2, zero for points behind a one-sided emitter
+};
+
+class EmitterSet {
+public:
+    EmitterSet() = default;
+    // World-space emitters from the scene and the entities' world transforms.
+    EmitterSet(const Scene& scene, const std::vector<Transform>& worldFromEntity, EmitterSelection selection);
+
+    bool empty() const { return emitters_.empty(); }
+    size_t size() const { return emitters_.size(); }
+    const WorldEmitter& operator[](size_t i) const { return emitters_[i]; }
+
+    // Probability of choosing emitter i when sampling from point p (normal n; zero
+    // normal for points that see all round).
+    double selectionProbability(size_t i, const Vec3& p) const;
+    // Chooses an emitter (uSelect) and a point on it (u).
+    EmitterSample sample(const Vec3& p, double uSelect, Vec2 u) const;
+    // Density (per solid angle, selection included) that sample() gives the point
+    // `onEmitter` of emitter i seen from p.
+    double pdf(size_t i, const Vec3& p, const Vec3& onEmitter) const;
+    // Luminance emitter i sends along -w (w: direction from the viewer towards it),
+    // with the normal at the hit.
+    double emitted(size_t i, const Vec3& w, const Vec3& hitNormal) const;
+
+private:
+    double importance(size_t i, const Vec3& p) const;
+    double solidAnglePdf(size_t i, const Vec3& p, const Vec3& onEmitter) const;
+
+    std::vector<WorldEmitter> emitters_;
+    EmitterSelection selection_ = EmitterSelection::PowerDistance;
+};
+
+}  // namespace luxplan

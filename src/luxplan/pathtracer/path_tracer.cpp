@@ -1,0 +1,283 @@
+#include <luxplan/pathtracer/path_tracer.h>
+
+#include <luxplan/core/warp.h>
+#include <luxplan/scene/room.h>
+
+namespace luxplan {
+namespace {
+
+constexpr double kRayEpsilon = 1e-4;  // metres; scenes are rooms, not microns
+
+Vec3 offsetAlong(const Vec3& p, const Vec3& n, const Vec3& w) { return p + n * (dot(w, n) >= 0 ? kRayEpsilon : -kRayEpsilon); }
+
+// Where the path currently scatters: the sensor itself or a surface.
+struct Vertex {
+    Vec3 p;
+    Vec3 ng;  // geometric normal on the side the path arrived from (surfaces)
+    Frame shading;
+    Vec3 wo;  // local shading coordinates
+    const Bsdf* bsdf = nullptr;
+    int sensor = -1;  // SensorKind as int for sensors, -1 for surfaces
+    Vec3 sensorNormal;
+
+    bool isSurface() const { return bsdf != nullptr; }
+};
+
+}  // namespace
+
+PathTracer::PathTracer(const EmbreeScene& rt, const DaylightEnvironment* daylight, const PathTracerOptions& options)
+    : rt_(rt), daylight_(daylight), options_(options) {
+    for (const Material& m : rt.scene().materials) bsdfs_.push_back(makeBsdf(m));
+    if (const RoomShell* room = rt.scene().room()) {
+        hasRoom_ = true;
+        room_ = room->box;
+        for (const Opening& o : room->openings) {
+            WallFrame f = wallFrame(room->box, o.wall);
+            auto r = openingRect(room->box, o);
+            portals_.push_back({f.origin + f.u * r[0] + f.v * r[1], f.u * (r[2] - r[0]), f.v * (r[3] - r[1])});
+        }
+    }
+    updateLayout();
+}
+
+void PathTracer::updateLayout() {
+    std::vector<Transform> world(rt_.scene().entities.size());
+    for (size_t i = 0; i < world.size(); ++i) world[i] = rt_.worldFromEntity(int(i));
+    emitters_ = EmitterSet(rt_.scene(), world, options_.emitterSelection);
+}
+
+bool PathTracer::insideRoom(const Vec3& p) const {
+    return options_.portals && hasRoom_ && !portals_.empty() && room_.contains(p);
+}
+
+// Inside the room every sky direction that can reach p passes through one opening, so
+// sampling the openings' spherical rectangles (uniform over their joint solid angle)
+// wastes no samples on walls. Outside, the sky map's own importance sampling is used.
+double PathTracer::skyPdf(const Vec3& p, const Vec3& w) const {
+    if (!daylight_ || !daylight_->hasSky()) return 0;
+    if (!insideRoom(p)) return daylight_->skyPdf(w);
+    double total = 0;
+    bool through = false;
+    for (const Rect3& r : portals_) {
+        total += SphericalRect(r, p).solidAngle();
+        if (!through && r.intersect(p, w) > 0) through = true;
+    }
+    return through && total > 0 ? 1 / total : 0;
+}
+
+EnvironmentSample PathTracer::sampleSky(const Vec3& p, Vec2 u) const {
+    if (!insideRoom(p)) return daylight_->sampleSky(u);
+    EnvironmentSample s;
+    double omega[64], total = 0;
+    size_t n = std::min<size_t>(portals_.size(), 64);
+    for (size_t i = 0; i < n; ++i) total += omega[i] = SphericalRect(portals_[i], p).solidAngle();
+    if (total <= 0) return s;
+    // Choose a portal by solid angle, reusing u.x within the chosen interval.
+    double target = u.x * total, acc = 0;
+    size_t chosen = n - 1;
+    for (size_t i = 0; i < n; ++i) {
+        if (target < acc + omega[i] && omega[i] > 0) {
+            chosen = i;
+            u.x = std::min((target - acc) / omega[i], 1 - 1e-12);
+            break;
+        }
+        acc += omega[i];
+    }
+    Vec3 q = SphericalRect(portals_[chosen], p).sample(u);
+    s.wi = normalize(q - p);
+    s.Le = daylight_->Le(s.wi);
+    s.pdf = 1 / total;
+    return s;
+}
+
+double PathTracer::transmittance(const Vec3& origin, const Vec3& w, double tMax, int target, RayStats& stats) const {
+    double T = 1, travelled = 0;
+    Vec3 p = origin;
+    for (int crossings = 0; crossings < 16; ++crossings) {
+        ++stats.shadow;
+        auto hit = rt_.intersect({p, w, 0, tMax - travelled});
+        if (!hit) return T;  // nothing in the way (a grazing ray may slip past its target emitter)
+        if (hit->kind == HitKind::Emitter) return hit->index == target ? T : 0;
+        const Bsdf& bsdf = bsdfs_[hit->material];
+        if (!bsdf.hasTransmission()) return 0;
+        T *= bsdf.straightTransmittance(std::abs(dot(w, hit->geometricNormal)));
+        if (T <= 0) return 0;
+        travelled += hit->t + kRayEpsilon;
+        p = hit->point + w * kRayEpsilon;
+    }
+    return 0;
+}
+
+double PathTracer::illuminanceSample(const Vec3& p, const Vec3& n, Rng& rng, RayStats& stats) const {
+    return trace(SensorKind::Hemisphere, p, n, rng, stats);
+}
+double PathTracer::sphericalLuminanceSample(const Vec3& p, Rng& rng, RayStats& stats) const {
+    return trace(SensorKind::Sphere, p, Vec3(0, 0, 1), rng, stats);
+}
+double PathTracer::radianceSample(const Ray& ray, Rng& rng, RayStats& stats) const {
+    return trace(SensorKind::Camera, ray.origin, ray.direction, rng, stats);
+}
+
+double PathTracer::trace(SensorKind sensor, const Vec3& origin, const Vec3& n, Rng& rng, RayStats& stats) const {
+    Vec3 L, throughput(1, 1, 1);
+    Vertex v;
+    v.p = origin;
+    v.sensor = int(sensor);
+    v.sensorNormal = n;
+
+    // f * |cos| and the sampling pdf of the current vertex for a world direction.
+    auto evalCos = [&](const Vertex& x, const Vec3& wi) -> Vec3 {
+        if (!x.isSurface()) {
+            if (x.sensor == int(SensorKind::Hemisphere)) {
+                double c = dot(wi, x.sensorNormal);
+                return c > 0 ? Vec3(c, c, c) : Vec3();
+            }
+            return Vec3(1, 1, 1) * (1 / (4 * kPi));  // sphere sensor
+        }
+        // Light must arrive on the side the path is on (no leaks through surfaces).
+        if (dot(wi, x.ng) <= 0) return Vec3();
+        Vec3 local = x.shading.toLocal(wi);
+        return x.bsdf->eval(x.wo, local) * std::abs(local.z);
+    };
+    auto pdfOf = [&](const Vertex& x, const Vec3& wi) -> double {
+        if (!x.isSurface())
+            return x.sensor == int(SensorKind::Hemisphere) ? cosineHemispherePdf(dot(wi, x.sensorNormal))
+                                                           : uniformSpherePdf();
+        return x.bsdf->pdf(x.wo, x.shading.toLocal(wi));
+    };
+    auto spawn = [&](const Vertex& x, const Vec3& wi) { return x.isSurface() ? offsetAlong(x.p, x.ng, wi) : x.p; };
+
+    bool lastDelta = false;
+    double lastPdf = 0;
+    Vec3 lastPoint = origin;
+    double firstWeight = 0;
+
+    for (int depth = 0; depth < options_.maxDepth; ++depth) {
+        bool deltaVertex = sensor == SensorKind::Camera && depth == 0 ? true : (v.isSurface() && v.bsdf->isDelta());
+
+        // ---- next-event estimation (skipped at delta vertices) ----
+        if (!deltaVertex) {
+            auto addLight = [&](const Vec3& wi, const Vec3& Le, double lightPdf, double maxT, int target) {
+                if (!(lightPdf > 0) || maxComponent(Le) <= 0) return;
+                Vec3 f = evalCos(v, wi);
+                if (maxComponent(f) <= 0) return;
+                double T = transmittance(spawn(v, wi), wi, maxT, target, stats);
+                if (T <= 0) return;
+                double w = powerHeuristic(1, lightPdf, 1, pdfOf(v, wi));
+                L += throughput * f * Le * (T * w / lightPdf);
+            };
+            if (!emitters_.empty()) {
+                EmitterSample s = emitters_.sample(v.p, rng.uniform(), {rng.uniform(), rng.uniform()});
+                if (s.pdf > 0 && s.Lv > 0) addLight(s.wi, Vec3(s.Lv, s.Lv, s.Lv), s.pdf, s.distance * 1.001 + kRayEpsilon, s.emitter);
+            }
+            if (daylight_ && daylight_->hasSun()) {
+                double uDisk = rng.uniform();
+                EnvironmentSample s = daylight_->sampleSun(uDisk, {rng.uniform(), rng.uniform()});
+                addLight(s.wi, s.Le, s.pdf, kInf, -1);
+            }
+            if (daylight_ && daylight_->hasSky()) {
+                EnvironmentSample s = sampleSky(v.p, {rng.uniform(), rng.uniform()});
+                addLight(s.wi, s.Le, s.pdf, kInf, -1);
+            }
+        }
+
+        // ---- choose the next direction ----
+        Vec3 d, weight;
+        double pdf = 0;
+        bool delta = false;
+        if (!v.isSurface()) {
+            if (sensor == SensorKind::Camera) {
+                d = normalize(n), weight = Vec3(1, 1, 1), delta = true;
+            } else if (sensor == SensorKind::Hemisphere) {
+                Vec3 local = sampleCosineHemisphere({rng.uniform(), rng.uniform()});
+                d = Frame::fromNormal(n).toWorld(local);
+                pdf = cosineHemispherePdf(local.z);
+                weight = Vec3(kPi, kPi, kPi);  // cos / pdf
+            } else {
+                d = sampleUniformSphere({rng.uniform(), rng.uniform()});
+                pdf = uniformSpherePdf();
+                weight = Vec3(1, 1, 1);  // (1 / 4 pi) / pdf
+            }
+        } else {
+            double uLobe = rng.uniform();
+            auto s = v.bsdf->sample(v.wo, uLobe, {rng.uniform(), rng.uniform()});
+            if (!s) break;
+            d = v.shading.toWorld(s->wi);
+            // Reflection must stay on the arrival side of the geometric surface.
+            if (!s->isTransmission && dot(d, v.ng) <= 0) break;
+            weight = s->weight, pdf = s->pdf, delta = s->isDelta;
+        }
+        throughput = throughput * weight;
+        if (maxComponent(throughput) <= 0) break;
+        if (depth == 0) firstWeight = maxComponent(throughput);
+        if (!delta) {
+            lastPdf = pdf;
+            lastPoint = v.p;
+        }
+        lastDelta = delta;
+
+        // ---- Russian roulette ----
+        if (depth >= options_.rouletteDepth) {
+            double q = std::min(0.95, maxComponent(throughput) / firstWeight);
+            if (rng.uniform() >= q) break;
+            throughput = throughput * (1 / q);
+        }
+
+        // ---- follow the ray, passing through glass panes ----
+        Vec3 o = spawn(v, d);
+        bool scattered = false;
+        for (int crossings = 0; crossings < 32 && !scattered; ++crossings) {
+            ++stats.closest;
+            auto hit = rt_.intersect({o, d});
+            if (!hit) {
+                if (daylight_) {
+                    Vec3 sky = daylight_->Le(d), sun = daylight_->sunLe(d);
+                    double wSky = lastDelta ? 1 : powerHeuristic(1, lastPdf, 1, skyPdf(lastPoint, d));
+                    double wSun = lastDelta ? 1 : powerHeuristic(1, lastPdf, 1, daylight_->sunPdf(d));
+                    L += throughput * (sky * wSky + sun * wSun);
+                }
+                return luminance(L);
+            }
+            if (hit->kind == HitKind::Emitter) {
+                double Le = emitters_.emitted(size_t(hit->index), d, hit->geometricNormal);
+                if (Le > 0) {
+                    double w = lastDelta ? 1 : powerHeuristic(1, lastPdf, 1, emitters_.pdf(size_t(hit->index), lastPoint, hit->point));
+                    L += throughput * Vec3(Le, Le, Le) * w;
+                }
+                return luminance(L);  // emitters absorb what reaches them
+            }
+            const Bsdf& bsdf = bsdfs_[hit->material];
+            if (bsdf.hasTransmission()) {
+                // A thin pane: pass straight through (not a scattering event, so the MIS
+                // state of the last vertex stays) or reflect (a delta event).
+                const PaneResponse r = bsdf.glass().response(std::abs(dot(d, hit->geometricNormal)));
+                double scatter = r.reflectance + r.transmittance;
+                if (scatter <= 0) return luminance(L);
+                throughput = throughput * scatter;
+                if (rng.uniform() * scatter < r.transmittance) {
+                    o = hit->point + d * kRayEpsilon;
+                } else {
+                    d = reflect(-d, hit->geometricNormal);
+                    o = offsetAlong(hit->point, hit->geometricNormal, d);
+                    lastDelta = true;
+                }
+                continue;
+            }
+            // An opaque surface: the next vertex. Surfaces are two-sided.
+            v = Vertex();
+            v.p = hit->point;
+            v.bsdf = &bsdf;
+            Vec3 wo = -d;
+            v.ng = dot(hit->geometricNormal, wo) >= 0 ? hit->geometricNormal : -hit->geometricNormal;
+            Vec3 ns = dot(hit->shadingNormal, v.ng) >= 0 ? hit->shadingNormal : -hit->shadingNormal;
+            v.shading = Frame::fromNormal(ns);
+            v.wo = v.shading.toLocal(wo);
+            if (v.wo.z <= 0) v.wo = normalize(Vec3(v.wo.x, v.wo.y, 1e-6));  // shading normal tilted away
+            scattered = true;
+        }
+        if (!scattered) break;
+    }
+    return luminance(L);
+}
+
+}  // namespace luxplan

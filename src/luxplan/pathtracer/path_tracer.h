@@ -1,0 +1,75 @@
+// The photometric path tracer: next-event estimation to every emitter kind (area
+// lights, sun disks, sky through window portals) combined with BSDF sampling by
+// multiple importance sampling (power heuristic), Russian roulette instead of a
+// depth cap, and thin glass panes that shadow rays and paths pass through,
+// attenuated by the pane's transmittance. Results are in lx and cd/m^2.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <luxplan/core/rng.h>
+#include <luxplan/daylight/environment.h>
+#include <luxplan/materials/bsdf.h>
+#include <luxplan/pathtracer/emitters.h>
+#include <luxplan/rt/embree_scene.h>
+
+namespace luxplan {
+
+struct PathTracerOptions {
+    EmitterSelection emitterSelection = EmitterSelection::PowerDistance;
+    bool portals = true;       // sample the sky through the room's openings from inside it
+    int rouletteDepth = 3;     // bounces before Russian roulette starts
+    int maxDepth = 256;        // a safety net only: roulette ends paths long before
+};
+
+// Rays traced, for throughput figures.
+struct RayStats {
+    uint64_t closest = 0, shadow = 0;
+    RayStats& operator+=(const RayStats& o) { closest += o.closest, shadow += o.shadow; return *this; }
+};
+
+class PathTracer {
+public:
+    // `daylight` may be null (night). The scene's current layout places carried emitters.
+    PathTracer(const EmbreeScene& rt, const DaylightEnvironment* daylight, const PathTracerOptions& options = {});
+
+    // Call after the EmbreeScene's layout changed (emitters carried by entities move).
+    void updateLayout();
+
+    // One-sample estimators (average many for the value):
+    // illuminance (lx) at p over the hemisphere around unit n;
+    double illuminanceSample(const Vec3& p, const Vec3& n, Rng& rng, RayStats& stats) const;
+    // mean luminance over the whole sphere at p (cd/m^2);
+    double sphericalLuminanceSample(const Vec3& p, Rng& rng, RayStats& stats) const;
+    // luminance arriving at ray.origin from ray.direction (unit), in cd/m^2.
+    double radianceSample(const Ray& ray, Rng& rng, RayStats& stats) const;
+
+    const EmbreeScene& rayTracer() const { return rt_; }
+    const EmitterSet& emitters() const { return emitters_; }
+
+private:
+    enum class SensorKind { Hemisphere, Sphere, Camera };
+    double trace(SensorKind sensor, const Vec3& p, const Vec3& n, Rng& rng, RayStats& stats) const;
+
+    // Light arriving from the sky map (not the sun) through the portals or by map sampling.
+    bool insideRoom(const Vec3& p) const;
+    double skyPdf(const Vec3& p, const Vec3& w) const;
+    EnvironmentSample sampleSky(const Vec3& p, Vec2 u) const;
+    // Transmittance along p + t w up to tMax, or up to where the ray reaches emitter
+    // `target` (if >= 0): products of pane transmittances, 0 when anything opaque is in
+    // the way. Ending at the emitter's own hit, not at a distance, keeps float error in
+    // Embree's intersection from shadowing a light by itself.
+    double transmittance(const Vec3& p, const Vec3& w, double tMax, int target, RayStats& stats) const;
+
+    const EmbreeScene& rt_;
+    const DaylightEnvironment* daylight_;
+    PathTracerOptions options_;
+    std::vector<Bsdf> bsdfs_;  // per scene material
+    EmitterSet emitters_;
+    std::vector<Rect3> portals_;
+    Bounds3 room_;
+    bool hasRoom_ = false;
+};
+
+}  // namespace luxplan

@@ -1,0 +1,61 @@
+// The penalty function of Eq. 2 at its boundaries, and the lighting term (Eq. 3).
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+
+#include <luxplan/constraints/penalty.h>
+
+namespace luxplan {
+namespace {
+
+TEST(Penalty, ZeroInsideTheRangeAndAtItsBounds) {
+    EXPECT_EQ(penalty(1.5, 1, 2, 0.5, 2), 0);
+    EXPECT_EQ(penalty(1.0, 1, 2, 0.5, 2), 0);
+    EXPECT_EQ(penalty(2.0, 1, 2, 0.5, 2), 0);
+}
+
+TEST(Penalty, ReachesOneAtTheElasticLimit) {
+    for (double alpha : {1.0, 2.0}) {
+        EXPECT_NEAR(penalty(2.5, 1, 2, 0.5, alpha), 1.0, 1e-12);
+        EXPECT_NEAR(penalty(0.5, 1, 2, 0.5, alpha), 1.0, 1e-12);
+        EXPECT_FALSE(rejects(penalty(2.5 - 1e-9, 1, 2, 0.5, alpha)));
+        EXPECT_TRUE(rejects(penalty(2.5 + 1e-9, 1, 2, 0.5, alpha)));
+    }
+}
+
+TEST(Penalty, StiffnessShapesTheGrowth) {
+    // k = brej^-alpha: half the elastic distance gives 1/2 (linear) or 1/4 (quadratic).
+    EXPECT_NEAR(penalty(2.25, 1, 2, 0.5, 1), 0.5, 1e-12);
+    EXPECT_NEAR(penalty(2.25, 1, 2, 0.5, 2), 0.25, 1e-12);
+    EXPECT_NEAR(penalty(0.75, 1, 2, 0.5, 2), 0.25, 1e-12);
+    // Twice the elastic distance: 2 and 4.
+    EXPECT_NEAR(penalty(3.0, 1, 2, 0.5, 1), 2.0, 1e-12);
+    EXPECT_NEAR(penalty(3.0, 1, 2, 0.5, 2), 4.0, 1e-12);
+}
+
+TEST(Penalty, OpenEndsAndPointRanges) {
+    EXPECT_EQ(penalty(1e9, 1, kInf, 0.5, 2), 0);
+    EXPECT_EQ(penalty(-1e9, -kInf, 1, 0.5, 2), 0);
+    EXPECT_NEAR(penalty(0.5, 1, kInf, 0.5, 2), 1.0, 1e-12);
+    // Eq. 6 form: P(V, 0, 0, Vref, 2) is (V / Vref)^2 and 0 without overlap.
+    EXPECT_EQ(penalty(0, 0, 0, 0.05, 2), 0);
+    EXPECT_NEAR(penalty(0.02, 0, 0, 0.05, 2), 0.16, 1e-12);
+}
+
+TEST(LightingCost, WeightedMeanOfLinearPenalties) {
+    Scene scene;
+    LightSamplerSpec a, b;
+    a.targetMin = 300, a.targetMax = 500, a.tolerance = 200, a.weight = 1;
+    b.targetMin = 0, b.targetMax = 100, b.tolerance = 50, b.weight = 3;
+    scene.samplers = {a, b};
+    EXPECT_NEAR(lightingPenalty(a, 200), 0.5, 1e-12);
+    EXPECT_NEAR(lightingPenalty(a, 800), 1.5, 1e-12);  // lighting terms never reject: P may exceed 1
+    EXPECT_NEAR(lightingPenalty(b, 150), 1.0, 1e-12);
+    EXPECT_NEAR(lightingCost(scene, {200, 150}), (1 * 0.5 + 3 * 1.0) / 4, 1e-12);
+    EXPECT_EQ(lightingCost(scene, {400, 50}), 0);
+    EXPECT_THROW(lightingCost(scene, {1}), std::invalid_argument);
+    EXPECT_EQ(lightingCost(Scene(), {}), 0);
+}
+
+}  // namespace
+}  // namespace luxplan
