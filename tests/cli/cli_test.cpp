@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <sys/wait.h>
 
+#include <nlohmann/json.hpp>
+
 #include "support/temp_files.h"
 
 namespace luxplan {
@@ -68,6 +70,60 @@ TEST(Cli, InfoSummarizesTheScene) {
 TEST(Cli, UnknownCommandFails) {
     EXPECT_NE(run("frobnicate").exitCode, 0);
     EXPECT_NE(run("validate").exitCode, 0);
+}
+
+}  // namespace
+}  // namespace luxplan
+
+namespace luxplan {
+namespace {
+
+TEST(Cli, MeasureJsonFollowsTheContract) {
+    test::TempDir dir;
+    auto file = dir.write("lit.json", R"({"luxplan": 1, "materials": {"m": {"type": "diffuse", "reflectance": 0.5}},
+        "luminaires": [{"name": "l", "shape": "rect", "center": [0,0,3], "normal": [0,0,-1], "size": [1,1], "flux_lm": 1000}],
+        "samplers": [{"name": "p", "type": "planar", "center": [0,0,1], "size": [1,1], "grid": [2,3], "target": [10, 500]},
+                     {"name": "d", "type": "directional", "origin": [0,0,1], "direction": [0,0,1], "strata": 2, "target": [0, null]}]})");
+    Result r = run("measure " + file.string() + " --paths 32 --seed 3 --threads 2 --json");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    auto json = nlohmann::json::parse(r.output);
+    ASSERT_EQ(json["samplers"].size(), 2u);
+    const auto& p = json["samplers"][0];
+    EXPECT_EQ(p["name"], "p");
+    EXPECT_EQ(p["type"], "planar");
+    EXPECT_EQ(p["unit"], "lx");
+    EXPECT_EQ(p["points"].size(), 6u);
+    EXPECT_EQ(p["target"][0], 10.0);
+    EXPECT_GT(p["value"].get<double>(), 0);
+    EXPECT_EQ(p["penalty"], 0.0);
+    const auto& d = json["samplers"][1];
+    EXPECT_EQ(d["unit"], "cd/m2");
+    EXPECT_EQ(d["points"].size(), 4u);
+    EXPECT_TRUE(d["target"][1].is_null());
+    // Same seed and thread count: the same numbers.
+    Result again = run("measure " + file.string() + " --paths 32 --seed 3 --threads 1 --json");
+    EXPECT_EQ(nlohmann::json::parse(again.output)["samplers"], json["samplers"]);
+}
+
+TEST(Cli, MeasureRejectsABadLayout) {
+    test::TempDir dir;
+    auto scene = dir.write("s.json", R"({"luxplan": 1, "entities": [{"name": "a", "placement": {"regions": [{"min": [0,0], "max": [1,1]}]}}]})");
+    auto layout = dir.write("layout.json", R"({"entities": {"b": {"position": [0,0,0]}}})");
+    Result r = run("measure " + scene.string() + " --layout " + layout.string());
+    EXPECT_NE(r.exitCode, 0);
+    EXPECT_NE(r.output.find(layout.string() + ": /entities/b: unknown entity \"b\""), std::string::npos) << r.output;
+}
+
+TEST(Cli, SunPrintsTheNrelExample) {
+    Result r = run("sun --lat 39.742476 --lon -105.1786 --time 2003-10-17T12:30:30-07:00");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    auto json = nlohmann::json::parse(r.output);
+    // NREL's example is computed at 1830 m, 820 mbar and 11 C; at sea level and standard
+    // refraction the position differs by a few thousandths of a degree.
+    EXPECT_NEAR(json["altitude_deg"].get<double>(), 90 - 50.111622, 0.02);
+    EXPECT_NEAR(json["azimuth_deg"].get<double>(), 194.340241, 0.02);
+    EXPECT_NE(run("sun --lat 95 --lon 0 --time 2003-10-17T12:30:30-07:00").exitCode, 0);
+    EXPECT_NE(run("sun --lat 0 --lon 0 --time 2003-10-17T12:30:30").exitCode, 0);
 }
 
 }  // namespace
