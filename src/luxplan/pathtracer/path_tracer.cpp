@@ -91,16 +91,22 @@ EnvironmentSample PathTracer::sampleSky(const Vec3& p, Vec2 u) const {
 }
 
 double PathTracer::transmittance(const Vec3& origin, const Vec3& w, double tMax, int target, RayStats& stats) const {
+    // Opaque surfaces first, by an any-hit query. Towards an emitter, other luminaires
+    // are not counted as blockers (and the target itself cannot shadow itself); towards
+    // the sky and sun, luminaire bodies block.
+    ++stats.shadow;
+    unsigned blockers = kOpaqueMask | (target < 0 ? kEmitterMask : 0u);
+    double opaqueEnd = target < 0 ? tMax : tMax * (1 - 1e-4);
+    if (rt_.occluded({origin, w, 0, opaqueEnd, blockers})) return 0;
+    if (!rt_.hasGlass()) return 1;
+    // Then the panes in the way, one closest-hit query each.
     double T = 1, travelled = 0;
     Vec3 p = origin;
     for (int crossings = 0; crossings < 16; ++crossings) {
         ++stats.shadow;
-        auto hit = rt_.intersect({p, w, 0, tMax - travelled});
-        if (!hit) return T;  // nothing in the way (a grazing ray may slip past its target emitter)
-        if (hit->kind == HitKind::Emitter) return hit->index == target ? T : 0;
-        const Bsdf& bsdf = bsdfs_[hit->material];
-        if (!bsdf.hasTransmission()) return 0;
-        T *= bsdf.straightTransmittance(std::abs(dot(w, hit->geometricNormal)));
+        auto hit = rt_.intersect({p, w, 0, opaqueEnd - travelled, kGlassMask});
+        if (!hit) return T;
+        T *= bsdfs_[hit->material].straightTransmittance(std::abs(dot(w, hit->geometricNormal)));
         if (T <= 0) return 0;
         travelled += hit->t + kRayEpsilon;
         p = hit->point + w * kRayEpsilon;
@@ -168,7 +174,7 @@ double PathTracer::trace(SensorKind sensor, const Vec3& origin, const Vec3& n, R
             };
             if (!emitters_.empty()) {
                 EmitterSample s = emitters_.sample(v.p, rng.uniform(), {rng.uniform(), rng.uniform()});
-                if (s.pdf > 0 && s.Lv > 0) addLight(s.wi, Vec3(s.Lv, s.Lv, s.Lv), s.pdf, s.distance * 1.001 + kRayEpsilon, s.emitter);
+                if (s.pdf > 0 && s.Lv > 0) addLight(s.wi, Vec3(s.Lv, s.Lv, s.Lv), s.pdf, s.distance, s.emitter);
             }
             if (daylight_ && daylight_->hasSun()) {
                 double uDisk = rng.uniform();

@@ -56,10 +56,11 @@ private:
     bool insideRoom(const Vec3& p) const;
     double skyPdf(const Vec3& p, const Vec3& w) const;
     EnvironmentSample sampleSky(const Vec3& p, Vec2 u) const;
-    // Transmittance along p + t w up to tMax, or up to where the ray reaches emitter
-    // `target` (if >= 0): products of pane transmittances, 0 when anything opaque is in
-    // the way. Ending at the emitter's own hit, not at a distance, keeps float error in
-    // Embree's intersection from shadowing a light by itself.
+    // Transmittance along p + t w up to tMax (the distance to the sampled point on
+    // emitter `target`, or infinity for sun and sky): products of pane transmittances, 0
+    // when anything opaque is in the way. Emitters do not block shadow rays towards
+    // emitters, so that float error in Embree's intersection of the target itself (a
+    // grazing ray to a small sphere) cannot shadow a light.
     double transmittance(const Vec3& p, const Vec3& w, double tMax, int target, RayStats& stats) const;
 
     const EmbreeScene& rt_;

@@ -73,7 +73,7 @@ RTCRay toRtcRay(const Ray& r) {
     ray.tnear = float(r.tMin);
     ray.tfar = std::isinf(r.tMax) ? std::numeric_limits<float>::infinity() : float(r.tMax);
     ray.time = 0;
-    ray.mask = 0xffffffffu;
+    ray.mask = r.mask;
     ray.id = 0;
     ray.flags = 0;
     return ray;
@@ -81,8 +81,33 @@ RTCRay toRtcRay(const Ray& r) {
 
 }  // namespace
 
-unsigned EmbreeScene::attachMesh(SubScene& sub, const TriangleMesh& mesh, HitKind kind, int index) {
+void EmbreeScene::attachMesh(SubScene& sub, const TriangleMesh& mesh, HitKind kind, int index) {
+    auto transmissive = [&](uint32_t material) { return scene_.materials[material].type == MaterialType::Glass; };
+    size_t glass = 0;
+    for (uint32_t m : mesh.materials) glass += transmissive(m);
+    if (glass == 0) {
+        attachTriangles(sub, mesh, kind, index, kOpaqueMask);
+        return;
+    }
+    hasGlass_ = true;
+    // Split, keeping vertices (and normals) whole: unused vertices cost nothing.
+    TriangleMesh parts[2];
+    for (auto& part : parts) part.positions = mesh.positions, part.normals = mesh.normals;
+    for (size_t t = 0; t < mesh.triangles.size(); ++t) {
+        TriangleMesh& part = parts[transmissive(mesh.materials[t]) ? 1 : 0];
+        part.triangles.push_back(mesh.triangles[t]);
+        part.materials.push_back(mesh.materials[t]);
+    }
+    for (int k = 0; k < 2; ++k) {
+        if (parts[k].empty()) continue;
+        splitMeshes_.push_back(std::move(parts[k]));
+        attachTriangles(sub, splitMeshes_.back(), kind, index, k == 0 ? kOpaqueMask : kGlassMask);
+    }
+}
+
+unsigned EmbreeScene::attachTriangles(SubScene& sub, const TriangleMesh& mesh, HitKind kind, int index, unsigned mask) {
     RTCGeometry g = rtcNewGeometry(device_->handle(), RTC_GEOMETRY_TYPE_TRIANGLE);
+    rtcSetGeometryMask(g, mask);
     auto* v = static_cast<float*>(
         rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), mesh.positions.size()));
     for (size_t i = 0; i < mesh.positions.size(); ++i) {
@@ -106,11 +131,12 @@ void EmbreeScene::attachEmitter(SubScene& sub, const Emitter& e, int index) {
         Vec3 hu = u * (e.size.x / 2), hv = v * (e.size.y / 2);
         TriangleMesh& m = emitterMeshes_[index];
         addQuad(m, e.center - hu - hv, e.center + hu - hv, e.center + hu + hv, e.center - hu + hv, 0);
-        attachMesh(sub, m, HitKind::Emitter, index);
+        attachTriangles(sub, m, HitKind::Emitter, index, kEmitterMask);
         return;
     }
     bool sphere = e.shape == EmitterShape::Sphere;
     RTCGeometry g = rtcNewGeometry(device_->handle(), sphere ? RTC_GEOMETRY_TYPE_SPHERE_POINT : RTC_GEOMETRY_TYPE_ORIENTED_DISC_POINT);
+    rtcSetGeometryMask(g, kEmitterMask);
     auto* p = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, 4 * sizeof(float), 1));
     p[0] = float(e.center.x), p[1] = float(e.center.y), p[2] = float(e.center.z), p[3] = float(e.radius);
     if (!sphere) {

@@ -4,6 +4,7 @@
 // transforms and re-commits the (small) top level only.
 #pragma once
 
+#include <deque>
 #include <memory>
 #include <optional>
 #include <string>
@@ -36,11 +37,16 @@ private:
     std::string pendingError_;
 };
 
+// Ray masks: shadow rays can ask for opaque surfaces only, then cross glass panes
+// (transmissive materials) one by one.
+inline constexpr unsigned kOpaqueMask = 1u, kGlassMask = 2u, kEmitterMask = 4u, kAllMask = 0xffffffffu;
+
 struct Ray {
     Vec3 origin;
     Vec3 direction;  // need not be unit length; t is in units of its length
     double tMin = 0;
     double tMax = kInf;
+    unsigned mask = kAllMask;
 };
 
 enum class HitKind { Static, Entity, Emitter };
@@ -76,6 +82,8 @@ public:
     const Transform& worldFromEntity(int entity) const { return worldFromEntity_[entity]; }
     // Number of entity instances in the top-level scene.
     size_t instanceCount() const;
+    // Whether any visible surface has a transmissive (glass) material.
+    bool hasGlass() const { return hasGlass_; }
 
 private:
     struct GeometryInfo {
@@ -90,7 +98,9 @@ private:
         unsigned instanceId = RTC_INVALID_GEOMETRY_ID;
     };
 
-    unsigned attachMesh(SubScene& sub, const TriangleMesh& mesh, HitKind kind, int index);
+    // Attaches a mesh as up to two geometries: opaque triangles and glass triangles.
+    void attachMesh(SubScene& sub, const TriangleMesh& mesh, HitKind kind, int index);
+    unsigned attachTriangles(SubScene& sub, const TriangleMesh& mesh, HitKind kind, int index, unsigned mask);
     void attachEmitter(SubScene& sub, const Emitter& emitter, int index);
     void finishSubScene(SubScene& sub);
 
@@ -102,6 +112,8 @@ private:
     std::vector<int> subSceneOfEntity_;      // entity -> subScenes_ index, or -1
     std::vector<Transform> worldFromEntity_;
     std::vector<TriangleMesh> emitterMeshes_;  // rect emitters as two triangles
+    std::deque<TriangleMesh> splitMeshes_;     // meshes split into opaque and glass parts
+    bool hasGlass_ = false;
 };
 
 }  // namespace luxplan
