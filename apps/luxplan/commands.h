@@ -9,6 +9,7 @@ namespace luxplan::cli {
 void registerValidateCommand(CLI::App& app);
 void registerInfoCommand(CLI::App& app);
 void registerMeasureCommand(CLI::App& app);
+void registerOptimizeCommand(CLI::App& app);
 void registerSunCommand(CLI::App& app);
 
 }  // namespace luxplan::cli

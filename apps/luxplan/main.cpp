@@ -11,6 +11,7 @@ int main(int argc, char** argv) {
     luxplan::cli::registerValidateCommand(app);
     luxplan::cli::registerInfoCommand(app);
     luxplan::cli::registerMeasureCommand(app);
+    luxplan::cli::registerOptimizeCommand(app);
     luxplan::cli::registerSunCommand(app);
     try {
         app.parse(argc, argv);

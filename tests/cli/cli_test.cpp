@@ -5,6 +5,9 @@
 #include <cstdio>
 #include <sys/wait.h>
 
+#include <filesystem>
+#include <fstream>
+
 #include <nlohmann/json.hpp>
 
 #include "support/temp_files.h"
@@ -124,6 +127,50 @@ TEST(Cli, SunPrintsTheNrelExample) {
     EXPECT_NEAR(json["azimuth_deg"].get<double>(), 194.340241, 0.02);
     EXPECT_NE(run("sun --lat 95 --lon 0 --time 2003-10-17T12:30:30-07:00").exitCode, 0);
     EXPECT_NE(run("sun --lat 0 --lon 0 --time 2003-10-17T12:30:30").exitCode, 0);
+}
+
+}  // namespace
+}  // namespace luxplan
+
+namespace luxplan {
+namespace {
+
+// A table with a reading sampler and two disjoint regions; only the one under the
+// luminaire gives the 300 lx the sampler asks for.
+const char* kLightSeeking = R"({"luxplan": 1,
+  "materials": {"wall": {"type": "diffuse", "reflectance": 0.5}, "wood": {"type": "diffuse", "reflectance": 0.4}},
+  "geometry": [{"name": "room", "room": {"min": [0,0,0], "max": [8,4,3]},
+                "materials": {"floor": "wall", "walls": "wall", "ceiling": "wall"}}],
+  "luminaires": [{"name": "lamp", "shape": "rect", "center": [6.5,2,2.99], "normal": [0,0,-1], "size": [0.6,0.6], "flux_lm": 6000}],
+  "entities": [{"name": "table", "position": [1.5, 2],
+                "placement": {"regions": [{"min": [1,1], "max": [2.5,3], "rotations": [0, 90]},
+                                          {"min": [5.5,1], "max": [7,3], "rotations": [0, 90]}]},
+                "parts": [{"preset": "table", "size": [1.0, 0.8, 0.75], "material": "wood"}],
+                "samplers": [{"name": "reading", "type": "planar", "center": [0,0,0.76], "size": [0.8,0.6],
+                              "grid": [2,2], "target": [300, null], "tolerance": 100}]}],
+  "objective": {"lighting_weight": 0.8},
+  "optimizer": {"iterations": 150, "seed": 2, "paths_per_point": 16, "report_paths_per_point": 64}})";
+
+TEST(Cli, OptimizeFindsTheLitRegionAndWritesItsOutputs) {
+    test::TempDir dir;
+    auto scene = dir.write("scene.json", kLightSeeking);
+    auto out = dir.path() / "out";
+    Result r = run("optimize " + scene.string() + " -o " + out.string() + " --threads 2 -q");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    for (const char* f : {"layout.json", "report.json", "trace.csv"}) EXPECT_TRUE(std::filesystem::exists(out / f)) << f;
+    auto layout = nlohmann::json::parse(std::ifstream(out / "layout.json"));
+    EXPECT_EQ(layout["entities"]["table"]["region"], 1) << layout.dump();
+    auto report = nlohmann::json::parse(std::ifstream(out / "report.json"));
+    EXPECT_TRUE(report.contains("C") && report.contains("L") && report.contains("G"));
+    EXPECT_EQ(report["samplers"].size(), 1u);
+    EXPECT_GT(report["samplers"][0]["value"].get<double>(), 300);
+    // The layout reads back.
+    Result m = run("measure " + scene.string() + " --layout " + (out / "layout.json").string() + " --paths 8 --json");
+    EXPECT_EQ(m.exitCode, 0) << m.output;
+    // Same seed and thread count: the same layout.
+    auto again = dir.path() / "again";
+    ASSERT_EQ(run("optimize " + scene.string() + " -o " + again.string() + " --threads 2 -q").exitCode, 0);
+    EXPECT_EQ(nlohmann::json::parse(std::ifstream(again / "layout.json")), layout);
 }
 
 }  // namespace

@@ -151,13 +151,39 @@ private:
             Fields o(sink_, f.get("objective"), f.at("objective"), {"lighting_weight"});
             scene_.objective.lightingWeight = o.number("lighting_weight", 0.5, kUnit);
         }
-        if (f.has("optimizer")) {
-            Fields o(sink_, f.get("optimizer"), f.at("optimizer"), {"iterations", "seed", "paths_per_point"});
-            scene_.optimizer.iterations = o.integer("iterations", Range::atLeast(0)).value_or(10000);
-            scene_.optimizer.seed = uint64_t(o.integer("seed", Range::atLeast(0)).value_or(1));
-            scene_.optimizer.pathsPerPoint = o.integer("paths_per_point", Range::atLeast(1)).value_or(1000);
-        }
+        if (f.has("optimizer")) readOptimizer(f.get("optimizer"), f.at("optimizer"));
         checkUniqueNames();
+    }
+
+    void readOptimizer(const Json& j, const std::string& path) {
+        Fields o(sink_, j, path,
+                 {"iterations", "seed", "paths_per_point", "report_paths_per_point", "hierarchy", "inner_iterations",
+                  "temperature", "start"});
+        OptimizerSettings& s = scene_.optimizer;
+        s.iterations = o.integer("iterations", Range::atLeast(0)).value_or(10000);
+        s.seed = uint64_t(o.integer("seed", Range::atLeast(0)).value_or(1));
+        s.pathsPerPoint = o.integer("paths_per_point", Range::atLeast(1)).value_or(1000);
+        s.reportPathsPerPoint = o.integer("report_paths_per_point", Range::atLeast(1)).value_or(std::max(1000, s.pathsPerPoint));
+        s.innerIterations = o.integer("inner_iterations", Range::closed(1, 1000)).value_or(4);
+        if (auto h = o.string("hierarchy")) {
+            if (*h == "flat") s.flat = true;
+            else if (*h != "hierarchical") o.error("hierarchy", "unknown hierarchy \"" + *h + "\" (hierarchical or flat)");
+        }
+        if (auto start = o.string("start")) {
+            if (*start == "scene") s.startFromScene = true;
+            else if (*start != "uniform") o.error("start", "unknown start \"" + *start + "\" (uniform or scene)");
+        }
+        if (o.has("temperature")) {
+            const Json& t = o.get("temperature");
+            if (t.is_number()) {
+                s.constantTemperature = true;
+                s.temperatureStart = s.temperatureEnd = o.number("temperature", 0.1, Range::positive());
+            } else {
+                Fields tf(sink_, t, o.at("temperature"), {"start", "end"}, "a number or {\"start\", \"end\"}");
+                s.temperatureStart = tf.number("start", 0.1, Range::positive());
+                s.temperatureEnd = tf.number("end", 0.001, Range::positive());
+            }
+        }
     }
 
     void readSite(const Json& j, const std::string& path) {
@@ -794,7 +820,9 @@ private:
         };
         auto angle = [&] { c.toleranceDeg = f.number("tolerance_deg", 10.0, Range{0, 180, true, false, "deg"}); };
         auto distances = [&] {
-            auto lo = f.number("min", kNonNegative, true), hi = f.number("max", kNonNegative, true);
+            auto lo = f.number("min", kNonNegative, true);
+            // "max": null leaves the range open above.
+            auto hi = f.has("max") && f.get("max").is_null() ? std::optional<double>(kInf) : f.number("max", kNonNegative, true);
             if (lo && hi && *hi < *lo)
                 f.error("max", "distance range is reversed: max " + formatNumber(*hi) + " < min " + formatNumber(*lo) + " m");
             c.minDistance = lo.value_or(0), c.maxDistance = hi.value_or(kInf);

@@ -66,10 +66,6 @@ SamplerGeometry samplerGeometry(const LightSamplerSpec& s, const Transform& worl
     return g;
 }
 
-double samplerPenalty(const LightSamplerSpec& s, double value) {
-    return penalty(value, s.targetMin, s.targetMax, s.tolerance, 1.0);
-}
-
 MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& options) {
     const EmbreeScene& rt = tracer.rayTracer();
     const Scene& scene = rt.scene();
@@ -150,7 +146,8 @@ MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& op
             r.value = sum / r.points.size();
             r.standardError = std::sqrt(var) / r.points.size();
         }
-        r.penalty = samplerPenalty(scene.samplers[k], r.value);
+        const LightSamplerSpec& spec = scene.samplers[k];
+        r.penalty = penalty(r.value, spec.targetMin, spec.targetMax, spec.tolerance, /*alpha=*/1.0);  // Eq. 3
     }
     return result;
 }

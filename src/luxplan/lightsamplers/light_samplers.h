@@ -47,7 +47,4 @@ struct MeasureResult {
 // seeded from (seed, sampler, point, path), so results do not depend on the thread count.
 MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& options);
 
-// Eq. 2 with alpha = 1: how far the value lies outside the target, in tolerances.
-double samplerPenalty(const LightSamplerSpec& spec, double value);
-
 }  // namespace luxplan

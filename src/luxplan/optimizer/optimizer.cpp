@@ -36,8 +36,15 @@ double Schedule::temperature(int iteration, int iterations) const {
 
 OptimizerOptions optimizerOptions(const Scene& scene) {
     OptimizerOptions o;
-    o.iterations = scene.optimizer.iterations;
-    o.seed = scene.optimizer.seed;
+    const OptimizerSettings& s = scene.optimizer;
+    o.iterations = s.iterations;
+    o.seed = s.seed;
+    o.hierarchy = s.flat ? Hierarchy::Flat : Hierarchy::Hierarchical;
+    o.innerIterations = s.innerIterations;
+    o.schedule.kind = s.constantTemperature ? Schedule::Kind::Constant : Schedule::Kind::Geometric;
+    o.schedule.start = s.temperatureStart;
+    o.schedule.end = s.temperatureEnd;
+    o.start = s.startFromScene ? StartFrom::Scene : StartFrom::Uniform;
     return o;
 }
 

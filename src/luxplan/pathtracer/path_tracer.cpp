@@ -46,47 +46,51 @@ void PathTracer::updateLayout() {
     emitters_ = EmitterSet(rt_.scene(), world, options_.emitterSelection);
 }
 
-bool PathTracer::insideRoom(const Vec3& p) const {
-    return options_.portals && hasRoom_ && !portals_.empty() && room_.contains(p);
+void PathTracer::viewPortals(const Vec3& p, PortalView& view) const {
+    view.active = options_.portals && hasRoom_ && !portals_.empty() && room_.contains(p);
+    view.count = 0;
+    view.total = 0;
+    if (!view.active) return;
+    for (const Rect3& r : portals_) {
+        if (view.count == kMaxPortals) break;
+        view.rects[view.count] = SphericalRect(r, p);
+        view.total += view.rects[view.count++].solidAngle();
+    }
 }
 
 // Inside the room every sky direction that can reach p passes through one opening, so
 // sampling the openings' spherical rectangles (uniform over their joint solid angle)
 // wastes no samples on walls. Outside, the sky map's own importance sampling is used.
-double PathTracer::skyPdf(const Vec3& p, const Vec3& w) const {
+double PathTracer::skyPdf(const PortalView& view, const Vec3& p, const Vec3& w) const {
     if (!daylight_ || !daylight_->hasSky()) return 0;
-    if (!insideRoom(p)) return daylight_->skyPdf(w);
-    double total = 0;
-    bool through = false;
-    for (const Rect3& r : portals_) {
-        total += SphericalRect(r, p).solidAngle();
-        if (!through && r.intersect(p, w) > 0) through = true;
-    }
-    return through && total > 0 ? 1 / total : 0;
+    if (!view.active) return daylight_->skyPdf(w);
+    if (view.total <= 0) return 0;
+    for (int i = 0; i < view.count; ++i)
+        if (portals_[i].intersect(p, w) > 0) return 1 / view.total;
+    return 0;
 }
 
-EnvironmentSample PathTracer::sampleSky(const Vec3& p, Vec2 u) const {
-    if (!insideRoom(p)) return daylight_->sampleSky(u);
+EnvironmentSample PathTracer::sampleSky(const PortalView& view, const Vec3& p, Vec2 u) const {
+    if (!view.active) return daylight_->sampleSky(u);
     EnvironmentSample s;
-    double omega[64], total = 0;
-    size_t n = std::min<size_t>(portals_.size(), 64);
-    for (size_t i = 0; i < n; ++i) total += omega[i] = SphericalRect(portals_[i], p).solidAngle();
-    if (total <= 0) return s;
+    if (view.total <= 0) return s;
     // Choose a portal by solid angle, reusing u.x within the chosen interval.
-    double target = u.x * total, acc = 0;
-    size_t chosen = n - 1;
-    for (size_t i = 0; i < n; ++i) {
-        if (target < acc + omega[i] && omega[i] > 0) {
+    double target = u.x * view.total, acc = 0;
+    int chosen = -1;
+    for (int i = 0; i < view.count; ++i) {
+        double omega = view.rects[i].solidAngle();
+        if (omega > 0 && target < acc + omega) {
             chosen = i;
-            u.x = std::min((target - acc) / omega[i], 1 - 1e-12);
+            u.x = std::min((target - acc) / omega, 1 - 1e-12);
             break;
         }
-        acc += omega[i];
+        acc += omega;
     }
-    Vec3 q = SphericalRect(portals_[chosen], p).sample(u);
+    if (chosen < 0) return s;
+    Vec3 q = view.rects[chosen].sample(u);
     s.wi = normalize(q - p);
     s.Le = daylight_->Le(s.wi);
-    s.pdf = 1 / total;
+    s.pdf = 1 / view.total;
     return s;
 }
 
@@ -156,6 +160,8 @@ double PathTracer::trace(SensorKind sensor, const Vec3& origin, const Vec3& n, R
     bool lastDelta = false;
     double lastPdf = 0;
     Vec3 lastPoint = origin;
+    const bool sky = daylight_ && daylight_->hasSky();
+    PortalView view, lastView;
     double firstWeight = 0;
 
     for (int depth = 0; depth < options_.maxDepth; ++depth) {
@@ -181,8 +187,9 @@ double PathTracer::trace(SensorKind sensor, const Vec3& origin, const Vec3& n, R
                 EnvironmentSample s = daylight_->sampleSun(uDisk, {rng.uniform(), rng.uniform()});
                 addLight(s.wi, s.Le, s.pdf, kInf, -1);
             }
-            if (daylight_ && daylight_->hasSky()) {
-                EnvironmentSample s = sampleSky(v.p, {rng.uniform(), rng.uniform()});
+            if (sky) {
+                viewPortals(v.p, view);
+                EnvironmentSample s = sampleSky(view, v.p, {rng.uniform(), rng.uniform()});
                 addLight(s.wi, s.Le, s.pdf, kInf, -1);
             }
         }
@@ -219,6 +226,7 @@ double PathTracer::trace(SensorKind sensor, const Vec3& origin, const Vec3& n, R
         if (!delta) {
             lastPdf = pdf;
             lastPoint = v.p;
+            if (sky) std::swap(lastView, view);
         }
         lastDelta = delta;
 
@@ -238,7 +246,7 @@ double PathTracer::trace(SensorKind sensor, const Vec3& origin, const Vec3& n, R
             if (!hit) {
                 if (daylight_) {
                     Vec3 sky = daylight_->Le(d), sun = daylight_->sunLe(d);
-                    double wSky = lastDelta ? 1 : powerHeuristic(1, lastPdf, 1, skyPdf(lastPoint, d));
+                    double wSky = lastDelta ? 1 : powerHeuristic(1, lastPdf, 1, skyPdf(lastView, lastPoint, d));
                     double wSun = lastDelta ? 1 : powerHeuristic(1, lastPdf, 1, daylight_->sunPdf(d));
                     L += throughput * (sky * wSky + sun * wSun);
                 }

@@ -52,10 +52,20 @@ private:
     enum class SensorKind { Hemisphere, Sphere, Camera };
     double trace(SensorKind sensor, const Vec3& p, const Vec3& n, Rng& rng, RayStats& stats) const;
 
-    // Light arriving from the sky map (not the sun) through the portals or by map sampling.
-    bool insideRoom(const Vec3& p) const;
-    double skyPdf(const Vec3& p, const Vec3& w) const;
-    EnvironmentSample sampleSky(const Vec3& p, Vec2 u) const;
+    // The room's openings seen from one vertex: their spherical rectangles, computed once
+    // per vertex and reused for the sky sample there and for the MIS weight of the ray
+    // that leaves it. Openings beyond kMaxPortals are not sampled directly (BSDF
+    // sampling still finds them, so the estimate stays unbiased).
+    static constexpr int kMaxPortals = 16;
+    struct PortalView {
+        bool active = false;  // the vertex is inside the room: sample the portals
+        int count = 0;
+        SphericalRect rects[kMaxPortals];
+        double total = 0;     // joint solid angle (sr)
+    };
+    void viewPortals(const Vec3& p, PortalView& view) const;
+    double skyPdf(const PortalView& view, const Vec3& p, const Vec3& w) const;
+    EnvironmentSample sampleSky(const PortalView& view, const Vec3& p, Vec2 u) const;
     // Transmittance along p + t w up to tMax (the distance to the sampled point on
     // emitter `target`, or infinity for sun and sky): products of pane transmittances, 0
     // when anything opaque is in the way. Emitters do not block shadow rays towards

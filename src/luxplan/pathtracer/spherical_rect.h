@@ -21,6 +21,7 @@ struct Rect3 {
 // The spherical rectangle of `rect` seen from `origin`.
 class SphericalRect {
 public:
+    SphericalRect() = default;
     SphericalRect(const Rect3& rect, const Vec3& origin);
     // Solid angle (sr); 0 when the origin lies in the rectangle's plane.
     double solidAngle() const { return solidAngle_; }

@@ -156,7 +156,13 @@ struct Objective {
 struct OptimizerSettings {
     int iterations = 10000;
     uint64_t seed = 1;
-    int pathsPerPoint = 1000;
+    int pathsPerPoint = 1000;        // per sampler point, for every layout the chain measures
+    int reportPathsPerPoint = 1000;  // for the final layout's report
+    bool flat = false;               // ignore groups (the paper's Figure 6 comparison)
+    int innerIterations = 4;         // object-level proposals per group-level one
+    bool constantTemperature = false;
+    double temperatureStart = 0.1, temperatureEnd = 0.001;
+    bool startFromScene = false;     // start from the scene's placement instead of uniform draws
 };
 
 struct Scene {

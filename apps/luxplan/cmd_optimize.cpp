@@ -1,0 +1,137 @@
+// `luxplan optimize SCENE -o OUTDIR [--iterations N] [--seed S] [--threads T] [--flat]`:
+// the hierarchical Metropolis search with path-traced lighting; writes layout.json,
+// report.json and trace.csv. Ctrl-C stops the run and still writes the best layout.
+#include <atomic>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <iostream>
+#include <unistd.h>
+
+#include "commands.h"
+#include <luxplan/io/scene_loader.h>
+#include <luxplan/optimizer/optimizer.h>
+#include <luxplan/optimizer/path_traced_lighting.h>
+#include <luxplan/optimizer/report.h>
+
+namespace luxplan::cli {
+namespace {
+
+std::atomic<bool> interrupted{false};
+extern "C" void onInterrupt(int) { interrupted.store(true); }
+
+struct OptimizeArgs {
+    std::string scene, out;
+    int iterations = -1, threads = 0, paths = 0;
+    int64_t seed = -1;
+    bool flat = false, quiet = false;
+};
+
+std::string duration(double seconds) {
+    char buf[32];
+    int s = int(seconds + 0.5);
+    if (s >= 3600) std::snprintf(buf, sizeof buf, "%dh%02dm", s / 3600, s / 60 % 60);
+    else if (s >= 60) std::snprintf(buf, sizeof buf, "%dm%02ds", s / 60, s % 60);
+    else std::snprintf(buf, sizeof buf, "%ds", s);
+    return buf;
+}
+
+// One status line, redrawn in place on a terminal, printed every few seconds otherwise.
+void showProgress(const Progress& p, bool tty) {
+    static auto lastPrint = std::chrono::steady_clock::now() - std::chrono::hours(1);
+    auto now = std::chrono::steady_clock::now();
+    bool done = p.iteration >= p.iterations;
+    if (!tty && !done && now - lastPrint < std::chrono::seconds(5)) return;
+    lastPrint = now;
+    const int width = 24;
+    int filled = p.iterations > 0 ? int(double(width) * p.iteration / p.iterations) : width;
+    char line[256];
+    std::snprintf(line, sizeof line,
+                  "[%s%s] %d/%d  C %.4f  best %s  accepted T %.0f%% R %.0f%% S %.0f%% J %.0f%%  %s  ETA %s",
+                  std::string(size_t(filled), '#').c_str(), std::string(size_t(width - filled), '.').c_str(), p.iteration,
+                  p.iterations, p.current, p.feasible ? std::to_string(p.best).substr(0, 6).c_str() : "-",
+                  100 * p.acceptance[0], 100 * p.acceptance[1], 100 * p.acceptance[2], 100 * p.acceptance[3],
+                  duration(p.seconds).c_str(), duration(p.etaSeconds).c_str());
+    std::cerr << (tty ? "\r" : "") << line << (tty ? "\033[K" : "\n") << std::flush;
+}
+
+// Returns true when the run was interrupted (Ctrl-C) after writing its outputs.
+bool runOptimize(const OptimizeArgs& args) {
+    Scene scene = io::loadScene(args.scene);
+    std::optional<DaylightEnvironment> daylight;
+    if (scene.daylight) daylight = buildDaylight(*scene.daylight, scene.site);
+
+    OptimizerOptions options = optimizerOptions(scene);
+    if (args.iterations >= 0) options.iterations = args.iterations;
+    if (args.seed >= 0) options.seed = uint64_t(args.seed);
+    if (args.flat) options.hierarchy = Hierarchy::Flat;
+
+    MeasureOptions measure;
+    measure.pathsPerPoint = args.paths > 0 ? args.paths : scene.optimizer.pathsPerPoint;
+    measure.seed = options.seed;
+    measure.threads = args.threads;
+    std::unique_ptr<PathTracedLighting> lighting;
+    if (!scene.samplers.empty())
+        lighting = std::make_unique<PathTracedLighting>(scene, daylight ? &*daylight : nullptr, measure);
+
+    Optimizer optimizer(scene, options, lighting && scene.objective.lightingWeight > 0 ? lighting.get() : nullptr);
+    interrupted.store(false);
+    auto previous = std::signal(SIGINT, onInterrupt);
+    bool tty = !args.quiet && isatty(STDERR_FILENO);
+    ProgressCallback progress;
+    if (!args.quiet) progress = [tty](const Progress& p) { showProgress(p, tty); };
+    OptimizerResult result = optimizer.run(progress, &interrupted);
+    std::signal(SIGINT, previous);
+    if (tty) std::cerr << "\n";
+    if (result.stop == StopReason::Cancelled) std::cerr << "interrupted: writing the best layout found so far\n";
+
+    // The report measures the best layout again with more paths, so that the sampler
+    // values it shows are accurate (the chain used paths_per_point).
+    if (lighting && result.feasible) {
+        MeasureOptions report = measure;
+        report.pathsPerPoint = std::max(scene.optimizer.reportPathsPerPoint, measure.pathsPerPoint);
+        lighting->setOptions(report);
+        Evaluation& best = result.bestEvaluation;
+        best.lighting = lighting->evaluate(result.best, worldTransforms(scene, result.best), &best.samplers);
+        best.lightingEvaluated = true;
+        double w = scene.objective.lightingWeight;
+        best.cost = w * best.lighting + (1 - w) * best.geometry;
+    }
+    writeOptimizerOutputs(args.out, scene, result);
+    std::cout << "optimize: " << result.iterations << " iterations in " << duration(result.seconds) << " ("
+              << stopReasonName(result.stop) << ")";
+    if (result.feasible)
+        std::cout << "; best C " << result.bestEvaluation.cost << " (L " << result.bestEvaluation.lighting << ", G "
+                  << result.bestEvaluation.geometry << ") at iteration " << result.bestIteration;
+    else
+        std::cout << "; no layout passed the geometric rules";
+    std::cout << "\n  wrote " << args.out << "/layout.json, report.json, trace.csv\n";
+    if (lighting)
+        std::cout << "  lighting: " << lighting->evaluations() << " evaluations, "
+                  << lighting->rays().closest + lighting->rays().shadow << " rays\n";
+    return result.stop == StopReason::Cancelled;
+}
+
+}  // namespace
+
+void registerOptimizeCommand(CLI::App& app) {
+    auto args = std::make_shared<OptimizeArgs>();
+    auto* cmd = app.add_subcommand("optimize", "Search the furniture layout for the design rules and lighting goals");
+    cmd->add_option("scene", args->scene, "Scene JSON file")->required();
+    cmd->add_option("-o,--out", args->out, "Output folder (layout.json, report.json, trace.csv)")->required();
+    cmd->add_option("--iterations", args->iterations, "Iterations (default: optimizer.iterations)")
+        ->check(CLI::NonNegativeNumber);
+    cmd->add_option("--seed", args->seed, "Random seed (default: optimizer.seed)")->check(CLI::NonNegativeNumber);
+    cmd->add_option("--threads", args->threads, "Worker threads for light transport (default: all cores)")
+        ->check(CLI::NonNegativeNumber);
+    cmd->add_option("--paths", args->paths, "Paths per sampler point during the search (default: optimizer.paths_per_point)")
+        ->check(CLI::PositiveNumber);
+    cmd->add_flag("--flat", args->flat, "Ignore groups: move every entity on its own (the paper's Figure 6)");
+    cmd->add_flag("-q,--quiet", args->quiet, "No progress line");
+    cmd->callback([args] {
+        // 130 = 128 + SIGINT, the shell's convention for a run stopped by Ctrl-C.
+        if (runOptimize(*args)) throw CLI::RuntimeError(130);
+    });
+}
+
+}  // namespace luxplan::cli

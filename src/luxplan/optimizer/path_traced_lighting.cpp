@@ -1,0 +1,28 @@
+#include <luxplan/optimizer/path_traced_lighting.h>
+
+#include <luxplan/constraints/penalty.h>
+
+namespace luxplan {
+
+PathTracedLighting::PathTracedLighting(const Scene& scene, const DaylightEnvironment* daylight, const MeasureOptions& options)
+    : scene_(scene), rt_(scene, initialLayout(scene)), tracer_(rt_, daylight), options_(options) {}
+
+double PathTracedLighting::evaluate(const Layout& /*layout*/, const std::vector<Transform>& world, LightingBreakdown* out) {
+    // Only instance transforms change: the top level is re-committed, nothing rebuilt.
+    for (size_t i = 0; i < world.size(); ++i) rt_.setEntityTransform(int(i), world[i]);
+    rt_.commit();
+    tracer_.updateLayout();
+    last_ = measureSamplers(tracer_, options_);
+    ++evaluations_;
+    rays_ += last_.rays;
+    std::vector<double> values;
+    for (const SamplerResult& r : last_.samplers) values.push_back(r.value);
+    if (out) {
+        out->samplers.clear();
+        for (size_t k = 0; k < values.size(); ++k)
+            out->samplers.push_back({int(k), values[k], lightingPenalty(scene_.samplers[k], values[k]), last_.samplers[k].points});
+    }
+    return scene_.samplers.empty() ? 0.0 : lightingCost(scene_, values);
+}
+
+}  // namespace luxplan
