@@ -26,16 +26,18 @@ void BM_MeasureOffice(benchmark::State& state) {
     MeasureOptions options;
     options.pathsPerPoint = int(state.range(0));
     options.threads = 1;
-    uint64_t paths = 0, rays = 0;
+    uint64_t paths = 0, rays = 0, shadow = 0;
     for (auto _ : state) {
         MeasureResult r = measureSamplers(o.tracer, options);
         paths += r.paths;
         rays += r.rays.closest + r.rays.shadow;
+        shadow += r.rays.shadow;
         ++options.seed;
     }
     state.counters["paths/s"] = benchmark::Counter(double(paths), benchmark::Counter::kIsRate);
     state.counters["rays/s"] = benchmark::Counter(double(rays), benchmark::Counter::kIsRate);
     state.counters["rays/path"] = double(rays) / double(paths);
+    state.counters["shadow_share"] = double(shadow) / double(rays);
 }
 BENCHMARK(BM_MeasureOffice)->Arg(64)->Unit(benchmark::kMillisecond);
 
