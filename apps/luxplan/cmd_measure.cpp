@@ -14,15 +14,6 @@
 namespace luxplan::cli {
 namespace {
 
-const char* typeName(LightSamplerType t) {
-    switch (t) {
-        case LightSamplerType::Planar: return "planar";
-        case LightSamplerType::Directional: return "directional";
-        case LightSamplerType::Volume: return "volume";
-    }
-    return "?";
-}
-
 nlohmann::json bound(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
 
 struct MeasureArgs {
@@ -53,7 +44,7 @@ void runMeasure(const MeasureArgs& args) {
             const LightSamplerSpec& s = scene.samplers[k];
             const SamplerResult& r = result.samplers[k];
             samplers.push_back({{"name", s.name},
-                                {"type", typeName(s.type)},
+                                {"type", samplerTypeName(s.type)},
                                 {"unit", s.unit()},
                                 {"value", r.value},
                                 {"std_error", r.standardError},
@@ -76,7 +67,7 @@ void runMeasure(const MeasureArgs& args) {
         const SamplerResult& r = result.samplers[k];
         std::ostringstream target;
         target << "[" << s.targetMin << ", " << (std::isfinite(s.targetMax) ? std::to_string(int(s.targetMax)) : "inf") << "]";
-        std::cout << std::left << std::setw(24) << s.name << std::setw(12) << typeName(s.type) << std::right << std::fixed
+        std::cout << std::left << std::setw(24) << s.name << std::setw(12) << samplerTypeName(s.type) << std::right << std::fixed
                   << std::setprecision(1) << std::setw(12) << r.value << std::setw(10) << r.standardError << std::setw(8)
                   << s.unit() << std::setw(22) << target.str() << std::setprecision(3) << std::setw(10) << r.penalty
                   << (r.penalty > 0 ? "  MISSED" : "  ok") << "\n";

@@ -11,37 +11,6 @@
 namespace luxplan::cli {
 namespace {
 
-const char* wallName(Wall w) {
-    switch (w) {
-        case Wall::North: return "north";
-        case Wall::South: return "south";
-        case Wall::East: return "east";
-        case Wall::West: return "west";
-        case Wall::Ceiling: return "ceiling";
-    }
-    return "?";
-}
-
-const char* samplerTypeName(LightSamplerType t) {
-    switch (t) {
-        case LightSamplerType::Planar: return "planar";
-        case LightSamplerType::Directional: return "directional";
-        case LightSamplerType::Volume: return "volume";
-    }
-    return "?";
-}
-
-const char* constraintName(ConstraintType t) {
-    switch (t) {
-        case ConstraintType::Alignment: return "alignment";
-        case ConstraintType::Distance: return "distance";
-        case ConstraintType::Focus: return "focus";
-        case ConstraintType::Conversation: return "conversation";
-        case ConstraintType::Overlap: return "overlap";
-    }
-    return "?";
-}
-
 std::string entityName(const Scene& s, int e) { return e == kRoomEntity ? "room" : e >= 0 ? s.entities[e].path : "?"; }
 
 void printSummary(const Scene& s, std::ostream& out) {
@@ -107,7 +76,7 @@ void printSummary(const Scene& s, std::ostream& out) {
             << "): target [" << sp.targetMin << ", " << sp.targetMax << "] " << sp.unit() << "\n";
     out << "  constraints: " << s.constraints.size() << "\n";
     for (const auto& c : s.constraints) {
-        out << "    " << constraintName(c.type);
+        out << "    " << constraintTypeName(c.type);
         if (c.type != ConstraintType::Overlap) out << " " << entityName(s, c.a) << " - " << entityName(s, c.b);
         else out << " tolerance " << s.overlapTolerance;
         out << "\n";

@@ -17,15 +17,6 @@ using Json = nlohmann::ordered_json;
 // Infinite or undefined numbers are written as null.
 Json number(double v) { return std::isfinite(v) ? Json(v) : Json(nullptr); }
 
-const char* samplerTypeName(LightSamplerType t) {
-    switch (t) {
-        case LightSamplerType::Planar: return "planar";
-        case LightSamplerType::Directional: return "directional";
-        case LightSamplerType::Volume: return "volume";
-    }
-    return "?";
-}
-
 const char* targetName(OverlapTarget t) {
     switch (t) {
         case OverlapTarget::Entity: return "entity";

@@ -11,6 +11,37 @@ double Emitter::area() const {
     return 0;
 }
 
+const char* samplerTypeName(LightSamplerType t) {
+    switch (t) {
+        case LightSamplerType::Planar: return "planar";
+        case LightSamplerType::Directional: return "directional";
+        case LightSamplerType::Volume: return "volume";
+    }
+    return "?";
+}
+
+const char* constraintTypeName(ConstraintType t) {
+    switch (t) {
+        case ConstraintType::Alignment: return "alignment";
+        case ConstraintType::Distance: return "distance";
+        case ConstraintType::Focus: return "focus";
+        case ConstraintType::Conversation: return "conversation";
+        case ConstraintType::Overlap: return "overlap";
+    }
+    return "?";
+}
+
+const char* wallName(Wall w) {
+    switch (w) {
+        case Wall::North: return "north";
+        case Wall::South: return "south";
+        case Wall::East: return "east";
+        case Wall::West: return "west";
+        case Wall::Ceiling: return "ceiling";
+    }
+    return "?";
+}
+
 int Scene::findEntity(const std::string& path) const {
     for (size_t i = 0; i < entities.size(); ++i)
         if (entities[i].path == path) return int(i);

@@ -165,6 +165,11 @@ struct OptimizerSettings {
     bool startFromScene = false;     // start from the scene's placement instead of uniform draws
 };
 
+// The scene file's names for these enums ("planar", "alignment", "south", ...).
+const char* samplerTypeName(LightSamplerType type);
+const char* constraintTypeName(ConstraintType type);
+const char* wallName(Wall wall);
+
 struct Scene {
     std::filesystem::path file;
     std::string name;
