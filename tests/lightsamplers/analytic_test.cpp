@@ -196,3 +196,44 @@ TEST(Determinism, SameResultWithOneAndTwoThreads) {
 
 }  // namespace
 }  // namespace luxplan
+
+namespace luxplan {
+namespace {
+
+// Twelve panels along a corridor; the point sits under the first. Choosing emitters by
+// flux / distance^2 must give the same illuminance as a uniform choice, with less noise.
+TEST(EmitterSelection, PowerDistanceAgreesWithUniformAndHasLessVariance) {
+    std::string luminaires;
+    for (int i = 0; i < 12; ++i)
+        luminaires += std::string(i ? "," : "") + R"({"name": "l)" + std::to_string(i) + R"(", "shape": "rect", "center": [)" +
+                      std::to_string(1 + 2 * i) + R"(,1,2.9], "normal": [0,0,-1], "size": [0.5,0.5], "flux_lm": 2000})";
+    std::string json = R"({"luxplan": 1, "luminaires": [)" + luminaires + R"(],
+      "samplers": [{"name": "p", "type": "planar", "center": [1,1,0.8], "size": [0.001,0.001], "grid": [1,1], "target": [0, null]}]})";
+    PathTracerOptions uniform;
+    uniform.emitterSelection = EmitterSelection::Uniform;
+    test::Lab byPower(json), byUniform(json, uniform);
+    SamplerResult a = byPower.measure(20000).samplers[0], b = byUniform.measure(20000).samplers[0];
+    EXPECT_NEAR(a.value, b.value, 4 * std::hypot(a.standardError, b.standardError));
+    EXPECT_LT(a.standardError, 0.5 * b.standardError);
+}
+
+// A stand lamp carried by a movable entity lights the table it is moved to.
+TEST(CarriedEmitters, FollowTheLayout) {
+    test::Lab lab(R"({"luxplan": 1,
+      "entities": [{"name": "lamp", "position": [0, 0],
+                    "placement": {"regions": [{"min": [0,0], "max": [10,0]}]},
+                    "emitters": [{"name": "bulb", "shape": "sphere", "center": [0,0,1.5], "radius": 0.05, "flux_lm": 1000}]}],
+      "samplers": [{"name": "p", "type": "planar", "center": [5,0,0.75], "size": [0.001,0.001], "grid": [1,1], "target": [0, null]}]})");
+    double far = lab.measure(2000).samplers[0].value;
+    Layout layout = initialLayout(lab.scene);
+    layout.placements[0].position = {5, 0, 0};
+    lab.rt->setLayout(layout);
+    lab.tracer->updateLayout();
+    SamplerResult near = lab.measure(2000).samplers[0];
+    // A point source of 1000 lm at 0.75 m straight above: E = (1000 / 4 pi) / 0.75^2.
+    EXPECT_NEAR(near.value, 1000 / (4 * kPi) / (0.75 * 0.75), 4 * near.standardError + 1e-3 * near.value);
+    EXPECT_LT(far, 0.01 * near.value);
+}
+
+}  // namespace
+}  // namespace luxplan
