@@ -77,24 +77,29 @@ double EmitterSet::emitted(size_t i, const Vec3& w, const Vec3& hitNormal) const
 
 EmitterSample EmitterSet::sample(const Vec3& p, double uSelect, Vec2 u) const {
     EmitterSample s;
-    // Choose by importance, reusing uSelect's position in the cdf.
+    // Choose by importance: one pass for the weights (on the stack for the usual few
+    // dozen emitters), one for the choice.
+    constexpr size_t kStack = 64;
+    double stackWeights[kStack];
+    std::vector<double> heapWeights;
+    double* weights = stackWeights;
+    if (emitters_.size() > kStack) {
+        heapWeights.resize(emitters_.size());
+        weights = heapWeights.data();
+    }
     double total = 0;
-    for (size_t k = 0; k < emitters_.size(); ++k) total += importance(k, p);
+    for (size_t k = 0; k < emitters_.size(); ++k) total += weights[k] = importance(k, p);
     if (total <= 0) return s;
     double target = uSelect * total, acc = 0;
-    size_t chosen = emitters_.size() - 1;
+    size_t chosen = emitters_.size();
     for (size_t k = 0; k < emitters_.size(); ++k) {
-        double w = importance(k, p);
-        if (w <= 0) continue;
-        acc += w;
-        if (target < acc) {
-            chosen = k;
-            break;
-        }
+        if (weights[k] <= 0) continue;
+        chosen = k;  // the last emitter with weight, should rounding leave target >= total
+        acc += weights[k];
+        if (target < acc) break;
     }
-    while (importance(chosen, p) <= 0) --chosen;  // uSelect == 1 - ulp guard
     const WorldEmitter& e = emitters_[chosen];
-    double select = importance(chosen, p) / total;
+    double select = weights[chosen] / total;
 
     Vec3 q;
     double pdfSolid = 0;
