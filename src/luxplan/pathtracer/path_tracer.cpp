@@ -30,7 +30,9 @@ PathTracer::PathTracer(const EmbreeScene& rt, const DaylightEnvironment* dayligh
     for (const Material& m : rt.scene().materials) bsdfs_.push_back(makeBsdf(m));
     if (const RoomShell* room = rt.scene().room()) {
         hasRoom_ = true;
-        room_ = room->box;
+        // Hit points on the shell lie on the box boundary, half of them a float ulp
+        // outside: a millimetre of slack keeps them on the portal side.
+        room_ = Bounds3(room->box.lo - Vec3(1e-3, 1e-3, 1e-3), room->box.hi + Vec3(1e-3, 1e-3, 1e-3));
         for (const Opening& o : room->openings) {
             WallFrame f = wallFrame(room->box, o.wall);
             auto r = openingRect(room->box, o);
