@@ -1,5 +1,8 @@
 #include <luxplan/pathtracer/path_tracer.h>
 
+#include <algorithm>
+#include <atomic>
+
 #include <luxplan/core/warp.h>
 #include <luxplan/scene/room.h>
 
@@ -27,6 +30,8 @@ struct Vertex {
 
 PathTracer::PathTracer(const EmbreeScene& rt, const DaylightEnvironment* daylight, const PathTracerOptions& options)
     : rt_(rt), daylight_(daylight), options_(options) {
+    static std::atomic<uint64_t> nextId{1};
+    id_ = nextId++;
     for (const Material& m : rt.scene().materials) bsdfs_.push_back(makeBsdf(m));
     if (const RoomShell* room = rt.scene().room()) {
         hasRoom_ = true;
@@ -49,6 +54,23 @@ void PathTracer::updateLayout() {
 }
 
 void PathTracer::viewPortals(const Vec3& p, PortalView& view) const {
+    // Every path of a sampler point starts at the same place: keep the last view of
+    // each thread (measureSamplers runs a point's paths on one thread in a row).
+    thread_local uint64_t cachedTracer = 0;
+    thread_local Vec3 cachedPoint;
+    thread_local PortalView cachedView;
+    if (cachedTracer == id_ && cachedPoint == p) {
+        view.active = cachedView.active, view.count = cachedView.count, view.total = cachedView.total;
+        std::copy(cachedView.rects, cachedView.rects + cachedView.count, view.rects);
+        return;
+    }
+    computePortals(p, view);
+    cachedTracer = id_, cachedPoint = p;
+    cachedView.active = view.active, cachedView.count = view.count, cachedView.total = view.total;
+    std::copy(view.rects, view.rects + view.count, cachedView.rects);
+}
+
+void PathTracer::computePortals(const Vec3& p, PortalView& view) const {
     view.active = options_.portals && hasRoom_ && !portals_.empty() && room_.contains(p);
     view.count = 0;
     view.total = 0;

@@ -64,6 +64,7 @@ private:
         double total = 0;     // joint solid angle (sr)
     };
     void viewPortals(const Vec3& p, PortalView& view) const;
+    void computePortals(const Vec3& p, PortalView& view) const;
     double skyPdf(const PortalView& view, const Vec3& p, const Vec3& w) const;
     EnvironmentSample sampleSky(const PortalView& view, const Vec3& p, Vec2 u) const;
     // Transmittance along p + t w up to tMax (the distance to the sampled point on
@@ -81,6 +82,7 @@ private:
     std::vector<Rect3> portals_;
     Bounds3 room_;
     bool hasRoom_ = false;
+    uint64_t id_ = 0;  // unique per tracer, keys the per-thread portal cache
 };
 
 }  // namespace luxplan
