@@ -1,6 +1,7 @@
 // `luxplan optimize SCENE -o OUTDIR [--iterations N] [--seed S] [--threads T] [--flat]`:
 // the hierarchical Metropolis search with path-traced lighting; writes layout.json,
-// report.json and trace.csv. Ctrl-C stops the run and still writes the best layout.
+// report.json, trace.csv, then the pictures, scene.glb and report.html (unless
+// --no-pictures). Ctrl-C stops the run and still writes the best layout.
 #include <atomic>
 #include <chrono>
 #include <csignal>
@@ -13,6 +14,7 @@
 #include <luxplan/optimizer/optimizer.h>
 #include <luxplan/optimizer/path_traced_lighting.h>
 #include <luxplan/optimizer/report.h>
+#include <luxplan/output/outputs.h>
 
 namespace luxplan::cli {
 namespace {
@@ -22,9 +24,9 @@ extern "C" void onInterrupt(int) { interrupted.store(true); }
 
 struct OptimizeArgs {
     std::string scene, out;
-    int iterations = -1, threads = 0, paths = 0;
+    int iterations = -1, threads = 0, paths = 0, spp = 0;
     int64_t seed = -1;
-    bool flat = false, quiet = false;
+    bool flat = false, quiet = false, noPictures = false;
 };
 
 std::string duration(double seconds) {
@@ -75,6 +77,8 @@ bool runOptimize(const OptimizeArgs& args) {
         lighting = std::make_unique<PathTracedLighting>(scene, daylight ? &*daylight : nullptr, measure);
 
     Optimizer optimizer(scene, options, lighting && scene.objective.lightingWeight > 0 ? lighting.get() : nullptr);
+    optimizer.initialize();
+    Layout start = optimizer.current();  // the comparison picture's left side
     interrupted.store(false);
     auto previous = std::signal(SIGINT, onInterrupt);
     bool tty = !args.quiet && isatty(STDERR_FILENO);
@@ -106,6 +110,17 @@ bool runOptimize(const OptimizeArgs& args) {
     else
         std::cout << "; no layout passed the geometric rules";
     std::cout << "\n  wrote " << args.out << "/layout.json, report.json, trace.csv\n";
+    if (!args.noPictures) {
+        OutputOptions pictures;
+        pictures.threads = args.threads;
+        pictures.seed = options.seed;
+        pictures.initialLabel = "start";
+        if (args.spp > 0) pictures.renderSamplesPerPixel = args.spp;
+        RunOutputs outputs = writeRunOutputs(args.out, scene, start, result.best, &result, daylight ? &*daylight : nullptr, pictures);
+        std::cout << "  wrote";
+        for (const auto& f : outputs.files) std::cout << " " << f.filename().string();
+        std::cout << " in " << duration(outputs.seconds) << "\n";
+    }
     if (lighting)
         std::cout << "  lighting: " << lighting->evaluations() << " evaluations, "
                   << lighting->rays().closest + lighting->rays().shadow << " rays\n";
@@ -128,6 +143,8 @@ void registerOptimizeCommand(CLI::App& app) {
         ->check(CLI::PositiveNumber);
     cmd->add_flag("--flat", args->flat, "Ignore groups: move every entity on its own (the paper's Figure 6)");
     cmd->add_flag("-q,--quiet", args->quiet, "No progress line");
+    cmd->add_flag("--no-pictures", args->noPictures, "Skip the pictures, scene.glb and report.html");
+    cmd->add_option("--spp", args->spp, "Samples per pixel of render.png (default 16)")->check(CLI::PositiveNumber);
     cmd->callback([args] {
         // 130 = 128 + SIGINT, the shell's convention for a run stopped by Ctrl-C.
         if (runOptimize(*args)) throw CLI::RuntimeError(130);

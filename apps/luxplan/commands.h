@@ -11,5 +11,7 @@ void registerInfoCommand(CLI::App& app);
 void registerMeasureCommand(CLI::App& app);
 void registerOptimizeCommand(CLI::App& app);
 void registerSunCommand(CLI::App& app);
+void registerRenderCommand(CLI::App& app);
+void registerReportCommand(CLI::App& app);
 
 }  // namespace luxplan::cli

@@ -13,6 +13,8 @@ int main(int argc, char** argv) {
     luxplan::cli::registerMeasureCommand(app);
     luxplan::cli::registerOptimizeCommand(app);
     luxplan::cli::registerSunCommand(app);
+    luxplan::cli::registerRenderCommand(app);
+    luxplan::cli::registerReportCommand(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

@@ -7,8 +7,11 @@
 
 #include <filesystem>
 #include <fstream>
+#include <regex>
 
 #include <nlohmann/json.hpp>
+#include <stb_image.h>
+#include <tiny_gltf.h>
 
 #include "support/temp_files.h"
 
@@ -155,7 +158,7 @@ TEST(Cli, OptimizeFindsTheLitRegionAndWritesItsOutputs) {
     test::TempDir dir;
     auto scene = dir.write("scene.json", kLightSeeking);
     auto out = dir.path() / "out";
-    Result r = run("optimize " + scene.string() + " -o " + out.string() + " --threads 2 -q");
+    Result r = run("optimize " + scene.string() + " -o " + out.string() + " --threads 2 -q --no-pictures");
     ASSERT_EQ(r.exitCode, 0) << r.output;
     for (const char* f : {"layout.json", "report.json", "trace.csv"}) EXPECT_TRUE(std::filesystem::exists(out / f)) << f;
     auto layout = nlohmann::json::parse(std::ifstream(out / "layout.json"));
@@ -169,8 +172,79 @@ TEST(Cli, OptimizeFindsTheLitRegionAndWritesItsOutputs) {
     EXPECT_EQ(m.exitCode, 0) << m.output;
     // Same seed and thread count: the same layout.
     auto again = dir.path() / "again";
-    ASSERT_EQ(run("optimize " + scene.string() + " -o " + again.string() + " --threads 2 -q").exitCode, 0);
+    ASSERT_EQ(run("optimize " + scene.string() + " -o " + again.string() + " --threads 2 -q --no-pictures").exitCode, 0);
     EXPECT_EQ(nlohmann::json::parse(std::ifstream(again / "layout.json")), layout);
+}
+
+}  // namespace
+}  // namespace luxplan
+
+namespace luxplan {
+namespace {
+
+// render, report and optimize leave pictures that decode, a .glb that parses and a
+// report.html whose every link resolves.
+TEST(Cli, RenderReportAndOptimizeWriteTheirPictures) {
+    test::TempDir dir;
+    auto scene = dir.write("scene.json", kLightSeeking);
+    auto layout = dir.write("layout.json", R"({"entities": {"table": {"position": [6.2, 2], "rotation": 90, "region": 1}}})");
+    auto expectPng = [](const std::filesystem::path& file) {
+        int w = 0, h = 0, n = 0;
+        unsigned char* pixels = stbi_load(file.c_str(), &w, &h, &n, 3);
+        EXPECT_TRUE(pixels && w > 0 && h > 0) << file;
+        stbi_image_free(pixels);
+        return std::pair(w, h);
+    };
+    auto expectGlb = [](const std::filesystem::path& file) {
+        tinygltf::TinyGLTF loader;
+        tinygltf::Model model;
+        std::string err, warn;
+        EXPECT_TRUE(loader.LoadBinaryFromFile(&model, &err, &warn, file.string())) << file << ": " << err;
+        EXPECT_EQ(model.nodes.size(), 3u) << file;  // room, table, lamp
+    };
+    auto expectReport = [](const std::filesystem::path& folder) {
+        std::ifstream in(folder / "report.html");
+        std::string html((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        EXPECT_NE(html.find("</html>"), std::string::npos);
+        std::regex attr(R"re((?:href|src)="([^"]*)")re");
+        int refs = 0;
+        for (auto it = std::sregex_iterator(html.begin(), html.end(), attr); it != std::sregex_iterator(); ++it, ++refs)
+            EXPECT_TRUE(std::filesystem::is_regular_file(folder / (*it)[1].str())) << (*it)[1];
+        return refs;
+    };
+    const std::string small = " --threads 2 --spp 1";
+    const std::string tiny = small + " --width 48 --height 32 --paths 8 --cell 0.5 --cell-paths 4";
+
+    auto render = dir.path() / "render";
+    Result r = run("render " + scene.string() + " --layout " + layout.string() + " -o " + render.string() + tiny);
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_EQ(expectPng(render / "render.png"), std::pair(48, 32));
+    expectPng(render / "plan.png");
+    expectGlb(render / "scene.glb");
+    EXPECT_FALSE(std::filesystem::exists(render / "report.html"));
+
+    auto report = dir.path() / "report";
+    r = run("report " + scene.string() + " --layout " + layout.string() + " -o " + report.string() + tiny);
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    for (const char* png : {"plan.png", "plan_initial_vs_optimized.png", "render.png"}) expectPng(report / png);
+    EXPECT_FALSE(std::filesystem::exists(report / "convergence.png"));
+    expectGlb(report / "scene.glb");
+    EXPECT_GE(expectReport(report), 5);  // 3 pictures (each an img and a link), scene.glb, layout.json
+
+    auto optimized = dir.path() / "optimized";
+    r = run("optimize " + scene.string() + " -o " + optimized.string() + " --iterations 40 -q" + small);
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    for (const char* png : {"plan.png", "plan_initial_vs_optimized.png", "render.png", "convergence.png"})
+        expectPng(optimized / png);
+    expectGlb(optimized / "scene.glb");
+    EXPECT_GE(expectReport(optimized), 12);  // 4 pictures twice, scene.glb, layout.json, report.json, trace.csv
+
+    auto bare = dir.path() / "bare";
+    r = run("optimize " + scene.string() + " -o " + bare.string() + " --iterations 5 -q --no-pictures" + small);
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_TRUE(std::filesystem::exists(bare / "layout.json"));
+    EXPECT_FALSE(std::filesystem::exists(bare / "plan.png"));
+    EXPECT_FALSE(std::filesystem::exists(bare / "report.html"));
 }
 
 }  // namespace

@@ -1,0 +1,101 @@
+// `luxplan render SCENE [--layout L] -o OUTDIR`: render.png, plan.png and scene.glb
+// for a layout; `luxplan report SCENE [--layout L] -o OUTDIR`: every picture and
+// report.html for a layout, measured but not optimized.
+#include <iostream>
+
+#include "commands.h"
+#include <luxplan/io/layout_io.h>
+#include <luxplan/io/scene_loader.h>
+#include <luxplan/output/outputs.h>
+
+namespace luxplan::cli {
+namespace {
+
+struct PictureArgs {
+    std::string scene, layout, out;
+    int width = 0, height = 0, spp = 0, threads = 0, paths = 0;
+    int64_t seed = -1;
+    double cell = 0;
+    int cellPaths = 0;
+};
+
+void addPictureOptions(CLI::App* cmd, PictureArgs& args) {
+    OutputOptions defaults;
+    cmd->add_option("scene", args.scene, "Scene JSON file")->required();
+    cmd->add_option("--layout", args.layout, "layout.json to show instead of the scene's placement");
+    cmd->add_option("--width", args.width, "Render width in pixels (default " + std::to_string(defaults.renderWidth) + ")")
+        ->check(CLI::PositiveNumber);
+    cmd->add_option("--height", args.height, "Render height in pixels (default " + std::to_string(defaults.renderHeight) + ")")
+        ->check(CLI::PositiveNumber);
+    cmd->add_option("--spp", args.spp, "Render samples per pixel (default " + std::to_string(defaults.renderSamplesPerPixel) + ")")
+        ->check(CLI::PositiveNumber);
+    cmd->add_option("--paths", args.paths, "Paths per sampler point (default " + std::to_string(defaults.samplerPaths) + ")")
+        ->check(CLI::PositiveNumber);
+    cmd->add_option("--cell", args.cell, "Work-plane grid cell in metres (default 0.25)")->check(CLI::PositiveNumber);
+    cmd->add_option("--cell-paths", args.cellPaths, "Illuminance samples per work-plane cell (default " +
+                                                        std::to_string(defaults.cellPaths) + ")")
+        ->check(CLI::PositiveNumber);
+    cmd->add_option("--threads", args.threads, "Worker threads (default: all cores)")->check(CLI::NonNegativeNumber);
+    cmd->add_option("--seed", args.seed, "Random seed (default: optimizer.seed)")->check(CLI::NonNegativeNumber);
+}
+
+OutputOptions outputOptions(const PictureArgs& args, const Scene& scene) {
+    OutputOptions o;
+    if (args.width > 0) o.renderWidth = args.width;
+    if (args.height > 0) o.renderHeight = args.height;
+    if (args.spp > 0) o.renderSamplesPerPixel = args.spp;
+    if (args.paths > 0) o.samplerPaths = args.paths;
+    if (args.cell > 0) o.cellSize = args.cell;
+    if (args.cellPaths > 0) o.cellPaths = args.cellPaths;
+    o.threads = args.threads;
+    o.seed = args.seed >= 0 ? uint64_t(args.seed) : scene.optimizer.seed;
+    return o;
+}
+
+void runPictures(const PictureArgs& args, bool report) {
+    Scene scene = io::loadScene(args.scene);
+    Layout initial = initialLayout(scene);
+    Layout layout = args.layout.empty() ? initial : io::readLayout(args.layout, scene);
+    std::optional<DaylightEnvironment> daylight;
+    if (scene.daylight) daylight = buildDaylight(*scene.daylight, scene.site);
+
+    OutputOptions options = outputOptions(args, scene);
+    options.initialLabel = "scene placement";
+    options.finalLabel = args.layout.empty() ? "scene placement" : std::filesystem::path(args.layout).filename().string();
+    if (report) {
+        std::filesystem::create_directories(args.out);
+        io::writeLayout(std::filesystem::path(args.out) / "layout.json", scene, layout);
+    } else {
+        options.comparison = options.convergence = options.html = false;
+    }
+    RunOutputs outputs = writeRunOutputs(args.out, scene, initial, layout, nullptr, daylight ? &*daylight : nullptr, options);
+    std::cout << (report ? "report" : "render") << ": wrote";
+    if (report) std::cout << " " << args.out << "/layout.json";
+    for (const auto& f : outputs.files) std::cout << " " << f.string();
+    std::cout << " in " << outputs.seconds << " s\n";
+    int met = 0;
+    for (size_t k = 0; k < outputs.samplers.size() && k < scene.samplers.size(); ++k)
+        met += outputs.samplers[k].value >= scene.samplers[k].targetMin && outputs.samplers[k].value <= scene.samplers[k].targetMax;
+    if (!outputs.samplers.empty())
+        std::cout << "  samplers: " << met << " of " << outputs.samplers.size() << " meet their targets\n";
+}
+
+}  // namespace
+
+void registerRenderCommand(CLI::App& app) {
+    auto args = std::make_shared<PictureArgs>();
+    auto* cmd = app.add_subcommand("render", "Render a layout: render.png, plan.png and scene.glb");
+    addPictureOptions(cmd, *args);
+    cmd->add_option("-o,--out", args->out, "Output folder")->required();
+    cmd->callback([args] { runPictures(*args, false); });
+}
+
+void registerReportCommand(CLI::App& app) {
+    auto args = std::make_shared<PictureArgs>();
+    auto* cmd = app.add_subcommand("report", "Measure a layout and write every picture, scene.glb and report.html");
+    addPictureOptions(cmd, *args);
+    cmd->add_option("-o,--out", args->out, "Output folder")->required();
+    cmd->callback([args] { runPictures(*args, true); });
+}
+
+}  // namespace luxplan::cli

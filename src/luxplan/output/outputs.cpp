@@ -1,0 +1,164 @@
+// A run's pictures, scene.glb and report.html: one ray-tracing scene, measured for
+// the final layout first, then (for the comparison) for the initial one.
+#include <luxplan/output/outputs.h>
+
+#include <chrono>
+
+#include <luxplan/constraints/geometry_cost.h>
+#include <luxplan/core/error.h>
+#include <luxplan/output/gltf_export.h>
+#include <luxplan/output/plan.h>
+#include <luxplan/output/plot.h>
+#include <luxplan/output/render.h>
+#include <luxplan/rt/embree_scene.h>
+
+namespace luxplan {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+bool sameLayout(const Layout& a, const Layout& b) {
+    if (a.placements.size() != b.placements.size()) return false;
+    for (size_t i = 0; i < a.placements.size(); ++i) {
+        const Placement &p = a.placements[i], &q = b.placements[i];
+        if (p.region != q.region || p.position != q.position || p.rotationDeg != q.rotationDeg) return false;
+    }
+    return true;
+}
+
+// The optimizer's measurements of its best layout as SamplerResults (Scene::samplers order).
+std::vector<SamplerResult> fromBreakdown(const Scene& scene, const LightingBreakdown& breakdown) {
+    std::vector<SamplerResult> out(scene.samplers.size());
+    for (const SamplerMeasurement& m : breakdown.samplers) {
+        if (m.sampler < 0 || size_t(m.sampler) >= out.size()) continue;
+        SamplerResult& r = out[size_t(m.sampler)];
+        r.value = m.value;
+        r.penalty = m.penalty;
+        r.points = m.points;
+    }
+    return out;
+}
+
+}  // namespace
+
+RunOutputs writeRunOutputs(const std::filesystem::path& folder, const Scene& scene, const Layout& initialLayout,
+                           const Layout& finalLayout, const OptimizerResult* result,
+                           const DaylightEnvironment* daylight, const OutputOptions& options) {
+    auto start = Clock::now();
+    std::error_code ec;
+    std::filesystem::create_directories(folder, ec);
+    if (ec) throw IoError("cannot create " + folder.string() + ": " + ec.message());
+
+    RunOutputs out;
+    auto lap = Clock::now();
+    auto timed = [&](const std::string& what) {
+        auto now = Clock::now();
+        out.timings.push_back({what, std::chrono::duration<double>(now - lap).count()});
+        lap = now;
+    };
+    auto wrote = [&](const std::filesystem::path& file) { out.files.push_back(file); };
+
+    bool fromResult = result && result->bestEvaluation.lightingEvaluated && sameLayout(finalLayout, result->best);
+    bool compare = options.comparison && !sameLayout(initialLayout, finalLayout);
+    const RoomShell* room = scene.room();
+    bool grids = room && (options.plan || compare);
+
+    EmbreeScene rt(scene, finalLayout);
+    PathTracer tracer(rt, daylight);
+    MeasureOptions measure;
+    measure.pathsPerPoint = options.samplerPaths;
+    measure.seed = options.seed;
+    measure.threads = options.threads;
+    auto workPlane = [&] {
+        return measureWorkPlane(tracer, room->box, options.workPlaneHeight, options.cellSize,
+                                options.cellPaths, options.seed, options.threads);
+    };
+
+    // The final layout: samplers, work plane, view, glTF.
+    PlanData finalData, initialData;
+    if (fromResult) out.samplers = fromBreakdown(scene, result->bestEvaluation.samplers);
+    else if (!scene.samplers.empty() && (options.plan || compare || options.html))
+        out.samplers = measureSamplers(tracer, measure).samplers;
+    if (!scene.samplers.empty()) finalData.samplers = out.samplers;
+    if (!fromResult && !scene.samplers.empty()) timed("samplers (" + options.finalLabel + ")");
+    if (grids) {
+        finalData.workPlane = workPlane();
+        timed("work plane (" + options.finalLabel + ")");
+    }
+    if (options.render) {
+        RenderOptions ro;
+        ro.width = options.renderWidth;
+        ro.height = options.renderHeight;
+        ro.samplesPerPixel = options.renderSamplesPerPixel;
+        ro.seed = options.seed;
+        ro.threads = options.threads;
+        writePng(renderPerspective(tracer, defaultCamera(scene), ro), folder / "render.png");
+        wrote(folder / "render.png");
+        timed("render.png");
+    }
+    if (options.glb) {
+        writeGlb(folder / "scene.glb", scene, finalLayout);
+        wrote(folder / "scene.glb");
+        timed("scene.glb");
+    }
+
+    // The initial layout, for the comparison.
+    if (compare) {
+        rt.setLayout(initialLayout);
+        tracer.updateLayout();
+        if (!scene.samplers.empty()) initialData.samplers = measureSamplers(tracer, measure).samplers;
+        if (grids) initialData.workPlane = workPlane();
+        timed("samplers and work plane (" + options.initialLabel + ")");
+    }
+
+    // Plans on one colour scale, so that the two sides compare.
+    PlanOptions plan;
+    if (grids) {
+        std::vector<double> values = finalData.workPlane->values;
+        if (initialData.workPlane) {
+            const std::vector<double>& more = initialData.workPlane->values;
+            values.insert(values.end(), more.begin(), more.end());
+        }
+        plan.maxLux = autoFalseColor(values).maxValue;
+    }
+    if (options.plan) {
+        PlanOptions titled = plan;
+        titled.title = scene.name + ": " + options.finalLabel;
+        writePng(renderPlan(scene, finalLayout, titled, finalData), folder / "plan.png");
+        wrote(folder / "plan.png");
+    }
+    if (compare) {
+        Image before = renderPlan(scene, initialLayout, plan, initialData);
+        Image after = renderPlan(scene, finalLayout, plan, finalData);
+        writePng(sideBySide(before, after, options.initialLabel, options.finalLabel),
+                 folder / "plan_initial_vs_optimized.png");
+        wrote(folder / "plan_initial_vs_optimized.png");
+    }
+    if (options.plan || compare) timed("plans");
+    if (options.convergence && result && !result->trace.empty()) {
+        writePng(plotConvergence(result->trace), folder / "convergence.png");
+        wrote(folder / "convergence.png");
+        timed("convergence.png");
+    }
+
+    if (options.html) {
+        ReportData data;
+        data.title = options.title;
+        data.layoutLabel = options.finalLabel;
+        data.samplers = out.samplers;
+        if (!result || !sameLayout(finalLayout, result->best)) {
+            GeometryEvaluator geometry(scene);
+            data.geometry = geometry.evaluate(worldTransforms(scene, finalLayout), true);
+        }
+        data.timings = out.timings;
+        double total = std::chrono::duration<double>(Clock::now() - start).count();
+        data.timings.push_back({"pictures and scene.glb, total", total});
+        writeReportHtml(folder, scene, result, data);
+        wrote(folder / "report.html");
+        timed("report.html");
+    }
+    out.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    return out;
+}
+
+}  // namespace luxplan

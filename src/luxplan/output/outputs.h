@@ -1,0 +1,55 @@
+// Everything a run leaves besides layout.json/report.json/trace.csv: the plan, the
+// start-vs-result plan comparison, a path-traced view, the convergence plot,
+// scene.glb and report.html, written into one folder.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <luxplan/daylight/environment.h>
+#include <luxplan/optimizer/optimizer.h>
+#include <luxplan/output/report_html.h>
+
+namespace luxplan {
+
+// Which outputs to write and how much light transport they may spend. The defaults
+// keep the office demo's pictures to a few seconds on two cores.
+struct OutputOptions {
+    bool plan = true;         // plan.png: work-plane illuminance, samplers by target status
+    bool comparison = true;   // plan_initial_vs_optimized.png (only when the layouts differ)
+    bool render = true;       // render.png
+    bool convergence = true;  // convergence.png (only with an optimizer result)
+    bool glb = true;          // scene.glb
+    bool html = true;         // report.html (written last; links what exists)
+    int renderWidth = 480, renderHeight = 320, renderSamplesPerPixel = 16;
+    double cellSize = 0.25;         // work-plane grid cell (m)
+    int cellPaths = 32;             // illuminance samples per cell
+    double workPlaneHeight = 0.8;   // m above the floor
+    int samplerPaths = 256;         // per sampler point, where a layout's samplers must be measured
+    int threads = 0;                // 0: all cores; no output depends on it
+    uint64_t seed = 1;
+    std::string title;              // report.html's title; empty: "luxplan: <scene name>"
+    std::string initialLabel = "initial", finalLabel = "optimized";
+};
+
+struct RunOutputs {
+    std::vector<std::filesystem::path> files;  // written, in order
+    std::vector<ReportTiming> timings;         // per step
+    std::vector<SamplerResult> samplers;       // the final layout's sampler values shown
+    double seconds = 0;
+};
+
+// Writes the outputs for `finalLayout` into `folder` (created). `initialLayout` is the
+// layout the run started from (the comparison's left side). `result` may be null (a
+// layout that was not optimized): the samplers are then measured with
+// options.samplerPaths and the constraints evaluated here. The final layout's sampler
+// values come from `result` when its lighting was evaluated. `daylight` may be null
+// (night). Throws IoError when a file cannot be written.
+RunOutputs writeRunOutputs(const std::filesystem::path& folder, const Scene& scene, const Layout& initialLayout,
+                           const Layout& finalLayout, const OptimizerResult* result,
+                           const DaylightEnvironment* daylight, const OutputOptions& options = {});
+
+}  // namespace luxplan

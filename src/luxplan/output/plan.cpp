@@ -1,0 +1,470 @@
+// The plan view (top-down picture of a layout) and the work-plane illuminance grid
+// that colours its floor.
+#include <luxplan/output/plan.h>
+
+#include <cstdio>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <luxplan/core/rng.h>
+#include <luxplan/scene/room.h>
+
+namespace luxplan {
+namespace {
+
+constexpr uint64_t kWorkPlaneTag = 0x776f726b706c616eULL;  // "workplan"
+
+constexpr Rgb kWallColor{45, 45, 50};
+constexpr Rgb kFloorColor{238, 238, 234};
+constexpr Rgb kGlassColor{150, 205, 250};
+constexpr Rgb kLuminaireColor{255, 200, 0};
+constexpr Rgb kLuminaireEdge{200, 150, 0};
+constexpr Rgb kFrontColor{25, 60, 150};
+constexpr Rgb kPassColor{0, 165, 60};
+constexpr Rgb kFailColor{220, 30, 30};
+constexpr Rgb kUnknownColor{110, 110, 110};
+constexpr Rgb kStaticColor{150, 150, 150};
+
+// World (x, y) to pixels: +y up.
+struct PlanMapping {
+    double x0 = 0, y1 = 0, scale = 1, left = 0, top = 0;
+    Vec2 operator()(double x, double y) const { return {left + (x - x0) * scale, top + (y1 - y) * scale}; }
+    Vec2 operator()(const Vec3& p) const { return (*this)(p.x, p.y); }
+};
+
+double crossZ(Vec2 o, Vec2 a, Vec2 b) { return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x); }
+
+// Andrew's monotone chain; degenerate inputs give two points (a segment) or one.
+std::vector<Vec2> convexHull(std::vector<Vec2> p) {
+    std::sort(p.begin(), p.end(), [](Vec2 a, Vec2 b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+    p.erase(std::unique(p.begin(), p.end(), [](Vec2 a, Vec2 b) { return length(a - b) < 1e-9; }), p.end());
+    if (p.size() < 3) return p;
+    std::vector<Vec2> h(2 * p.size());
+    size_t k = 0;
+    for (size_t i = 0; i < p.size(); ++i) {
+        while (k >= 2 && crossZ(h[k - 2], h[k - 1], p[i]) <= 1e-12) --k;
+        h[k++] = p[i];
+    }
+    for (size_t i = p.size() - 1, t = k + 1; i > 0; --i) {
+        while (k >= t && crossZ(h[k - 2], h[k - 1], p[i - 1]) <= 1e-12) --k;
+        h[k++] = p[i - 1];
+    }
+    h.resize(k - 1);
+    return h;
+}
+
+std::vector<Vec2> footprint(const std::vector<Vec3>& points, const PlanMapping& map) {
+    std::vector<Vec2> px;
+    for (const Vec3& p : points) px.push_back(map(p));
+    return convexHull(px);
+}
+
+std::vector<Vec3> boxCorners(const Bounds3& b, const Transform& t) {
+    std::vector<Vec3> c;
+    for (int i = 0; i < 8; ++i)
+        c.push_back(t.applyPoint({(i & 1) ? b.hi.x : b.lo.x, (i & 2) ? b.hi.y : b.lo.y, (i & 4) ? b.hi.z : b.lo.z}));
+    return c;
+}
+
+Vec2 centroid(const std::vector<Vec2>& points) {
+    Vec2 c;
+    for (Vec2 p : points) c = c + p;
+    return points.empty() ? c : c * (1.0 / double(points.size()));
+}
+
+// Linear sRGB reflectance to a display colour (gamma 1/2.2, lifted so dark materials stay visible).
+Rgb materialColor(const Material& m) {
+    Vec3 r = m.type == MaterialType::Glossy ? m.base + m.reflectance : m.reflectance;
+    auto channel = [](double v) {
+        return uint8_t(std::lround(255 * (0.25 + 0.75 * std::pow(std::clamp(v, 0.0, 1.0), 1 / 2.2))));
+    };
+    return {channel(r.x), channel(r.y), channel(r.z)};
+}
+
+Rgb darker(Rgb c, double f = 0.55) { return mix(kBlack, c, f); }
+
+void drawArrow(Image& image, Vec2 from, Vec2 to, Rgb color, double thickness) {
+    Vec2 d = to - from;
+    double len = length(d);
+    if (len < 1e-6) return;
+    Vec2 u = d * (1 / len), n{-u.y, u.x};
+    double head = std::max(6.0, 3 * thickness);
+    image.drawLine(from, to - u * (head * 0.5), color, thickness);
+    image.fillPolygon({to, to - u * head + n * (head * 0.5), to - u * head - n * (head * 0.5)}, color);
+}
+
+// The rectangle or disk outline of an emitter, in world space.
+std::vector<Vec3> emitterOutline(const Emitter& e, const Transform& world) {
+    std::vector<Vec3> pts;
+    Vec3 n = normalize(e.normal);
+    switch (e.shape) {
+        case EmitterShape::Rect: {
+            Vec3 up = normalize(e.up - n * dot(e.up, n)), side = cross(up, n);
+            for (int i = 0; i < 4; ++i) {
+                double a = (i == 0 || i == 3) ? -0.5 : 0.5, b = i < 2 ? -0.5 : 0.5;
+                pts.push_back(world.applyPoint(e.center + side * (a * e.size.x) + up * (b * e.size.y)));
+            }
+            break;
+        }
+        case EmitterShape::Disk:
+        case EmitterShape::Sphere: {
+            Frame f = e.shape == EmitterShape::Disk ? Frame::fromNormal(n) : Frame();
+            for (int i = 0; i < 32; ++i) {
+                double phi = 2 * kPi * i / 32;
+                pts.push_back(world.applyPoint(e.center + (f.s * std::cos(phi) + f.t * std::sin(phi)) * e.radius));
+            }
+            break;
+        }
+    }
+    return pts;
+}
+
+// The world-space outline points of a sampler and where its label goes.
+std::vector<Vec3> samplerOutline(const LightSamplerSpec& s, const SamplerGeometry& g, const Transform& world) {
+    std::vector<Vec3> pts;
+    switch (s.type) {
+        case LightSamplerType::Planar: {
+            Vec3 n = normalize(s.normal), up = normalize(s.up - n * dot(s.up, n)), side = cross(up, n);
+            for (int i = 0; i < 4; ++i) {
+                double a = (i == 0 || i == 3) ? -0.5 : 0.5, b = i < 2 ? -0.5 : 0.5;
+                pts.push_back(world.applyPoint(s.center + side * (a * s.size.x) + up * (b * s.size.y)));
+            }
+            break;
+        }
+        case LightSamplerType::Directional: {
+            // The frustum's four edge rays, 1 m long, and the apex.
+            const double reach = 1.0;
+            pts.push_back(g.points[0]);
+            for (int i = 0; i < 4; ++i) {
+                double a = (i & 1) ? 1 : -1, b = (i & 2) ? 1 : -1;
+                Vec3 d = normalize(g.forward + g.right * (a * g.tanHalfFov) + g.up * (b * g.tanHalfFov));
+                pts.push_back(g.points[0] + d * reach);
+            }
+            break;
+        }
+        case LightSamplerType::Volume: {
+            Vec3 corner = s.center - (s.axes[0] + s.axes[1] + s.axes[2]) * 0.5;
+            for (int i = 0; i < 8; ++i)
+                pts.push_back(world.applyPoint(corner + s.axes[0] * double(i & 1) + s.axes[1] * double((i >> 1) & 1) +
+                                               s.axes[2] * double((i >> 2) & 1)));
+            break;
+        }
+    }
+    return pts;
+}
+
+// The extent of the plan: the room, else everything with geometry.
+Bounds3 planBounds(const Scene& scene, const std::vector<Transform>& world) {
+    if (const RoomShell* room = scene.room()) return room->box;
+    Bounds3 b;
+    for (const StaticItem& item : scene.geometry)
+        if (!item.mesh.empty()) b.extend(item.mesh.bounds());
+    for (size_t i = 0; i < scene.entities.size(); ++i)
+        for (const PartInfo& part : scene.entities[i].parts) b.extend(world[i].apply(part.bounds));
+    if (b.empty()) b = Bounds3({-1, -1, 0}, {1, 1, 1});
+    return b;
+}
+
+// Greedy label placement: each label tries its anchor, then positions shifted down and
+// up by whole label heights, and takes the first that overlaps no label placed before.
+class LabelPlacer {
+public:
+    explicit LabelPlacer(Image& image) : image_(image) {}
+
+    // `anchor` is the top centre of the text. Without a free spot the label is drawn at
+    // its anchor when `force`, else left out.
+    void place(Vec2 anchor, const std::string& text, Rgb color, double backgroundAlpha, bool force) {
+        const double w = textWidth(text), h = textHeight(text), step = h + 5;
+        for (int k = 0; k < 9; ++k) {
+            double dy = (k + 1) / 2 * step * (k % 2 ? 1 : -1);
+            Box b{anchor.x - w / 2 - 2, anchor.y + dy - 2, anchor.x + w / 2 + 2, anchor.y + dy + h + 2};
+            if (b.x0 < 0 || b.y0 < 0 || b.x1 > image_.width() || b.y1 > image_.height() || overlaps(b)) continue;
+            draw(b, {anchor.x, anchor.y + dy}, text, color, backgroundAlpha);
+            return;
+        }
+        if (force) {
+            Box b{anchor.x - w / 2 - 2, anchor.y - 2, anchor.x + w / 2 + 2, anchor.y + h + 2};
+            draw(b, anchor, text, color, backgroundAlpha);
+        }
+    }
+
+private:
+    struct Box {
+        double x0, y0, x1, y1;
+    };
+    bool overlaps(const Box& b) const {
+        for (const Box& o : boxes_)
+            if (b.x0 < o.x1 && o.x0 < b.x1 && b.y0 < o.y1 && o.y0 < b.y1) return true;
+        return false;
+    }
+    void draw(const Box& b, Vec2 at, const std::string& text, Rgb color, double backgroundAlpha) {
+        boxes_.push_back(b);
+        image_.drawLabel(at.x, at.y, text, color, kWhite, 1, TextAlign::Center, backgroundAlpha);
+    }
+
+    Image& image_;
+    std::vector<Box> boxes_;
+};
+
+void drawScaleBar(Image& image, const PlanMapping& map, Vec2 at, double roomWidth) {
+    double metres = 1;
+    for (double m : {0.5, 1.0, 2.0, 5.0, 10.0, 20.0, 50.0})
+        if (m <= roomWidth / 3) metres = m;
+    double px = metres * map.scale;
+    for (int i = 0; i < 2; ++i) {
+        double x0 = at.x + px * i / 2, x1 = at.x + px * (i + 1) / 2;
+        image.fillRect(x0, at.y, x1, at.y + 6, i == 0 ? kBlack : kWhite);
+    }
+    image.drawRect(at.x, at.y, at.x + px, at.y + 6, kBlack, 1);
+    image.drawText(at.x, at.y + 10, "0", kBlack, 1, TextAlign::Center);
+    char label[32];
+    std::snprintf(label, sizeof label, "%g m", metres);
+    image.drawText(at.x + px, at.y + 10, label, kBlack, 1, TextAlign::Center);
+}
+
+void drawNorthArrow(Image& image, Vec2 center, double northDeg) {
+    // True north in scene coordinates: azimuth 0 (see horizonToScene), then +y up on screen.
+    double a = radians(northDeg);
+    Vec2 dir{-std::sin(a), -std::cos(a)};  // pixel space
+    const double r = 16;
+    image.drawCircle(center, r, kBlack, 1);
+    drawArrow(image, center - dir * (r - 3), center + dir * (r - 3), kBlack, 2);
+    Vec2 label = center + dir * (r + 9);
+    image.drawText(label.x, label.y - 3, "N", kBlack, 1, TextAlign::Center);
+}
+
+}  // namespace
+
+IlluminanceGrid measureWorkPlane(const PathTracer& tracer, const Bounds3& room, double height, double cellSize,
+                                 int paths, uint64_t seed, int threads) {
+    IlluminanceGrid grid;
+    grid.cellSize = cellSize > 0 ? cellSize : 0.25;
+    grid.height = room.lo.z + height;
+    Vec3 size = room.size();
+    grid.nx = std::max(1, int(std::ceil(size.x / grid.cellSize - 1e-9)));
+    grid.ny = std::max(1, int(std::ceil(size.y / grid.cellSize - 1e-9)));
+    // Centred on the room: the edge cells overhang the walls by less than half a cell,
+    // so every cell centre is inside.
+    grid.origin = {room.lo.x - (grid.nx * grid.cellSize - size.x) / 2,
+                   room.lo.y - (grid.ny * grid.cellSize - size.y) / 2};
+    const size_t cells = size_t(grid.nx) * size_t(grid.ny);
+    grid.values.assign(cells, 0.0);
+    grid.errors.assign(cells, 0.0);
+    paths = std::max(1, paths);
+    const Vec3 up{0, 0, 1};
+
+    auto measureCell = [&](size_t cell) {
+        Vec3 p = grid.cellCenter(int(cell % size_t(grid.nx)), int(cell / size_t(grid.nx)));
+        RayStats stats;
+        double sum = 0, sumSq = 0;
+        for (int path = 0; path < paths; ++path) {
+            Rng rng(hashValues({seed, kWorkPlaneTag, uint64_t(cell), uint64_t(path)}));
+            double x = tracer.illuminanceSample(p, up, rng, stats);
+            if (!std::isfinite(x)) x = 0;
+            sum += x;
+            sumSq += x * x;
+        }
+        double mean = sum / paths;
+        double variance = std::max(0.0, sumSq / paths - mean * mean) * paths / std::max(1, paths - 1);
+        grid.values[cell] = mean;
+        grid.errors[cell] = std::sqrt(variance / paths);
+    };
+    auto run = [&] {
+        tbb::parallel_for(tbb::blocked_range<size_t>(0, cells, 4), [&](const tbb::blocked_range<size_t>& r) {
+            for (size_t i = r.begin(); i != r.end(); ++i) measureCell(i);
+        });
+    };
+    if (threads > 0) tbb::task_arena(threads).execute(run);
+    else run();
+    return grid;
+}
+
+Image renderPlan(const Scene& scene, const Layout& layout, const PlanOptions& options, const PlanData& data) {
+    const std::vector<Transform> world = worldTransforms(scene, layout);
+    const Bounds3 bounds = planBounds(scene, world);
+    const RoomShell* room = scene.room();
+    const double s = options.pixelsPerMetre > 0 ? options.pixelsPerMetre : 80;
+    const int margin = std::max(40, options.margin);
+    const int titleHeight = options.title.empty() ? 0 : 24;
+    const bool hasMap = data.workPlane && !data.workPlane->values.empty();
+    const int legendWidth = hasMap ? 110 : 0;
+    const Vec3 size = bounds.size();
+    const int planW = int(std::ceil(size.x * s)), planH = int(std::ceil(size.y * s));
+
+    Image image(planW + 2 * margin + legendWidth, planH + 2 * margin + titleHeight + 10, kWhite);
+    PlanMapping map{bounds.lo.x, bounds.hi.y, s, double(margin), double(margin + titleHeight)};
+    // The plan area's top-left and bottom-right corners in pixels.
+    const Vec2 roomLo = map(bounds.lo.x, bounds.hi.y), roomHi = map(bounds.hi.x, bounds.lo.y);
+    const double wall = std::max(4.0, 0.12 * s);
+
+    if (!options.title.empty()) image.drawText(margin, 8, options.title, kBlack, 2);
+
+    // Walls as a dark band around the floor, then the floor.
+    if (room) image.fillRect(roomLo.x - wall, roomLo.y - wall, roomHi.x + wall, roomHi.y + wall, kWallColor);
+    image.fillRect(roomLo.x, roomLo.y, roomHi.x, roomHi.y, kFloorColor);
+
+    // Work-plane illuminance, clipped to the plan area.
+    FalseColor falseColor;
+    if (hasMap) {
+        const IlluminanceGrid& g = *data.workPlane;
+        falseColor = autoFalseColor(g.values, options.scale);
+        if (options.maxLux && *options.maxLux > 0) falseColor.maxValue = *options.maxLux;
+        for (int j = 0; j < g.ny; ++j)
+            for (int i = 0; i < g.nx; ++i) {
+                double x0 = std::max(bounds.lo.x, g.origin.x + i * g.cellSize);
+                double x1 = std::min(bounds.hi.x, g.origin.x + (i + 1) * g.cellSize);
+                double y0 = std::max(bounds.lo.y, g.origin.y + j * g.cellSize);
+                double y1 = std::min(bounds.hi.y, g.origin.y + (j + 1) * g.cellSize);
+                if (x1 <= x0 || y1 <= y0) continue;
+                Vec2 a = map(x0, y1), b = map(x1, y0);
+                image.fillRect(a.x, a.y, b.x, b.y, falseColor.color(g.at(i, j)));
+            }
+    }
+
+    // Openings: glazed ones light blue across the wall band, open ones a gap.
+    if (room) {
+        for (const Opening& o : room->openings) {
+            WallFrame f = wallFrame(room->box, o.wall);
+            auto r = openingRect(room->box, o);
+            if (o.wall == Wall::Ceiling) {
+                std::vector<Vec3> corners{f.origin + f.u * r[0] + f.v * r[1], f.origin + f.u * r[2] + f.v * r[1],
+                                          f.origin + f.u * r[2] + f.v * r[3], f.origin + f.u * r[0] + f.v * r[3]};
+                auto poly = footprint(corners, map);
+                image.fillPolygon(poly, kGlassColor, o.material ? 0.35 : 0.15);
+                image.drawPolygon(poly, darker(kGlassColor, 0.7), 2);
+                continue;
+            }
+            Vec2 a = map(f.origin + f.u * r[0]), b = map(f.origin + f.u * r[2]);
+            Vec2 out{-f.inward.x, f.inward.y};  // pixel space (y flipped)
+            std::vector<Vec2> band{a - out * 0.5, b - out * 0.5, b + out * (wall + 0.5), a + out * (wall + 0.5)};
+            if (o.material) {
+                image.fillPolygon(band, kGlassColor);
+                image.drawLine(a + out * (wall / 2), b + out * (wall / 2), darker(kGlassColor, 0.6), 1.5);
+            } else {
+                image.fillPolygon(band, kWhite);
+                image.drawLine(a, a + out * wall, kWallColor, 1);
+                image.drawLine(b, b + out * wall, kWallColor, 1);
+            }
+        }
+    }
+
+    struct Label {
+        Vec2 at;
+        std::string text;
+    };
+    std::vector<Label> staticLabels;
+
+    // Fixed objects (boxes, meshes, blockers).
+    for (const StaticItem& item : scene.geometry) {
+        if (item.kind == StaticKind::Room || item.mesh.empty()) continue;
+        Bounds3 b = item.mesh.bounds();
+        auto poly = footprint(boxCorners(b, Transform()), map);
+        if (item.invisible) {
+            image.drawPolygon(poly, kStaticColor, 1);
+        } else {
+            image.fillPolygon(poly, kStaticColor, 0.45);
+            image.drawPolygon(poly, darker(kStaticColor), 1.5);
+        }
+        if (options.entityLabels) staticLabels.push_back({centroid(poly) - Vec2(0, 3), item.name});
+    }
+
+    // Furniture footprints: the union of the parts' projected boxes, filled once.
+    std::vector<Label> entityLabels;
+    for (size_t e = 0; e < scene.entities.size(); ++e) {
+        const Entity& entity = scene.entities[e];
+        if (entity.parts.empty()) continue;
+        std::vector<std::vector<Vec2>> parts;
+        std::vector<Vec2> all;
+        for (const PartInfo& part : entity.parts) {
+            parts.push_back(footprint(boxCorners(part.bounds, world[e]), map));
+            all.insert(all.end(), parts.back().begin(), parts.back().end());
+        }
+        Rgb color = materialColor(scene.materials.at(entity.parts.front().material));
+        Image mask(image.width(), image.height(), kBlack);
+        for (const auto& poly : parts) mask.fillPolygon(poly, kWhite);
+        for (int y = 0; y < image.height(); ++y)
+            for (int x = 0; x < image.width(); ++x)
+                if (mask.at(x, y).r) image.blendPixel(x, y, color, 0.6);
+        for (const auto& poly : parts) image.drawPolygon(poly, darker(color, 0.45), 1.5);
+
+        // Fronts: arrows from the footprint centre, half its size long.
+        Vec2 c = centroid(convexHull(all));
+        Bounds3 pixelBox;
+        for (Vec2 p : all) pixelBox.extend(Vec3(p.x, p.y, 0));
+        double reach = std::max(12.0, 0.5 * std::min(pixelBox.size().x, pixelBox.size().y));
+        for (Vec2 front : entity.fronts) {
+            Vec3 d = world[e].applyVector(Vec3(front.x, front.y, 0));
+            double len = std::hypot(d.x, d.y);
+            if (len < 1e-9) continue;
+            Vec2 dir{d.x / len, -d.y / len};
+            drawArrow(image, c, c + dir * reach, kFrontColor, 2);
+        }
+        if (options.entityLabels) entityLabels.push_back({c - Vec2(0, 4), entity.name});
+    }
+
+    // Luminaires.
+    for (const Emitter& emitter : scene.emitters) {
+        Transform t = emitter.entity >= 0 ? world[size_t(emitter.entity)] : Transform();
+        auto poly = footprint(emitterOutline(emitter, t), map);
+        image.fillPolygon(poly, kLuminaireColor, 0.35);
+        image.drawPolygon(poly, kLuminaireEdge, 2);
+    }
+
+    // Light samplers, green when they meet their target.
+    std::vector<Label> samplerLabels;
+    std::vector<Rgb> samplerColors;
+    for (size_t k = 0; k < scene.samplers.size(); ++k) {
+        const LightSamplerSpec& spec = scene.samplers[k];
+        Transform t = spec.entity >= 0 ? world[size_t(spec.entity)] : Transform();
+        SamplerGeometry g = samplerGeometry(spec, t);
+        Rgb color = kUnknownColor;
+        std::string text = spec.name;
+        if (data.samplers && k < data.samplers->size()) {
+            double v = (*data.samplers)[k].value;
+            color = v >= spec.targetMin && v <= spec.targetMax ? kPassColor : kFailColor;
+            text.append(" ").append(formatValue(std::round(v * 10) / 10)).append(" ").append(spec.unit());
+        }
+        auto poly = footprint(samplerOutline(spec, g, t), map);
+        switch (spec.type) {
+            case LightSamplerType::Planar:
+                image.drawPolygon(poly, color, 2.5);
+                for (const Vec3& p : g.points) image.fillCircle(map(p), 2, color);
+                break;
+            case LightSamplerType::Directional:
+                image.fillPolygon(poly, color, 0.12);
+                image.drawPolygon(poly, color, 1.5);
+                image.fillCircle(map(g.points[0]), 4, color);
+                break;
+            case LightSamplerType::Volume:
+                image.fillPolygon(poly, color, 0.15);
+                image.drawPolygon(poly, color, 2);
+                break;
+        }
+        Vec2 c = spec.type == LightSamplerType::Directional ? map(g.points[0]) : centroid(poly);
+        if (options.samplerLabels) samplerLabels.push_back({c + Vec2(0, 8), text}), samplerColors.push_back(color);
+    }
+
+    // Labels last, so nothing covers them: sampler results always, names where they fit.
+    LabelPlacer labels(image);
+    for (size_t i = 0; i < samplerLabels.size(); ++i)
+        labels.place(samplerLabels[i].at, samplerLabels[i].text, darker(samplerColors[i], 0.7), 0.85, true);
+    for (const Label& l : entityLabels) labels.place(l.at, l.text, kBlack, 0.7, false);
+    for (const Label& l : staticLabels) labels.place(l.at, l.text, darker(kStaticColor, 0.4), 0.5, false);
+
+    // Scale bar under the plan, north arrow in the top-right margin.
+    drawScaleBar(image, map, {roomLo.x, roomHi.y + wall + 12}, size.x);
+    drawNorthArrow(image, {roomHi.x + margin / 2.0, roomLo.y - margin / 2.0 + 6}, scene.site.northDeg);
+
+    if (hasMap) {
+        int lx = int(roomHi.x + wall + 28), ly = int(roomLo.y + 30);
+        int lh = std::min(300, std::max(60, int(roomHi.y - roomLo.y) - 30));
+        char unit[48];
+        std::snprintf(unit, sizeof unit, "lx at %.2g m", data.workPlane->height - bounds.lo.z);
+        drawLegend(image, falseColor, lx, ly, 16, lh, unit);
+    }
+    return image;
+}
+
+}  // namespace luxplan

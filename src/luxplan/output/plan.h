@@ -1,0 +1,66 @@
+// The plan view: the room from above with walls, openings, luminaires, furniture
+// footprints and fronts, the light samplers coloured by whether they meet their
+// targets, and a false-colour map of work-plane illuminance underneath.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <luxplan/lightsamplers/light_samplers.h>
+#include <luxplan/output/false_color.h>
+#include <luxplan/output/image.h>
+#include <luxplan/scene/layout.h>
+
+namespace luxplan {
+
+// Horizontal illuminance (lx, upward hemisphere) at the centres of nx x ny square cells
+// at world height `height`; values row-major, x fastest, row 0 at the lowest y.
+struct IlluminanceGrid {
+    Vec2 origin;  // (x, y) of the corner of cell (0, 0)
+    double cellSize = 0.25;
+    double height = 0.8;  // world z of the cell centres
+    int nx = 0, ny = 0;
+    std::vector<double> values;
+    std::vector<double> errors;  // standard error of each value
+
+    double at(int i, int j) const { return values[size_t(j) * size_t(nx) + size_t(i)]; }
+    Vec3 cellCenter(int i, int j) const {
+        return {origin.x + (i + 0.5) * cellSize, origin.y + (j + 0.5) * cellSize, height};
+    }
+};
+
+// Measures the grid at `height` metres above the room's floor (room.lo.z + height) with
+// `paths` illuminance samples per cell, each seeded from (seed, tag, cell, path): results
+// do not depend on `threads` (0: all cores). The nx = ceil(width / cellSize) by ny columns
+// and rows of square cells are centred on the room, so the edge cells overhang the walls by
+// less than half a cell and every cell centre is inside. A centre inside furniture reads
+// whatever the tracer finds there (usually about 0).
+IlluminanceGrid measureWorkPlane(const PathTracer& tracer, const Bounds3& room, double height = 0.8,
+                                 double cellSize = 0.25, int paths = 64, uint64_t seed = 1, int threads = 0);
+
+struct PlanOptions {
+    double pixelsPerMetre = 80;
+    int margin = 50;            // pixels around the room
+    std::string title;          // drawn at the top when not empty
+    bool entityLabels = true;
+    bool samplerLabels = true;
+    ColorScale scale = ColorScale::Linear;
+    std::optional<double> maxLux;  // the false-colour maximum; default: autoFalseColor
+};
+
+// What was measured for the layout (all optional).
+struct PlanData {
+    std::optional<std::vector<SamplerResult>> samplers;  // measureSamplers(...).samplers
+    std::optional<IlluminanceGrid> workPlane;
+};
+
+// The plan at PlanOptions::pixelsPerMetre, +y up, with a scale bar, a north arrow
+// (Site::northDeg) and, when a work-plane grid is given, its legend on the right.
+// Samplers are green when their value is in [targetMin, targetMax], red otherwise, grey
+// when no results are given.
+Image renderPlan(const Scene& scene, const Layout& layout, const PlanOptions& options = {},
+                 const PlanData& data = {});
+
+}  // namespace luxplan

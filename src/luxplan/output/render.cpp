@@ -1,0 +1,149 @@
+// Perspective pictures from the photometric path tracer: a pinhole camera, jittered
+// pixel samples, automatic exposure and a Reinhard tone curve to grey sRGB.
+#include <luxplan/output/render.h>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <luxplan/core/rng.h>
+#include <luxplan/scene/layout.h>
+#include <luxplan/scene/room.h>
+
+namespace luxplan {
+namespace {
+
+constexpr uint64_t kRenderTag = 0x72656e646572ULL;  // "render"
+constexpr double kKey = 0.18;
+constexpr double kWhitePoint = 1.5;
+
+double srgbEncode(double c) {
+    c = std::clamp(c, 0.0, 1.0);
+    return c <= 0.0031308 ? 12.92 * c : 1.055 * std::pow(c, 1 / 2.4) - 0.055;
+}
+
+// Glazed area of the openings in one wall.
+double glazedArea(const RoomShell& room, Wall wall) {
+    double area = 0;
+    for (const Opening& o : room.openings)
+        if (o.wall == wall && o.material) area += o.width * o.height;
+    return area;
+}
+
+}  // namespace
+
+Camera defaultCamera(const Scene& scene) {
+    Camera camera;
+    camera.fovDeg = 65;
+    if (const RoomShell* room = scene.room()) {
+        // In the corner between the two walls with the most glass, so that the view
+        // looks away from the windows into the daylit room.
+        const Bounds3& b = room->box;
+        bool south = glazedArea(*room, Wall::South) >= glazedArea(*room, Wall::North);
+        bool west = glazedArea(*room, Wall::West) >= glazedArea(*room, Wall::East);
+        const double inset = 0.25;
+        Vec3 size = b.size();
+        double height = std::max(std::min(2.0, size.z - 0.2), 0.5 * size.z);
+        camera.position = {west ? b.lo.x + inset : b.hi.x - inset, south ? b.lo.y + inset : b.hi.y - inset,
+                           b.lo.z + height};
+        camera.lookAt = {west ? b.hi.x : b.lo.x, south ? b.hi.y : b.lo.y, b.lo.z + 0.3 * size.z};
+        return camera;
+    }
+    // No room: from above one corner of everything, looking at its centre.
+    Bounds3 b;
+    for (const StaticItem& item : scene.geometry)
+        if (!item.mesh.empty()) b.extend(item.mesh.bounds());
+    std::vector<Transform> world = worldTransforms(scene, initialLayout(scene));
+    for (size_t i = 0; i < scene.entities.size(); ++i)
+        for (const PartInfo& part : scene.entities[i].parts) b.extend(world[i].apply(part.bounds));
+    if (b.empty()) b = Bounds3({-1, -1, 0}, {1, 1, 1});
+    Vec3 size = b.size();
+    double reach = std::max({size.x, size.y, size.z, 1.0});
+    camera.position = {b.lo.x - 0.6 * reach, b.lo.y - 0.6 * reach, b.hi.z + 0.6 * reach};
+    camera.lookAt = b.center();
+    return camera;
+}
+
+LuminanceImage renderLuminance(const PathTracer& tracer, const Camera& camera, const RenderOptions& options) {
+    LuminanceImage out;
+    out.width = std::max(1, options.width);
+    out.height = std::max(1, options.height);
+    out.values.assign(size_t(out.width) * size_t(out.height), 0.0);
+    const int spp = std::max(1, options.samplesPerPixel);
+
+    Vec3 forward = normalize(camera.lookAt - camera.position);
+    Vec3 right = cross(forward, camera.up);
+    if (length(right) < 1e-9) right = cross(forward, std::abs(forward.x) < 0.9 ? Vec3(1, 0, 0) : Vec3(0, 1, 0));
+    right = normalize(right);
+    Vec3 up = cross(right, forward);
+    const double tanHalf = std::tan(radians(std::clamp(camera.fovDeg, 1.0, 179.0)) / 2);
+    const double aspect = double(out.width) / out.height;
+
+    auto renderRows = [&](const tbb::blocked_range<int>& rows) {
+        RayStats stats;
+        for (int y = rows.begin(); y != rows.end(); ++y)
+            for (int x = 0; x < out.width; ++x) {
+                const uint64_t pixel = uint64_t(y) * uint64_t(out.width) + uint64_t(x);
+                double sum = 0;
+                for (int k = 0; k < spp; ++k) {
+                    Rng rng(hashValues({options.seed, kRenderTag, pixel, uint64_t(k)}));
+                    double u = rng.uniform(), v = rng.uniform();
+                    double sx = (2 * (x + u) / out.width - 1) * tanHalf * aspect;
+                    double sy = (1 - 2 * (y + v) / out.height) * tanHalf;
+                    Ray ray{camera.position, normalize(forward + right * sx + up * sy)};
+                    double L = tracer.radianceSample(ray, rng, stats);
+                    if (std::isfinite(L) && L > 0) sum += L;
+                }
+                out.values[pixel] = sum / spp;
+            }
+    };
+    auto run = [&] { tbb::parallel_for(tbb::blocked_range<int>(0, out.height, 1), renderRows); };
+    if (options.threads > 0) tbb::task_arena(options.threads).execute(run);
+    else run();
+    return out;
+}
+
+double autoExposure(const LuminanceImage& image) {
+    if (image.values.empty()) return 1;
+    const double delta = 1e-4;  // keeps black pixels from dominating the log average
+    double sumLog = 0, peak = 0;
+    for (double L : image.values) {
+        sumLog += std::log(delta + std::max(0.0, L));
+        peak = std::max(peak, L);
+    }
+    if (!(peak > 0)) return 1;
+    double logAverage = std::exp(sumLog / double(image.values.size()));
+    return kKey / std::max(logAverage, delta);
+}
+
+Image toneMap(const LuminanceImage& image, double exposure) {
+    Image out(image.width, image.height, kBlack);
+    const double w2 = kWhitePoint * kWhitePoint;
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) {
+            double L = exposure * std::max(0.0, image.values[size_t(y) * size_t(image.width) + size_t(x)]);
+            double d = L * (1 + L / w2) / (1 + L);
+            auto c = uint8_t(std::lround(255 * srgbEncode(d)));
+            out.at(x, y) = {c, c, c};
+        }
+    return out;
+}
+
+Image renderPerspective(const PathTracer& tracer, const Camera& camera, const RenderOptions& options) {
+    LuminanceImage luminance = renderLuminance(tracer, camera, options);
+    double exposure = options.exposure > 0 ? options.exposure : autoExposure(luminance);
+    return toneMap(luminance, exposure);
+}
+
+Image sideBySide(const Image& a, const Image& b, const std::string& labelA, const std::string& labelB) {
+    const int pad = 10, scale = 2;
+    const int labelHeight = std::max(textHeight(labelA, scale), textHeight(labelB, scale)) + pad;
+    Image out(a.width() + b.width() + 3 * pad, std::max(a.height(), b.height()) + labelHeight + 2 * pad, kWhite);
+    out.drawText(pad + a.width() / 2.0, pad, labelA, kBlack, scale, TextAlign::Center);
+    out.drawText(2 * pad + a.width() + b.width() / 2.0, pad, labelB, kBlack, scale, TextAlign::Center);
+    out.blit(a, pad, pad + labelHeight);
+    out.blit(b, 2 * pad + a.width(), pad + labelHeight);
+    return out;
+}
+
+}  // namespace luxplan

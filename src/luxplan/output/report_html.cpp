@@ -1,0 +1,314 @@
+// report.html: the run summary as one static page; every value is escaped, every
+// link is relative to the page and only made to files that exist.
+#include <luxplan/output/report_html.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+#include <luxplan/core/error.h>
+#include <luxplan/scene/layout.h>
+
+namespace luxplan {
+namespace {
+
+constexpr const char* kStyle = R"(
+body { font-family: system-ui, -apple-system, "Segoe UI", Helvetica, Arial, sans-serif; margin: 2em auto;
+       max-width: 1200px; padding: 0 1em; color: #222; background: #fff; line-height: 1.4; }
+h1 { font-size: 1.6em; margin-bottom: 0.2em; }
+h2 { font-size: 1.25em; border-bottom: 1px solid #ddd; padding-bottom: 0.2em; margin-top: 1.8em; }
+table { border-collapse: collapse; margin: 0.5em 0; font-size: 0.92em; }
+th, td { border: 1px solid #ddd; padding: 0.25em 0.6em; text-align: left; vertical-align: top; }
+th { background: #f4f4f4; }
+td.num { text-align: right; font-variant-numeric: tabular-nums; }
+.met { background: #dff3df; color: #15591a; font-weight: bold; }
+.missed { background: #fbe0e0; color: #8a1414; font-weight: bold; }
+.warn { background: #fff1cc; color: #7a5800; font-weight: bold; }
+.muted { color: #777; }
+figure { margin: 1em 0; }
+figure img { max-width: 100%; height: auto; border: 1px solid #ddd; image-rendering: auto; }
+figcaption { color: #555; font-size: 0.9em; }
+dl.summary { display: grid; grid-template-columns: max-content auto; gap: 0.15em 1.2em; }
+dl.summary dt { font-weight: bold; }
+dl.summary dd { margin: 0; }
+footer { margin-top: 3em; color: #888; font-size: 0.85em; }
+)";
+
+// Captions of kReportImages, in its order.
+constexpr const char* kImageCaptions[] = {
+    "Plan: work-plane illuminance in false colour; light samplers green where they meet their target, red where "
+    "they miss it.",
+    "The start layout and the shown layout side by side (same colour scale).",
+    "Path-traced view (luminance, tone mapped).",
+    "Convergence: current cost (grey) and best cost so far (blue) per iteration."};
+static_assert(std::size(kImageCaptions) == std::size(kReportImages));
+
+// Notes on kReportFiles, in its order.
+constexpr const char* kFileNotes[] = {"the scene under the layout, binary glTF 2.0 (Blender: File > Import > glTF)",
+                                      "the layout (SCENE-FORMAT.md)", "costs, samplers, constraints and moves as JSON",
+                                      "iteration, current and best cost"};
+static_assert(std::size(kFileNotes) == std::size(kReportFiles));
+
+std::string number(double v, int digits) {
+    if (std::isnan(v)) return "&ndash;";
+    if (std::isinf(v)) return v > 0 ? "&infin;" : "&minus;&infin;";
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.*f", digits, v);
+    return buf;
+}
+
+std::string range(double lo, double hi, int digits) {
+    std::string s = "[";
+    s += number(lo, digits);
+    s += ", ";
+    s += number(hi, digits);
+    s += "]";
+    return s;
+}
+
+std::string cell(const std::string& html, const char* cls = nullptr) {
+    return cls ? std::string("<td class=\"") + cls + "\">" + html + "</td>" : "<td>" + html + "</td>";
+}
+
+std::string entityName(const Scene& scene, int e) {
+    if (e == kRoomEntity) return "room";
+    if (e < 0 || size_t(e) >= scene.entities.size()) return "?";
+    return scene.entities[size_t(e)].path;
+}
+
+std::string overlapTarget(const Scene& scene, const PenaltyTerm& t) {
+    switch (t.target) {
+        case OverlapTarget::Entity: return entityName(scene, t.b);
+        case OverlapTarget::Static:
+            return t.b >= 0 && size_t(t.b) < scene.geometry.size() ? scene.geometry[size_t(t.b)].name : "?";
+        case OverlapTarget::Walls: return "walls";
+    }
+    return "?";
+}
+
+void summary(std::ostringstream& out, const Scene& scene, const ReportData& data) {
+    out << "<h2>Scene</h2>\n<dl class=\"summary\">\n";
+    auto item = [&](const std::string& key, const std::string& valueHtml) {
+        out << "<dt>" << escapeHtml(key) << "</dt><dd>" << valueHtml << "</dd>\n";
+    };
+    item("name", escapeHtml(scene.name));
+    if (!scene.file.empty()) item("file", escapeHtml(scene.file.string()));
+    if (const RoomShell* room = scene.room()) {
+        Vec3 s = room->box.size();
+        item("room", number(s.x, 2) + " &times; " + number(s.y, 2) + " &times; " + number(s.z, 2) + " m, " +
+                         std::to_string(room->openings.size()) + " openings");
+    }
+    size_t fixed = 0, movable = 0;
+    for (const Emitter& e : scene.emitters) fixed += e.entity < 0;
+    for (const Entity& e : scene.entities) movable += e.movable();
+    item("luminaires", std::to_string(fixed) + " fixed, " + std::to_string(scene.emitters.size() - fixed) + " on entities");
+    item("entities", std::to_string(scene.entities.size()) + " (" + std::to_string(movable) + " movable)");
+    item("samplers", std::to_string(scene.samplers.size()));
+    item("constraints", std::to_string(scene.constraints.size()));
+    if (scene.daylight) {
+        std::string when = scene.daylight->from ? scene.daylight->from->str() : "";
+        if (scene.daylight->to) when += " to " + scene.daylight->to->str();
+        item("daylight", escapeHtml(std::string(skyModelName(scene.daylight->model)) + " sky" +
+                                    (when.empty() ? "" : ", " + when)));
+    } else {
+        item("daylight", "none (night)");
+    }
+    item("lighting weight", number(scene.objective.lightingWeight, 2));
+    if (!data.layoutLabel.empty()) item("layout shown", escapeHtml(data.layoutLabel));
+    out << "</dl>\n";
+}
+
+void optimizerSummary(std::ostringstream& out, const OptimizerResult& r) {
+    out << "<h2>Optimization</h2>\n<table>\n<tr><th></th><th>C</th><th>L</th><th>G</th><th>feasible</th></tr>\n";
+    auto row = [&](const char* name, const Evaluation& e, bool feasible) {
+        out << "<tr><th>" << name << "</th>" << cell(number(e.cost, 4), nullptr) << cell(number(e.lighting, 4))
+            << cell(number(e.geometry, 4)) << cell(feasible ? "yes" : "no", feasible ? "met" : "missed") << "</tr>\n";
+    };
+    row("start", r.startEvaluation, r.startFeasible);
+    row("best", r.bestEvaluation, r.feasible);
+    out << "</table>\n<p>" << r.iterations << " iterations in " << number(r.seconds, 1) << " s, stopped by "
+        << escapeHtml(stopReasonName(r.stop)) << "; best found at iteration " << r.bestIteration << "; seed "
+        << r.options.seed << ", " << (r.options.hierarchy == Hierarchy::Flat ? "flat" : "hierarchical") << ".";
+    if (r.bestEvaluation.rejected) out << " Rejected by " << escapeHtml(r.bestEvaluation.rejectedBy) << ".";
+    out << "</p>\n";
+}
+
+void pictures(std::ostringstream& out, const std::filesystem::path& folder) {
+    std::ostringstream figs;
+    for (size_t i = 0; i < std::size(kReportImages); ++i) {
+        const char* file = kReportImages[i];
+        if (!std::filesystem::is_regular_file(folder / file)) continue;
+        figs << "<figure><a href=\"" << escapeHtml(file) << "\"><img src=\"" << escapeHtml(file) << "\" alt=\""
+             << escapeHtml(kImageCaptions[i]) << "\"></a><figcaption>" << escapeHtml(kImageCaptions[i])
+             << "</figcaption></figure>\n";
+    }
+    if (!figs.str().empty()) out << "<h2>Pictures</h2>\n" << figs.str();
+    std::ostringstream files;
+    for (size_t i = 0; i < std::size(kReportFiles); ++i) {
+        if (!std::filesystem::is_regular_file(folder / kReportFiles[i])) continue;
+        files << "<li><a href=\"" << escapeHtml(kReportFiles[i]) << "\">" << escapeHtml(kReportFiles[i]) << "</a>: "
+              << escapeHtml(kFileNotes[i]) << "</li>\n";
+    }
+    if (!files.str().empty()) out << "<h2>Files</h2>\n<ul>\n" << files.str() << "</ul>\n";
+}
+
+void samplerTable(std::ostringstream& out, const Scene& scene, const std::vector<SamplerResult>& measured,
+                  const OptimizerResult* result) {
+    if (scene.samplers.empty()) return;
+    // value, penalty and whether it was measured, per scene sampler.
+    struct Row { double value = 0, penalty = 0; bool known = false; };
+    std::vector<Row> rows(scene.samplers.size());
+    if (!measured.empty()) {
+        for (size_t k = 0; k < rows.size() && k < measured.size(); ++k) rows[k] = {measured[k].value, measured[k].penalty, true};
+    } else if (result && result->bestEvaluation.lightingEvaluated) {
+        for (const SamplerMeasurement& m : result->bestEvaluation.samplers.samplers)
+            if (m.sampler >= 0 && size_t(m.sampler) < rows.size()) rows[size_t(m.sampler)] = {m.value, m.penalty, true};
+    }
+    int met = 0, known = 0;
+    for (size_t k = 0; k < rows.size(); ++k) {
+        if (!rows[k].known) continue;
+        ++known;
+        met += rows[k].value >= scene.samplers[k].targetMin && rows[k].value <= scene.samplers[k].targetMax;
+    }
+    out << "<h2>Light samplers</h2>\n";
+    if (known) out << "<p>" << met << " of " << known << " samplers meet their targets.</p>\n";
+    else out << "<p class=\"muted\">Not measured (the lighting term was not evaluated).</p>\n";
+    out << "<table>\n<tr><th>name</th><th>type</th><th>entity</th><th>value</th><th>unit</th><th>target</th>"
+           "<th>tolerance</th><th>penalty</th><th>status</th></tr>\n";
+    for (size_t k = 0; k < rows.size(); ++k) {
+        const LightSamplerSpec& s = scene.samplers[k];
+        out << "<tr>" << cell(escapeHtml(s.name)) << cell(escapeHtml(samplerTypeName(s.type)))
+            << cell(s.entity >= 0 ? escapeHtml(entityName(scene, s.entity)) : "<span class=\"muted\">fixed</span>");
+        if (rows[k].known) {
+            bool ok = rows[k].value >= s.targetMin && rows[k].value <= s.targetMax;
+            out << "<td class=\"num\">" << number(rows[k].value, 1) << "</td>" << cell(escapeHtml(s.unit()))
+                << cell(range(s.targetMin, s.targetMax, 0)) << "<td class=\"num\">" << number(s.tolerance, 1) << "</td>"
+                << "<td class=\"num\">" << number(rows[k].penalty, 3) << "</td>" << cell(ok ? "met" : "missed", ok ? "met" : "missed");
+        } else {
+            out << "<td class=\"num\">&ndash;</td>" << cell(escapeHtml(s.unit())) << cell(range(s.targetMin, s.targetMax, 0))
+                << "<td class=\"num\">" << number(s.tolerance, 1) << "</td><td class=\"num\">&ndash;</td>"
+                << cell("not measured", "muted");
+        }
+        out << "</tr>\n";
+    }
+    out << "</table>\n";
+}
+
+void constraintTables(std::ostringstream& out, const Scene& scene, const GeometryResult& g) {
+    std::ostringstream rel, pairs;
+    int relCount = 0, pairCount = 0;
+    for (const PenaltyTerm& t : g.terms) {
+        bool angle = t.kind == TermKind::Alignment || t.kind == TermKind::Focus;
+        const char* cls = t.rejects ? "missed" : (t.penalty > 0 ? "warn" : "met");
+        const char* status = t.rejects ? "rejects" : (t.penalty > 0 ? "penalized" : "met");
+        if (t.kind == TermKind::Overlap) {
+            ++pairCount;
+            pairs << "<tr>" << cell(escapeHtml(entityName(scene, t.a))) << cell(escapeHtml(overlapTarget(scene, t)))
+                  << "<td class=\"num\">" << number(t.value, 4) << "</td><td class=\"num\">" << number(t.reference, 4)
+                  << "</td><td class=\"num\">" << number(t.penalty, 3) << "</td>" << cell(status, cls) << "</tr>\n";
+            continue;
+        }
+        ++relCount;
+        std::string value = angle ? number(degrees(t.value), 1) + " deg" : number(t.value, 2) + " m";
+        std::string bound;
+        if (t.constraint >= 0 && size_t(t.constraint) < scene.constraints.size()) {
+            const ConstraintSpec& c = scene.constraints[size_t(t.constraint)];
+            if (angle) bound = "&le; " + number(c.toleranceDeg, 1) + " deg";
+            else if (t.kind == TermKind::Distance || t.kind == TermKind::Conversation)
+                bound = range(c.minDistance, c.maxDistance, 2) + " m";
+        }
+        rel << "<tr>" << cell(escapeHtml(termName(t.kind))) << cell(escapeHtml(entityName(scene, t.a)))
+            << cell(escapeHtml(entityName(scene, t.b))) << "<td class=\"num\">" << value << "</td>" << cell(bound)
+            << "<td class=\"num\">" << number(t.weight, 2) << "</td><td class=\"num\">" << number(t.penalty, 3) << "</td>"
+            << cell(status, cls) << "</tr>\n";
+    }
+    out << "<h2>Constraints</h2>\n<p>G = " << number(g.cost, 4) << (g.rejected ? ", rejected by " + escapeHtml(g.rejectedBy) : "")
+        << ".</p>\n";
+    if (relCount)
+        out << "<table>\n<tr><th>type</th><th>a</th><th>b</th><th>value</th><th>bound</th><th>weight</th><th>penalty</th>"
+               "<th>status</th></tr>\n"
+            << rel.str() << "</table>\n";
+    else
+        out << "<p class=\"muted\">No relational constraints.</p>\n";
+    out << "<h2>Overlaps</h2>\n<p>Overlap penalty " << number(g.overlapPenalty, 4) << " (tolerance "
+        << number(100 * scene.overlapTolerance, 1) << "% of the smaller volume).</p>\n";
+    if (pairCount)
+        out << "<table>\n<tr><th>a</th><th>b</th><th>shared volume (m&sup3;)</th><th>reference (m&sup3;)</th>"
+               "<th>penalty</th><th>status</th></tr>\n"
+            << pairs.str() << "</table>\n";
+    else
+        out << "<p class=\"muted\">No overlapping pairs.</p>\n";
+}
+
+void moveTable(std::ostringstream& out, const Scene& scene, const OptimizerResult& r) {
+    if (r.levels.empty()) return;
+    out << "<h2>Moves</h2>\n<table>\n<tr><th>level</th><th>move</th><th>proposed</th><th>accepted</th><th>outside</th>"
+           "<th>rejected (geometry)</th><th>acceptance</th></tr>\n";
+    for (const LevelStats& level : r.levels) {
+        for (MoveType t : kMoveTypes) {
+            const MoveStats& s = level.moves[int(t)];
+            out << "<tr>" << cell(escapeHtml(level.name) + " <span class=\"muted\">(" + std::to_string(level.entities.size()) +
+                                  " entities)</span>")
+                << cell(escapeHtml(moveName(t))) << "<td class=\"num\">" << s.proposed << "</td><td class=\"num\">"
+                << s.accepted << "</td><td class=\"num\">" << s.outside << "</td><td class=\"num\">" << s.rejectedGeometry
+                << "</td><td class=\"num\">" << number(100 * s.acceptance(), 1) << "%</td></tr>\n";
+        }
+    }
+    out << "</table>\n";
+}
+
+void timingTable(std::ostringstream& out, const std::vector<ReportTiming>& timings) {
+    if (timings.empty()) return;
+    out << "<h2>Timings</h2>\n<table>\n<tr><th>step</th><th>seconds</th></tr>\n";
+    for (const ReportTiming& t : timings)
+        out << "<tr>" << cell(escapeHtml(t.what)) << "<td class=\"num\">" << number(t.seconds, 2) << "</td></tr>\n";
+    out << "</table>\n";
+}
+
+}  // namespace
+
+std::string escapeHtml(const std::string& text) {
+    std::string out;
+    out.reserve(text.size());
+    for (char c : text) {
+        switch (c) {
+            case '&': out += "&amp;"; break;
+            case '<': out += "&lt;"; break;
+            case '>': out += "&gt;"; break;
+            case '"': out += "&quot;"; break;
+            case '\'': out += "&#39;"; break;
+            default: out += c;
+        }
+    }
+    return out;
+}
+
+std::string reportHtml(const std::filesystem::path& folder, const Scene& scene, const OptimizerResult* result,
+                       const ReportData& data) {
+    std::string title = data.title.empty() ? "luxplan: " + scene.name : data.title;
+    std::ostringstream out;
+    out << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
+        << "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n<title>" << escapeHtml(title)
+        << "</title>\n<style>" << kStyle << "</style>\n</head>\n<body>\n<h1>" << escapeHtml(title) << "</h1>\n";
+    summary(out, scene, data);
+    if (result) optimizerSummary(out, *result);
+    pictures(out, folder);
+    samplerTable(out, scene, data.samplers, result);
+    if (data.geometry) constraintTables(out, scene, *data.geometry);
+    else if (result) constraintTables(out, scene, result->bestGeometry);
+    if (result) moveTable(out, scene, *result);
+    timingTable(out, data.timings);
+    out << "<footer>Written by luxplan. Illuminance in lx, luminance in cd/m&sup2;.</footer>\n</body>\n</html>\n";
+    return out.str();
+}
+
+void writeReportHtml(const std::filesystem::path& folder, const Scene& scene, const OptimizerResult* result,
+                     const ReportData& data) {
+    std::string html = reportHtml(folder, scene, result, data);
+    std::ofstream out(folder / "report.html", std::ios::binary);
+    out << html;
+    if (!out) throw IoError("cannot write " + (folder / "report.html").string());
+}
+
+}  // namespace luxplan

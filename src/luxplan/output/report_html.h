@@ -1,0 +1,53 @@
+// report.html: one self-contained page (inline CSS, no scripts, no network) that
+// shows a run's pictures and tables: samplers against their targets, constraints,
+// overlap pairs, move statistics and timings.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <luxplan/constraints/geometry_cost.h>
+#include <luxplan/lightsamplers/light_samplers.h>
+#include <luxplan/optimizer/optimizer.h>
+
+namespace luxplan {
+
+struct ReportTiming {
+    std::string what;
+    double seconds = 0;
+};
+
+// What the page shows besides the optimizer result (all optional).
+struct ReportData {
+    std::string title;        // empty: "luxplan: " + the scene's name
+    std::string layoutLabel;  // which layout the tables describe, e.g. "optimized" or a file name
+    // Sampler measurements for that layout, in Scene::samplers order; empty: the
+    // optimizer result's best evaluation (if any).
+    std::vector<SamplerResult> samplers;
+    // Constraint terms for that layout (GeometryEvaluator::evaluate with breakdown);
+    // absent: the optimizer result's bestGeometry (if any).
+    std::optional<GeometryResult> geometry;
+    std::vector<ReportTiming> timings;
+};
+
+// The pictures and files the page refers to, relative to its folder, in page order;
+// the page links each one only if it exists in the folder when the page is written.
+inline constexpr const char* kReportImages[] = {"plan.png", "plan_initial_vs_optimized.png", "render.png",
+                                               "convergence.png"};
+inline constexpr const char* kReportFiles[] = {"scene.glb", "layout.json", "report.json", "trace.csv"};
+
+// Text with &, <, >, " and ' replaced by character references.
+std::string escapeHtml(const std::string& text);
+
+// The page's HTML for `folder` (which files exist there decides what it links).
+// `result` may be null (a layout measured without optimizing).
+std::string reportHtml(const std::filesystem::path& folder, const Scene& scene, const OptimizerResult* result,
+                       const ReportData& data = {});
+
+// Writes folder/report.html (write it after the pictures). Throws IoError.
+void writeReportHtml(const std::filesystem::path& folder, const Scene& scene, const OptimizerResult* result,
+                     const ReportData& data = {});
+
+}  // namespace luxplan

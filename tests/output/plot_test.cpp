@@ -1,0 +1,71 @@
+// The convergence plot draws both cost lines, skips infeasible points and survives
+// an empty trace.
+#include <gtest/gtest.h>
+
+#include <luxplan/output/plot.h>
+
+namespace luxplan {
+namespace {
+
+bool isBest(Rgb p) { return p == Rgb{30, 90, 200}; }
+bool isCurrent(Rgb p) { return p == Rgb{150, 150, 150}; }
+
+int count(const Image& image, bool (*test)(Rgb)) {
+    return int(std::count_if(image.pixels().begin(), image.pixels().end(), test));
+}
+
+std::vector<TracePoint> syntheticTrace(double scale) {
+    std::vector<TracePoint> trace;
+    double best = kInf;
+    for (int i = 0; i <= 1000; i += 10) {
+        TracePoint p;
+        p.iteration = i;
+        p.feasible = i >= 50;  // the start is infeasible
+        p.current = p.feasible ? scale * (1 + std::sin(i * 0.05)) * std::exp(-i / 200.0) + 0.01 : 5;
+        if (p.feasible) best = std::min(best, p.current);
+        p.best = best;
+        trace.push_back(p);
+    }
+    return trace;
+}
+
+TEST(Plot, DrawsCurrentAndBestCosts) {
+    PlotOptions options;
+    options.width = 600, options.height = 300;
+    Image image = plotConvergence(syntheticTrace(1), options);
+    EXPECT_EQ(image.width(), 600);
+    EXPECT_EQ(image.height(), 300);
+    EXPECT_GT(count(image, isBest), 300);
+    EXPECT_GT(count(image, isCurrent), 300);
+    // Nothing drawn left of the first feasible point (x = 70 + 50/1000 * 510 = 95.5),
+    // apart from the key and the axes.
+    for (int y = 60; y < 250; ++y)
+        for (int x = 72; x < 94; ++x) EXPECT_FALSE(isBest(image.at(x, y)) || isCurrent(image.at(x, y))) << x << " " << y;
+}
+
+TEST(Plot, LogAxisWhenCostsSpanDecades) {
+    PlotOptions log, linear;
+    log.logY = true;
+    linear.logY = false;
+    // Costs from 0.01 to 2 (more than two decades): the automatic axis is logarithmic.
+    auto wide = syntheticTrace(1);
+    EXPECT_EQ(plotConvergence(wide).pixels(), plotConvergence(wide, log).pixels());
+    EXPECT_NE(plotConvergence(wide).pixels(), plotConvergence(wide, linear).pixels());
+    // Costs within one decade: linear.
+    auto narrow = wide;
+    for (TracePoint& p : narrow) p.current += 1, p.best += 1;
+    EXPECT_EQ(plotConvergence(narrow).pixels(), plotConvergence(narrow, linear).pixels());
+}
+
+TEST(Plot, EmptyAndInfeasibleTracesStillDraw) {
+    Image empty = plotConvergence({});
+    EXPECT_EQ(count(empty, isBest), 0);
+    std::vector<TracePoint> infeasible(5);
+    for (int i = 0; i < 5; ++i) infeasible[size_t(i)] = {i * 10, 3.0, kInf, false};
+    Image none = plotConvergence(infeasible);
+    EXPECT_EQ(count(none, isBest), 0);
+    EXPECT_EQ(count(none, isCurrent) > 0, true);  // the "no data" note
+}
+
+}  // namespace
+}  // namespace luxplan

@@ -1,0 +1,96 @@
+// report.html: escaping, links only to files that exist, sampler and constraint
+// tables with their status, and the optimizer's sections when there is a result.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <fstream>
+#include <regex>
+
+#include <luxplan/io/scene_loader.h>
+#include <luxplan/output/report_html.h>
+#include "support/temp_files.h"
+
+namespace luxplan {
+namespace {
+
+const char* kScene = R"({"luxplan": 1, "name": "<b>Tom & Jerry's \"room\"</b>",
+  "materials": {"m": {"type": "diffuse", "reflectance": 0.5}},
+  "geometry": [{"name": "room", "room": {"min": [0,0,0], "max": [6,4,3]}, "materials": {"floor": "m", "walls": "m", "ceiling": "m"}}],
+  "entities": [{"name": "table", "position": [2,2], "placement": {"regions": [{"min": [1,1], "max": [5,3]}]},
+                "parts": [{"box": {"size": [1,1,0.75]}, "material": "m"}]},
+               {"name": "sofa", "position": [2.5,2], "placement": {"regions": [{"min": [1,1], "max": [5,3]}]},
+                "parts": [{"box": {"size": [1,1,0.75]}, "material": "m"}]}],
+  "samplers": [{"name": "<script>alert(1)</script>", "type": "planar", "center": [3,2,0.8], "size": [1,1], "target": [300, 500]},
+               {"name": "ambient", "type": "planar", "center": [1,1,0.8], "size": [1,1], "target": [100, null]}],
+  "constraints": [{"type": "distance", "a": "table", "b": "sofa", "min": 1, "max": 2}]})";
+
+std::vector<std::string> links(const std::string& html) {
+    std::vector<std::string> out;
+    std::regex attr(R"re((?:href|src)="([^"]*)")re");
+    for (auto it = std::sregex_iterator(html.begin(), html.end(), attr); it != std::sregex_iterator(); ++it)
+        out.push_back((*it)[1]);
+    return out;
+}
+
+TEST(ReportHtml, EscapesText) {
+    EXPECT_EQ(escapeHtml("<a href=\"x\">Tom & Jerry's</a>"),
+              "&lt;a href=&quot;x&quot;&gt;Tom &amp; Jerry&#39;s&lt;/a&gt;");
+    EXPECT_EQ(escapeHtml("plain"), "plain");
+}
+
+TEST(ReportHtml, SamplersConstraintsAndOnlyExistingLinks) {
+    test::TempDir dir;
+    Scene scene = io::loadScene(dir.write("scene.json", kScene));
+    dir.write("plan.png", "png");
+    dir.write("scene.glb", "glb");
+    ReportData data;
+    data.layoutLabel = "layout.json";
+    data.samplers.resize(2);
+    data.samplers[0].value = 620;  // above [300, 500]
+    data.samplers[0].penalty = 1.2;
+    data.samplers[1].value = 150;  // in [100, inf)
+    GeometryEvaluator geometry(scene);
+    data.geometry = geometry.evaluate(worldTransforms(scene, initialLayout(scene)), true);
+    data.timings = {{"render.png", 1.5}};
+    writeReportHtml(dir.path(), scene, nullptr, data);
+
+    std::ifstream in(dir.path() / "report.html");
+    std::string html((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_EQ(html.rfind("<!DOCTYPE html>", 0), 0u);
+    EXPECT_EQ(html.find("<script"), std::string::npos);
+    EXPECT_EQ(html.find("<b>Tom"), std::string::npos);
+    EXPECT_NE(html.find("&lt;script&gt;alert(1)&lt;/script&gt;"), std::string::npos);
+    EXPECT_NE(html.find("Tom &amp; Jerry&#39;s &quot;room&quot;"), std::string::npos);
+    EXPECT_NE(html.find("1 of 2 samplers meet their targets"), std::string::npos) << html;
+    EXPECT_NE(html.find("class=\"missed\">missed"), std::string::npos);
+    EXPECT_NE(html.find("class=\"met\">met"), std::string::npos);
+    EXPECT_NE(html.find("&infin;"), std::string::npos);
+    // The distance constraint (table and sofa 0.5 m apart, asked for 1 to 2 m) and their overlap.
+    EXPECT_NE(html.find("<td>distance</td><td>table</td><td>sofa</td>"), std::string::npos) << html;
+    EXPECT_NE(html.find("<th>shared volume (m&sup3;)</th>"), std::string::npos);
+    EXPECT_NE(html.find("render.png</td>"), std::string::npos);  // the timing row, not a picture
+
+    std::vector<std::string> refs = links(html);
+    EXPECT_NE(std::find(refs.begin(), refs.end(), "plan.png"), refs.end());
+    EXPECT_NE(std::find(refs.begin(), refs.end(), "scene.glb"), refs.end());
+    for (const std::string& ref : refs) EXPECT_TRUE(std::filesystem::exists(dir.path() / ref)) << ref;
+    EXPECT_EQ(html.find("src=\"render.png\""), std::string::npos);
+    EXPECT_EQ(html.find("http"), std::string::npos);  // nothing from the network
+}
+
+TEST(ReportHtml, OptimizerResultSections) {
+    test::TempDir dir;
+    Scene scene = io::loadScene(dir.write("scene.json", kScene));
+    OptimizerOptions options;
+    options.iterations = 40;
+    Optimizer optimizer(scene, options);
+    OptimizerResult result = optimizer.run();
+    std::string html = reportHtml(dir.path(), scene, &result);
+    for (const char* part : {"<h2>Optimization</h2>", "<h2>Moves</h2>", "<h2>Constraints</h2>", "translate",
+                             "Not measured"})
+        EXPECT_NE(html.find(part), std::string::npos) << part;
+    EXPECT_TRUE(links(html).empty());  // nothing written to the folder yet
+}
+
+}  // namespace
+}  // namespace luxplan
