@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# `make demo`: the main job on the bundled office (six workstations, morning sun):
+# `make demo`: the main job on the paper's Figure 7 office (six workstations, morning sun):
 # validate it, summarize it, optimize its layout, and measure the result.
 set -euo pipefail
 luxplan=${1:?luxplan binary}
@@ -19,4 +19,6 @@ echo "demo: outputs in $out/"
 echo "  layout.json   the optimized placement (read back with --layout)"
 echo "  report.json   costs, every sampler against its target, every constraint's penalty"
 echo "  trace.csv     current and best cost per iteration"
+echo "  plan.png, plan_initial_vs_optimized.png, render.png, convergence.png, scene.glb"
+echo "  report.html   everything on one page: open it in a browser"
 echo "  summary.txt, measure.txt"
