@@ -51,7 +51,7 @@ void BM_OptimizeWithLighting(benchmark::State& state) {
     OptimizerOptions options = optimizerOptions(o.scene);
     options.iterations = 200;
     MeasureOptions measure;
-    measure.pathsPerPoint = o.scene.optimizer.pathsPerPoint;
+    measure.pathsPerPoint = o.scene.optimizer.searchPathsPerPoint;
     measure.threads = int(state.range(0));
     int64_t iterations = 0;
     uint64_t evaluations = 0;

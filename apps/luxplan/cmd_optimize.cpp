@@ -69,7 +69,7 @@ bool runOptimize(const OptimizeArgs& args) {
     if (args.flat) options.hierarchy = Hierarchy::Flat;
 
     MeasureOptions measure;
-    measure.pathsPerPoint = args.paths > 0 ? args.paths : scene.optimizer.pathsPerPoint;
+    measure.pathsPerPoint = args.paths > 0 ? args.paths : scene.optimizer.searchPathsPerPoint;
     measure.seed = options.seed;
     measure.threads = args.threads;
     std::unique_ptr<PathTracedLighting> lighting;
@@ -139,7 +139,7 @@ void registerOptimizeCommand(CLI::App& app) {
     cmd->add_option("--seed", args->seed, "Random seed (default: optimizer.seed)")->check(CLI::NonNegativeNumber);
     cmd->add_option("--threads", args->threads, "Worker threads for light transport (default: all cores)")
         ->check(CLI::NonNegativeNumber);
-    cmd->add_option("--paths", args->paths, "Paths per sampler point during the search (default: optimizer.paths_per_point)")
+    cmd->add_option("--paths", args->paths, "Paths per sampler point during the search (default: optimizer.paths_per_point, or 64 if the scene does not give it)")
         ->check(CLI::PositiveNumber);
     cmd->add_flag("--flat", args->flat, "Ignore groups: move every entity on its own (the paper's Figure 6)");
     cmd->add_flag("-q,--quiet", args->quiet, "No progress line");

@@ -162,7 +162,9 @@ private:
         OptimizerSettings& s = scene_.optimizer;
         s.iterations = o.integer("iterations", Range::atLeast(0)).value_or(10000);
         s.seed = uint64_t(o.integer("seed", Range::atLeast(0)).value_or(1));
-        s.pathsPerPoint = o.integer("paths_per_point", Range::atLeast(1)).value_or(1000);
+        auto paths = o.integer("paths_per_point", Range::atLeast(1));
+        s.pathsPerPoint = paths.value_or(1000);
+        s.searchPathsPerPoint = paths.value_or(64);
         s.reportPathsPerPoint = o.integer("report_paths_per_point", Range::atLeast(1)).value_or(std::max(1000, s.pathsPerPoint));
         s.innerIterations = o.integer("inner_iterations", Range::closed(1, 1000)).value_or(4);
         if (auto h = o.string("hierarchy")) {

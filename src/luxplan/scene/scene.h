@@ -156,7 +156,8 @@ struct Objective {
 struct OptimizerSettings {
     int iterations = 10000;
     uint64_t seed = 1;
-    int pathsPerPoint = 1000;        // per sampler point, for every layout the chain measures
+    int pathsPerPoint = 1000;        // per sampler point: `measure`'s default, and the search's when given
+    int searchPathsPerPoint = 64;    // what the search uses: paths_per_point if the file gives it, else 64
     int reportPathsPerPoint = 1000;  // for the final layout's report
     bool flat = false;               // ignore groups (the paper's Figure 6 comparison)
     int innerIterations = 4;         // object-level proposals per group-level one
