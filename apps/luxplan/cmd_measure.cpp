@@ -1,5 +1,6 @@
-// `luxplan measure SCENE [--layout L] [--paths N] [--seed S] [--threads T] [--json]`:
-// evaluates every light sampler by path tracing.
+// `luxplan measure SCENE [--layout L] [--paths N] [--seed S] [--threads T] [--json] [--flat]`:
+// evaluates every light sampler by path tracing. --flat: in the flattened scene (the
+// layout_flat.json of an `optimize --flat` run).
 #include <chrono>
 #include <iomanip>
 #include <iostream>
@@ -10,6 +11,7 @@
 #include <luxplan/io/layout_io.h>
 #include <luxplan/io/scene_loader.h>
 #include <luxplan/lightsamplers/light_samplers.h>
+#include <luxplan/optimizer/flatten.h>
 
 namespace luxplan::cli {
 namespace {
@@ -20,12 +22,13 @@ struct MeasureArgs {
     std::string scene, layout;
     int paths = 0, threads = 0;
     int64_t seed = -1;
-    bool json = false;
+    bool json = false, flat = false;
 };
 
 void runMeasure(const MeasureArgs& args) {
     auto start = std::chrono::steady_clock::now();
     Scene scene = io::loadScene(args.scene);
+    if (args.flat) scene = flattenScene(scene).scene;
     Layout layout = args.layout.empty() ? initialLayout(scene) : io::readLayout(args.layout, scene);
     std::optional<DaylightEnvironment> daylight;
     if (scene.daylight) daylight = buildDaylight(*scene.daylight, scene.site);
@@ -88,6 +91,7 @@ void registerMeasureCommand(CLI::App& app) {
     cmd->add_option("--seed", args->seed, "Random seed (default: optimizer.seed)")->check(CLI::NonNegativeNumber);
     cmd->add_option("--threads", args->threads, "Worker threads (default: all cores)")->check(CLI::NonNegativeNumber);
     cmd->add_flag("--json", args->json, "Print JSON with per-point values");
+    cmd->add_flag("--flat", args->flat, "Measure in the flattened scene (read the layout_flat.json of optimize --flat)");
     cmd->callback([args] { runMeasure(*args); });
 }
 

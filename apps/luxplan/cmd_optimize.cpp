@@ -1,7 +1,8 @@
 // `luxplan optimize SCENE -o OUTDIR [--iterations N] [--seed S] [--threads T] [--flat]`:
 // the hierarchical Metropolis search with path-traced lighting; writes layout.json,
 // report.json, trace.csv, then the pictures, scene.glb and report.html (unless
-// --no-pictures). Ctrl-C stops the run and still writes the best layout.
+// --no-pictures). Ctrl-C stops the run and still writes the best layout. --flat runs
+// the paper's flat baseline on the flattened scene (optimizer/flatten.h).
 #include <atomic>
 #include <chrono>
 #include <csignal>
@@ -10,7 +11,9 @@
 #include <unistd.h>
 
 #include "commands.h"
+#include <luxplan/io/layout_io.h>
 #include <luxplan/io/scene_loader.h>
+#include <luxplan/optimizer/flatten.h>
 #include <luxplan/optimizer/optimizer.h>
 #include <luxplan/optimizer/path_traced_lighting.h>
 #include <luxplan/optimizer/report.h>
@@ -59,14 +62,23 @@ void showProgress(const Progress& p, bool tty) {
 
 // Returns true when the run was interrupted (Ctrl-C) after writing its outputs.
 bool runOptimize(const OptimizeArgs& args) {
-    Scene scene = io::loadScene(args.scene);
+    const Scene original = io::loadScene(args.scene);
     std::optional<DaylightEnvironment> daylight;
-    if (scene.daylight) daylight = buildDaylight(*scene.daylight, scene.site);
+    if (original.daylight) daylight = buildDaylight(*original.daylight, original.site);
 
-    OptimizerOptions options = optimizerOptions(scene);
+    OptimizerOptions options = optimizerOptions(original);
     if (args.iterations >= 0) options.iterations = args.iterations;
     if (args.seed >= 0) options.seed = uint64_t(args.seed);
     if (args.flat) options.hierarchy = Hierarchy::Flat;
+    // Flat: the same furniture without groups, kept together by cohesion constraints.
+    std::optional<FlatScene> flattened;
+    if (options.hierarchy == Hierarchy::Flat) {
+        flattened = flattenScene(original);
+        if (!args.quiet)
+            std::cerr << "flat: " << flattened->scene.entities.size() << " objects without groups, "
+                      << flattened->cohesionConstraints << " cohesion constraints\n";
+    }
+    const Scene& scene = flattened ? flattened->scene : original;
 
     MeasureOptions measure;
     measure.pathsPerPoint = args.paths > 0 ? args.paths : scene.optimizer.searchPathsPerPoint;
@@ -102,6 +114,13 @@ bool runOptimize(const OptimizeArgs& args) {
         best.cost = w * best.lighting + (1 - w) * best.geometry;
     }
     writeOptimizerOutputs(args.out, scene, result);
+    if (flattened) {
+        // layout.json in the scene file's hierarchy, so that --layout reads it back;
+        // layout_flat.json keeps every object's own placement (measure --flat).
+        io::writeLayout(std::filesystem::path(args.out) / "layout_flat.json", scene, result.best);
+        io::writeLayout(std::filesystem::path(args.out) / "layout.json", original,
+                        hierarchicalLayoutOf(original, *flattened, result.best));
+    }
     std::cout << "optimize: " << result.iterations << " iterations in " << duration(result.seconds) << " ("
               << stopReasonName(result.stop) << ")";
     if (result.feasible)
@@ -141,7 +160,8 @@ void registerOptimizeCommand(CLI::App& app) {
         ->check(CLI::NonNegativeNumber);
     cmd->add_option("--paths", args->paths, "Paths per sampler point during the search (default: optimizer.paths_per_point, or 64 if the scene does not give it)")
         ->check(CLI::PositiveNumber);
-    cmd->add_flag("--flat", args->flat, "Ignore groups: move every entity on its own (the paper's Figure 6)");
+    cmd->add_flag("--flat", args->flat,
+                  "Flat baseline (the paper's Figure 6): no groups, every object on its own, groups kept by cohesion constraints");
     cmd->add_flag("-q,--quiet", args->quiet, "No progress line");
     cmd->add_flag("--no-pictures", args->noPictures, "Skip the pictures, scene.glb and report.html");
     cmd->add_option("--spp", args->spp, "Samples per pixel of render.png (default 16)")->check(CLI::PositiveNumber);

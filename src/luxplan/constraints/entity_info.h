@@ -16,7 +16,8 @@ public:
     const Bounds3& localBounds(int e) const { return bounds_[e]; }
     // The entity and all its descendants that have geometry.
     const std::vector<int>& geometrySubtree(int e) const { return subtree_[e]; }
-    // Whether one of the two is an ancestor of the other (or they are the same).
+    // Whether one of the two is an ancestor of the other (or they are the same), or
+    // the pair is in Scene::overlapExempt.
     bool related(int a, int b) const;
     // Whether the entity or one of its ancestors is movable (so its world transform can change).
     bool canMove(int e) const { return canMove_[e]; }

@@ -26,7 +26,7 @@ GeometryResult GeometryEvaluator::evaluate(const std::vector<Transform>& world, 
         if (c.type == ConstraintType::Overlap || c.a < 0 || (c.b < 0 && c.b != kRoomEntity)) continue;
         PenaltyTerm t = evaluateRelational(*scene_, info_, world, int(i));
         sum += t.weight * t.penalty;
-        weights += t.weight;
+        if (!c.cohesion) weights += t.weight;
         if (t.kind == TermKind::Conversation)
             for (double p : t.parts) r.violation += std::max(0.0, p - 1.0);
         else

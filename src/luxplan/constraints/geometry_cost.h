@@ -16,7 +16,8 @@ struct GeometryResult {
     // G = (sum_c w_c P_c + w_o sum_pairs P_pair) / (sum_c w_c + w_o): every relational
     // constraint c counts once with its weight, and the overlap rule counts once with
     // weight w_o (the `overlap` constraint's weight, default 1) and penalty equal to
-    // the sum of Eq. 6 over all candidate pairs. 0 when every weight is 0.
+    // the sum of Eq. 6 over all candidate pairs. 0 when every weight is 0. Cohesion
+    // constraints (flattenScene()) add to the sum but not to the normalizer.
     double cost = 0;
     bool rejected = false;       // some geometric penalty is above 1
     std::string rejectedBy;      // the first rejecting term, described

@@ -21,27 +21,47 @@ std::vector<Vec2> worldFronts(const Scene& scene, const std::vector<Transform>& 
     return fronts;
 }
 
-double alignmentAngle(const Scene& scene, const std::vector<Transform>& world, int a, int b) {
-    std::vector<Vec2> fa = worldFronts(scene, world, a);
-    std::vector<Vec2> fb = b == kRoomEntity ? std::vector<Vec2>{Vec2(1, 0), Vec2(0, 1)} : worldFronts(scene, world, b);
+namespace {
+
+// Where a constraint end is and which way it faces: the entity's centre and fronts,
+// or, for an end that stands for a former group, the group's.
+struct End {
+    Vec3 center;
+    std::vector<Vec2> fronts;
+};
+
+End resolveEnd(const Scene& scene, const EntityInfo& info, const std::vector<Transform>& world, int e,
+               const std::optional<GroupEnd>& group) {
+    if (!group) return {entityCenter(info, world, e), worldFronts(scene, world, e)};
+    const Transform worldFromGroup = world[e] * group->entityFromGroup;
+    const Transform groupFromWorld = worldFromGroup.inverse();
+    Bounds3 box;
+    for (int m : group->members) box.extend((groupFromWorld * world[m]).apply(info.localBounds(m)));
+    End end{group->members.empty() ? worldFromGroup.t : worldFromGroup.applyPoint(box.center()), {}};
+    for (Vec2 f : group->fronts) {
+        Vec3 w = worldFromGroup.applyVector({f.x, f.y, 0});
+        Vec2 xy(w.x, w.y);
+        if (length(xy) > 0) end.fronts.push_back(xy * (1.0 / length(xy)));
+    }
+    return end;
+}
+
+double axialAngle(const std::vector<Vec2>& fa, const std::vector<Vec2>& fb) {
     double best = kPi / 2;
     for (Vec2 u : fa)
         for (Vec2 v : fb) best = std::min(best, std::atan2(std::abs(cross(u, v)), std::abs(dot(u, v))));
     return best;
 }
 
-double focusAngle(const Scene& scene, const EntityInfo& info, const std::vector<Transform>& world, int s, int t) {
-    Vec3 d3 = entityCenter(info, world, t) - entityCenter(info, world, s);
-    Vec2 d(d3.x, d3.y);
+double facingAngle(const End& s, const End& t) {
+    Vec2 d(t.center.x - s.center.x, t.center.y - s.center.y);
     if (length(d) < 1e-9) return kPi / 2;
     double best = kPi;
-    for (Vec2 u : worldFronts(scene, world, s)) best = std::min(best, std::atan2(std::abs(cross(u, d)), dot(u, d)));
+    for (Vec2 u : s.fronts) best = std::min(best, std::atan2(std::abs(cross(u, d)), dot(u, d)));
     return best;
 }
 
-double centerDistance(const EntityInfo& info, const std::vector<Transform>& world, int s, int t) {
-    return length(entityCenter(info, world, s) - entityCenter(info, world, t));
-}
+}  // namespace
 
 double anglePenalty(double angleRad, double toleranceDeg) {
     double theta = radians(toleranceDeg);
@@ -64,37 +84,39 @@ PenaltyTerm evaluateRelational(const Scene& scene, const EntityInfo& info, const
     t.constraint = constraintIndex;
     t.a = c.a, t.b = c.b;
     t.weight = c.weight;
+    const End a = resolveEnd(scene, info, world, c.a, c.groupA);
+    const End b = c.b == kRoomEntity ? End{Vec3(), {Vec2(1, 0), Vec2(0, 1)}} : resolveEnd(scene, info, world, c.b, c.groupB);
     auto distancePenalty = [&](double d) {
         return penalty(d, c.minDistance, c.maxDistance, distanceElasticLimit(c), kGeometricStiffness);
     };
     switch (c.type) {
         case ConstraintType::Alignment:  // Eq. 4, best pair of fronts
             t.kind = TermKind::Alignment;
-            t.value = alignmentAngle(scene, world, c.a, c.b);
+            t.value = axialAngle(a.fronts, b.fronts);
             t.reference = radians(c.toleranceDeg);
             t.penalty = anglePenalty(t.value, c.toleranceDeg);
             t.rejects = rejects(t.penalty);
             break;
         case ConstraintType::Distance:  // Eq. 5
             t.kind = TermKind::Distance;
-            t.value = centerDistance(info, world, c.a, c.b);
+            t.value = length(a.center - b.center);
             t.reference = c.maxDistance;
             t.penalty = distancePenalty(t.value);
             t.rejects = rejects(t.penalty);
             break;
         case ConstraintType::Focus:  // Eq. 7: G_A between a's front and the direction to b
             t.kind = TermKind::Focus;
-            t.value = focusAngle(scene, info, world, c.a, c.b);
+            t.value = facingAngle(a, b);
             t.reference = radians(c.toleranceDeg);
             t.penalty = anglePenalty(t.value, c.toleranceDeg);
             t.rejects = rejects(t.penalty);
             break;
         case ConstraintType::Conversation: {  // Eq. 8: mutual focus and a distance limiter
             t.kind = TermKind::Conversation;
-            t.value = centerDistance(info, world, c.a, c.b);
+            t.value = length(a.center - b.center);
             t.reference = c.maxDistance;
-            t.parts = {anglePenalty(focusAngle(scene, info, world, c.a, c.b), c.toleranceDeg),
-                       anglePenalty(focusAngle(scene, info, world, c.b, c.a), c.toleranceDeg), distancePenalty(t.value)};
+            t.parts = {anglePenalty(facingAngle(a, b), c.toleranceDeg), anglePenalty(facingAngle(b, a), c.toleranceDeg),
+                       distancePenalty(t.value)};
             t.penalty = (t.parts[0] + t.parts[1] + t.parts[2]) / 3.0;
             t.rejects = rejects(t.parts[0]) || rejects(t.parts[1]) || rejects(t.parts[2]);
             break;

@@ -21,18 +21,11 @@ inline constexpr double kMinDistanceElasticLimit = 0.01;
 // Fronts of an entity in world space, unit vectors in the xy plane.
 std::vector<Vec2> worldFronts(const Scene& scene, const std::vector<Transform>& world, int e);
 
-// Eq. 4's measured value: the smallest angle (radians, [0, pi/2]) between the axis
-// of any front of a and the axis of any front of b (b = kRoomEntity: the room axes
-// x and y). Axial: parallel and antiparallel fronts are both aligned.
-double alignmentAngle(const Scene& scene, const std::vector<Transform>& world, int a, int b);
-
-// Eq. 7's measured value: the smallest angle (radians, [0, pi]) between a front of s
-// and the horizontal direction from s's centre to t's centre. Directional: a front
-// pointing away from t is pi. Coincident centres count as pi/2.
-double focusAngle(const Scene& scene, const EntityInfo& info, const std::vector<Transform>& world, int s, int t);
-
-// Eq. 5's measured value: the distance between the two entities' centres (m).
-double centerDistance(const EntityInfo& info, const std::vector<Transform>& world, int s, int t);
+// The measured values (evaluateRelational): Eq. 4, the smallest angle ([0, pi/2])
+// between the axes of a front of a and a front of b (b = room: the room axes);
+// Eq. 7, the smallest angle ([0, pi]) between a front of s and the horizontal
+// direction from s's centre to t's (coincident centres: pi/2); Eq. 5, the distance
+// between the centres (entityCenter(), or a former group's, ConstraintSpec::groupA/B).
 
 // Eq. 4 read in angle space: P(angle, 0, theta, theta/8, 2). Zero up to the
 // tolerance theta, quadratic beyond, 1 at theta + theta/8.

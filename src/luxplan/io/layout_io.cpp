@@ -14,9 +14,10 @@ std::string layoutToJson(const Scene& scene, const Layout& layout) {
     for (size_t i = 0; i < scene.entities.size(); ++i) {
         if (!scene.entities[i].movable()) continue;
         const Placement& p = layout.placements[i];
-        entities[scene.entities[i].path] = {{"position", {p.position.x, p.position.y, p.position.z}},
-                                            {"rotation", p.rotationDeg},
-                                            {"region", p.region}};
+        Json& entry = entities[scene.entities[i].path];
+        entry = {{"position", {p.position.x, p.position.y, p.position.z}}, {"rotation", p.rotationDeg}};
+        // Outside every region (a flat run's layout in the scene's hierarchy): no index.
+        if (p.region >= 0) entry["region"] = p.region;
     }
     return Json{{"entities", entities}}.dump(2) + "\n";
 }

@@ -8,6 +8,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <luxplan/core/math.h>
@@ -139,6 +140,16 @@ enum class ConstraintType { Alignment, Distance, Focus, Conversation, Overlap };
 
 inline constexpr int kRoomEntity = -2;  // constraint target "room"
 
+// A constraint end that stands for a former group in a flattened scene
+// (flattenScene()): it keeps the group's centre (Eqs. 5, 7: the box of the members'
+// geometry in the group's frame) and the group's fronts, carried by the entity that
+// represents the group.
+struct GroupEnd {
+    std::vector<int> members;   // entities whose own geometry the box holds
+    Transform entityFromGroup;  // the group's frame in the representative's
+    std::vector<Vec2> fronts;   // the group's fronts, group frame
+};
+
 struct ConstraintSpec {
     std::string jsonPath;
     ConstraintType type = ConstraintType::Distance;
@@ -147,6 +158,10 @@ struct ConstraintSpec {
     double minDistance = 0, maxDistance = kInf;  // distance, conversation (metres)
     std::optional<double> distanceTolerance;     // elastic limit (m); default 5% of the range
     double weight = 1;
+    // Written by flattenScene() in place of a group's structure: counts in G's sum
+    // but not in its normalizer, so a layout the hierarchy allows costs the same flat.
+    bool cohesion = false;
+    std::optional<GroupEnd> groupA, groupB;  // flattenScene(): a or b was a group
 };
 
 struct Objective {
@@ -184,6 +199,9 @@ struct Scene {
     std::vector<LightSamplerSpec> samplers;
     std::vector<ConstraintSpec> constraints;
     double overlapTolerance = 0.05;  // fraction of the smaller volume (the paper's V_ref)
+    // Entity pairs the overlap rule skips besides an ancestor and its descendants:
+    // in a flattened scene, the pairs that were so related before (flattenScene()).
+    std::vector<std::pair<int, int>> overlapExempt;
     Objective objective;
     OptimizerSettings optimizer;
 

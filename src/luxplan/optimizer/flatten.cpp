@@ -1,0 +1,346 @@
+// The flat baseline of Figure 6: groups replaced by world-frame regions and
+// cohesion constraints.
+#include <luxplan/optimizer/flatten.h>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+#include <luxplan/constraints/entity_info.h>
+#include <luxplan/optimizer/placement.h>
+
+namespace luxplan {
+namespace {
+
+constexpr double kDistanceSlack = 0.05;      // m beyond the range the hierarchy allows
+constexpr double kDistanceElasticLimit = 0.25;  // m: a cohesion distance rejects at this much outside
+constexpr double kAngleSlackDeg = 10;
+constexpr double kFocusAtMostDeg = 60;      // facing the anchor: a focus rule
+constexpr double kAlignmentAtMostDeg = 35;  // else parallel fronts: an alignment rule
+
+double wrapDegrees(double deg) {
+    double d = std::fmod(deg, 360.0);
+    if (d < 0) d += 360.0;
+    return d >= 360.0 ? 0.0 : d;
+}
+
+double rotationDegrees(const Transform& t) { return wrapDegrees(degrees(std::atan2(t.m[3], t.m[0]))); }
+
+Region pointRegion(Vec2 xy, double rotationDeg) {
+    Region r;
+    r.lo = r.hi = xy;
+    r.rotationsDeg = {rotationDeg};
+    return r;
+}
+
+std::pair<double, double> rotationBounds(const Region& r) {
+    if (r.continuousRotation) return {r.rotationMinDeg, r.rotationMaxDeg};
+    auto [lo, hi] = std::minmax_element(r.rotationsDeg.begin(), r.rotationsDeg.end());
+    return {*lo, *hi};
+}
+
+// A rotation interval written with its start in [0, 360), at most a full turn.
+void setInterval(Region& r, double from, double to) {
+    r.continuousRotation = true;
+    r.rotationsDeg.clear();
+    if (to - from >= 360) {
+        r.rotationMinDeg = 0, r.rotationMaxDeg = 360;
+        return;
+    }
+    double shift = from - wrapDegrees(from);
+    r.rotationMinDeg = from - shift, r.rotationMaxDeg = to - shift;
+}
+
+// Where a child can be in the world when its parent is anywhere in `parent` and the
+// child anywhere in `child` (its parent's frame). A discrete parent rotation gives
+// one region per rotation (exact for quarter turns, the bounding box otherwise); an
+// interval gives one region bounded by the child's largest offset in any direction.
+std::vector<Region> compose(const Region& parent, const Region& child) {
+    std::vector<Region> out;
+    const Vec2 corners[4] = {child.lo, {child.hi.x, child.lo.y}, child.hi, {child.lo.x, child.hi.y}};
+    auto [childLo, childHi] = rotationBounds(child);
+    if (!parent.continuousRotation) {
+        for (double theta : distinctRotations(parent)) {
+            Transform rot = Transform::rotateZ(radians(theta));
+            Region r;
+            Vec2 lo(kInf, kInf), hi(-kInf, -kInf);
+            for (Vec2 c : corners) {
+                Vec3 w = rot.applyVector({c.x, c.y, 0});
+                lo = Vec2(std::min(lo.x, w.x), std::min(lo.y, w.y));
+                hi = Vec2(std::max(hi.x, w.x), std::max(hi.y, w.y));
+            }
+            r.lo = parent.lo + lo, r.hi = parent.hi + hi;
+            if (child.continuousRotation) setInterval(r, theta + childLo, theta + childHi);
+            else
+                for (double a : child.rotationsDeg) r.rotationsDeg.push_back(wrapDegrees(theta + a));
+            out.push_back(r);
+        }
+        return out;
+    }
+    double reach = 0;
+    for (Vec2 c : corners) reach = std::max(reach, length(c));
+    Region r;
+    r.lo = parent.lo - Vec2(reach, reach), r.hi = parent.hi + Vec2(reach, reach);
+    setInterval(r, parent.rotationMinDeg + childLo, parent.rotationMaxDeg + childHi);
+    out.push_back(r);
+    return out;
+}
+
+// Placements of an entity in its parent's frame that stand for its regions: a 5 x 5
+// grid over each box times its rotations (an interval: 13 steps); a fixed entity:
+// its one placement.
+std::vector<Transform> samplePlacements(const Entity& e) {
+    if (!e.movable()) return {Transform::placement(e.position, e.rotationDeg)};
+    std::vector<Transform> out;
+    constexpr int kGrid = 5, kTurns = 13;
+    for (const Region& r : e.regions) {
+        std::vector<double> turns;
+        if (r.continuousRotation) {
+            double span = std::min(r.rotationMaxDeg - r.rotationMinDeg, 360.0);
+            for (int k = 0; k < kTurns; ++k) turns.push_back(r.rotationMinDeg + span * k / (kTurns - 1));
+        } else {
+            turns = distinctRotations(r);
+        }
+        for (int i = 0; i < kGrid; ++i)
+            for (int j = 0; j < kGrid; ++j) {
+                Vec3 p(r.lo.x + (r.hi.x - r.lo.x) * i / (kGrid - 1), r.lo.y + (r.hi.y - r.lo.y) * j / (kGrid - 1),
+                       e.position.z);
+                for (double t : turns) out.push_back(Transform::placement(p, t));
+            }
+    }
+    return out;
+}
+
+double cross2(Vec2 a, Vec2 b) { return a.x * b.y - a.y * b.x; }
+
+std::vector<Vec2> frontsIn(const Entity& e, const Transform& frame) {
+    std::vector<Vec2> out;
+    for (Vec2 f : e.fronts) {
+        Vec3 w = frame.applyVector({f.x, f.y, 0});
+        Vec2 xy(w.x, w.y);
+        if (length(xy) > 0) out.push_back(xy * (1.0 / length(xy)));
+    }
+    return out;
+}
+
+// The flat entity's centre in its own frame (what entityCenter() gives for an entity
+// without children).
+Vec3 ownCenter(const Entity& e) { return e.hasGeometry() ? e.mesh.bounds().center() : Vec3(); }
+
+void transformSampler(LightSamplerSpec& s, const Transform& t) {
+    s.center = t.applyPoint(s.center);
+    s.origin = t.applyPoint(s.origin);
+    s.normal = t.applyVector(s.normal);
+    s.up = t.applyVector(s.up);
+    s.direction = t.applyVector(s.direction);
+    for (Vec3& a : s.axes) a = t.applyVector(a);
+}
+
+void transformEmitter(Emitter& e, const Transform& t) {
+    e.center = t.applyPoint(e.center);
+    e.normal = t.applyVector(e.normal);
+    e.up = t.applyVector(e.up);
+}
+
+int firstRegionHolding(const Entity& e, Vec2 xy, double rotationDeg) {
+    for (size_t i = 0; i < e.regions.size(); ++i)
+        if (regionContains(e.regions[i], xy, rotationDeg, 1e-6)) return int(i);
+    return -1;
+}
+
+Placement placementOf(const Entity& e, const Transform& parentFromEntity) {
+    Placement p;
+    p.position = parentFromEntity.t;
+    p.rotationDeg = rotationDegrees(parentFromEntity);
+    if (!e.movable()) return p;
+    p.region = firstRegionHolding(e, {p.position.x, p.position.y}, p.rotationDeg);
+    if (p.region >= 0) p.rotationDeg = normalizeRotation(e.regions[size_t(p.region)], p.rotationDeg);
+    return p;
+}
+
+}  // namespace
+
+FlatScene flattenScene(const Scene& scene) {
+    const auto& entities = scene.entities;
+    const size_t n = entities.size();
+    FlatScene flat;
+    flat.flatOf.assign(n, -1);
+    flat.representative.assign(n, -1);
+    flat.entityFromRepresentative.assign(n, Transform());
+
+    for (size_t e = 0; e < n; ++e)
+        if (entities[e].hasGeometry() || !entities[e].isGroup()) {
+            flat.flatOf[e] = int(flat.originalOf.size());
+            flat.originalOf.push_back(int(e));
+        }
+    // Representatives bottom up (children come after their parent).
+    for (size_t k = n; k-- > 0;) {
+        const Entity& e = entities[k];
+        if (flat.flatOf[k] >= 0) {
+            flat.representative[k] = flat.flatOf[k];
+            continue;
+        }
+        auto repHasGeometry = [&](int c) { return entities[size_t(flat.originalOf[size_t(flat.representative[c])])].hasGeometry(); };
+        int anchor = -1;
+        for (int c : e.children)
+            if (anchor < 0 && !entities[c].movable() && repHasGeometry(c)) anchor = c;
+        for (int c : e.children)
+            if (anchor < 0 && repHasGeometry(c)) anchor = c;
+        if (anchor < 0) anchor = e.children.front();
+        flat.representative[k] = flat.representative[anchor];
+        flat.entityFromRepresentative[k] =
+            Transform::placement(entities[anchor].position, entities[anchor].rotationDeg) * flat.entityFromRepresentative[anchor];
+    }
+
+    // World-frame regions, parents first.
+    std::vector<std::vector<Region>> worldRegions(n);
+    std::vector<bool> canMove(n);
+    for (size_t k = 0; k < n; ++k) {
+        const Entity& e = entities[k];
+        std::vector<Region> local =
+            e.movable() ? e.regions : std::vector<Region>{pointRegion({e.position.x, e.position.y}, e.rotationDeg)};
+        canMove[k] = e.movable() || (e.parent >= 0 && canMove[size_t(e.parent)]);
+        if (e.parent < 0) {
+            worldRegions[k] = local;
+            continue;
+        }
+        for (const Region& p : worldRegions[size_t(e.parent)])
+            for (const Region& c : local)
+                for (Region& r : compose(p, c)) worldRegions[k].push_back(std::move(r));
+    }
+
+    Scene& out = flat.scene;
+    out = scene;
+    out.entities.clear();
+    out.optimizer.flat = true;
+    const std::vector<Transform> initialWorld = worldTransforms(scene, initialLayout(scene));
+    for (int k : flat.originalOf) {
+        Entity f = entities[size_t(k)];
+        f.name = f.path;
+        f.parent = -1;
+        f.children.clear();
+        f.position = initialWorld[size_t(k)].t;
+        f.rotationDeg = rotationDegrees(initialWorld[size_t(k)]);
+        f.regions = canMove[size_t(k)] ? worldRegions[size_t(k)] : std::vector<Region>{};
+        out.entities.push_back(std::move(f));
+    }
+    // Samplers and emitters of partless groups go to the representative, in its frame.
+    for (size_t k = 0; k < n; ++k) {
+        if (flat.flatOf[k] >= 0) continue;
+        Entity& rep = out.entities[size_t(flat.representative[k])];
+        Transform repFromGroup = flat.entityFromRepresentative[k].inverse();
+        for (int s : entities[k].samplers) {
+            transformSampler(out.samplers[size_t(s)], repFromGroup);
+            rep.samplers.push_back(s);
+        }
+        for (int m : entities[k].emitters) {
+            transformEmitter(out.emitters[size_t(m)], repFromGroup);
+            rep.emitters.push_back(m);
+        }
+    }
+    for (auto& s : out.samplers)
+        if (s.entity >= 0) s.entity = flat.representative[size_t(s.entity)];
+    for (auto& m : out.emitters)
+        if (m.entity >= 0) m.entity = flat.representative[size_t(m.entity)];
+    // Constraints on a group keep the group's centre and fronts (GroupEnd).
+    const EntityInfo info(scene);
+    auto groupEnd = [&](int e) -> std::optional<GroupEnd> {
+        if (e < 0 || !entities[size_t(e)].isGroup()) return std::nullopt;
+        GroupEnd g;
+        for (int m : info.geometrySubtree(e)) g.members.push_back(flat.flatOf[size_t(m)]);
+        g.entityFromGroup = flat.entityFromRepresentative[size_t(e)].inverse();
+        g.fronts = entities[size_t(e)].fronts;
+        return g;
+    };
+    for (auto& c : out.constraints) {
+        c.groupA = groupEnd(c.a), c.groupB = groupEnd(c.b);
+        if (c.a >= 0) c.a = flat.representative[size_t(c.a)];
+        if (c.b >= 0) c.b = flat.representative[size_t(c.b)];
+    }
+
+    // Overlap keeps skipping former parent-child pairs.
+    for (size_t k = 0; k < n; ++k) {
+        if (flat.flatOf[k] < 0) continue;
+        for (int p = entities[k].parent; p >= 0; p = entities[size_t(p)].parent)
+            if (flat.flatOf[size_t(p)] >= 0) out.overlapExempt.emplace_back(flat.flatOf[size_t(p)], flat.flatOf[k]);
+    }
+
+    // Cohesion: every member of a group towards the group's anchor.
+    std::set<std::pair<int, int>> bound;
+    for (size_t k = 0; k < n; ++k) {
+        const Entity& member = entities[k];
+        if (member.parent < 0) continue;
+        const size_t group = size_t(member.parent);
+        int a = flat.representative[k], b = flat.representative[group];
+        if (a == b || !bound.insert({a, b}).second) continue;
+        const Entity& fa = out.entities[size_t(a)];
+        const Entity& fb = out.entities[size_t(b)];
+        const Transform bInGroup = flat.entityFromRepresentative[group];
+        const Vec3 cb = bInGroup.applyPoint(ownCenter(fb));
+        const std::vector<Vec2> frontsB = frontsIn(fb, bInGroup);
+        double dMin = kInf, dMax = 0, focusMax = 0, alignMax = 0;
+        for (const Transform& placement : samplePlacements(member)) {
+            Transform aInGroup = placement * flat.entityFromRepresentative[k];
+            Vec3 ca = aInGroup.applyPoint(ownCenter(fa));
+            double d = length(ca - cb);
+            dMin = std::min(dMin, d), dMax = std::max(dMax, d);
+            Vec2 towards(cb.x - ca.x, cb.y - ca.y);
+            double focus = kPi, align = kPi / 2;
+            for (Vec2 u : frontsIn(fa, aInGroup)) {
+                if (length(towards) > 1e-9) focus = std::min(focus, std::atan2(std::abs(cross2(u, towards)), dot(u, towards)));
+                for (Vec2 v : frontsB) align = std::min(align, std::atan2(std::abs(cross2(u, v)), std::abs(dot(u, v))));
+            }
+            focusMax = std::max(focusMax, focus), alignMax = std::max(alignMax, align);
+        }
+        ConstraintSpec c;
+        c.jsonPath = member.jsonPath + " (cohesion with " + fb.path + ")";
+        c.a = a, c.b = b;
+        c.cohesion = true;
+        c.type = ConstraintType::Distance;
+        c.minDistance = std::max(0.0, dMin - kDistanceSlack);
+        c.maxDistance = dMax + kDistanceSlack;
+        c.distanceTolerance = kDistanceElasticLimit;
+        out.constraints.push_back(c);
+        ++flat.cohesionConstraints;
+        if (degrees(focusMax) <= kFocusAtMostDeg) {
+            c.type = ConstraintType::Focus;
+            c.toleranceDeg = degrees(focusMax) + kAngleSlackDeg;
+        } else if (degrees(alignMax) <= kAlignmentAtMostDeg) {
+            c.type = ConstraintType::Alignment;
+            c.toleranceDeg = degrees(alignMax) + kAngleSlackDeg;
+        } else {
+            continue;  // turns freely relative to the anchor: nothing to keep
+        }
+        out.constraints.push_back(c);
+        ++flat.cohesionConstraints;
+    }
+    return flat;
+}
+
+Layout flatLayoutOf(const Scene& original, const FlatScene& flat, const Layout& layout) {
+    std::vector<Transform> world = worldTransforms(original, layout);
+    Layout out;
+    for (size_t f = 0; f < flat.scene.entities.size(); ++f)
+        out.placements.push_back(placementOf(flat.scene.entities[f], world[size_t(flat.originalOf[f])]));
+    return out;
+}
+
+Layout hierarchicalLayoutOf(const Scene& original, const FlatScene& flat, const Layout& flatLayout) {
+    const size_t n = original.entities.size();
+    std::vector<Transform> world(n);
+    for (size_t k = 0; k < n; ++k) {
+        Transform rep = localTransform(flatLayout.placements[size_t(flat.representative[k])]);
+        world[k] = rep * flat.entityFromRepresentative[k].inverse();
+    }
+    Layout out = initialLayout(original);
+    for (size_t k = 0; k < n; ++k) {
+        const Entity& e = original.entities[k];
+        if (!e.movable()) continue;
+        Transform local = e.parent < 0 ? world[k] : world[size_t(e.parent)].inverse() * world[k];
+        out.placements[k] = placementOf(e, local);
+        out.placements[k].position.z = e.position.z;
+    }
+    return out;
+}
+
+}  // namespace luxplan

@@ -1,0 +1,246 @@
+// The flat baseline (optimizer/flatten.h): structure of the flattened scene, equal
+// cost for every layout the hierarchy allows, layouts converted both ways, and a
+// flat move that breaks a group paying for it.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include <nlohmann/json.hpp>
+
+#include <luxplan/constraints/geometry_cost.h>
+#include <luxplan/io/layout_io.h>
+#include <luxplan/io/scene_loader.h>
+#include <luxplan/optimizer/flatten.h>
+#include <luxplan/optimizer/optimizer.h>
+#include <luxplan/optimizer/placement.h>
+#include "support/temp_files.h"
+
+namespace luxplan {
+namespace {
+
+// A partless group (workstation) whose anchor is the desk (fixed in the group, at an
+// offset), a desk that is also a group (its monitor), a sampler and a lamp on the
+// partless group, and objects at the top level.
+const char* kOffice = R"({
+  "luxplan": 1,
+  "materials": {"m": {"type": "diffuse", "reflectance": 0.5}},
+  "geometry": [
+    {"name": "room", "room": {"min": [0, 0, 0], "max": [6, 4, 3]}, "materials": {"floor": "m", "walls": "m", "ceiling": "m"}},
+    {"name": "door", "box": {"min": [2.5, 0, 0], "max": [3.5, 1, 2]}, "invisible": true}
+  ],
+  "entities": [
+    {"name": "workstation", "position": [2, 2],
+     "placement": {"regions": [{"min": [1, 1], "max": [5, 3], "rotations": [0, 90, 180, 270]}]},
+     "samplers": [{"name": "desk_light", "type": "planar", "center": [0.1, 0.2, 0.75], "size": [1, 0.5], "target": [300, 500]}],
+     "emitters": [{"name": "lamp", "shape": "sphere", "center": [0.5, 0.3, 1.2], "radius": 0.05, "flux_lm": 500}],
+     "children": [
+       {"name": "desk", "position": [0, 0.2], "parts": [{"box": {"size": [1.2, 0.6, 0.75]}, "material": "m"}],
+        "children": [{"name": "monitor", "position": [0, 0.1, 0.75],
+                      "placement": {"regions": [{"min": [-0.4, 0], "max": [0.4, 0.2], "rotation_range": [-20, 20]}]},
+                      "parts": [{"box": {"size": [0.5, 0.15, 0.4]}, "material": "m"}]}]},
+       {"name": "chair", "position": [0, -0.5], "rotation": 180,
+        "placement": {"regions": [{"min": [-0.3, -0.8], "max": [0.3, -0.4], "rotation_range": [160, 200]}]},
+        "parts": [{"box": {"size": [0.5, 0.5, 0.9]}, "material": "m"}]}]},
+    {"name": "shelf", "position": [0.2, 3], "rotation": 90,
+     "placement": {"regions": [{"min": [0.2, 1], "max": [0.2, 3.5], "rotations": [90]},
+                               {"min": [5.8, 1], "max": [5.8, 3.5], "rotations": [270]}]},
+     "parts": [{"box": {"size": [0.8, 0.3, 1.8]}, "material": "m"}]},
+    {"name": "plant", "position": [5, 3.5],
+     "placement": {"regions": [{"min": [0.4, 0.4], "max": [5.6, 3.6]}]},
+     "parts": [{"box": {"size": [0.4, 0.4, 1.0]}, "material": "m"}]}
+  ],
+  "constraints": [
+    {"type": "alignment", "a": "workstation.desk", "b": "room", "tolerance_deg": 5},
+    {"type": "focus", "a": "workstation.desk.monitor", "b": "workstation.chair", "tolerance_deg": 15},
+    {"type": "distance", "a": "plant", "b": "workstation.desk", "min": 1.5, "max": 100},
+    {"type": "focus", "a": "workstation", "b": "plant", "tolerance_deg": 60},
+    {"type": "conversation", "a": "plant", "b": "workstation", "min": 1, "max": 3, "tolerance_deg": 90}
+  ]
+})";
+
+void expectSameTransform(const Transform& a, const Transform& b, const std::string& what) {
+    for (int i = 0; i < 9; ++i) EXPECT_NEAR(a.m[size_t(i)], b.m[size_t(i)], 1e-9) << what;
+    EXPECT_NEAR(length(a.t - b.t), 0.0, 1e-9) << what;
+}
+
+class FlattenTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        scene = io::loadScene(dir.write("office.json", kOffice));
+        flat = flattenScene(scene);
+    }
+    int flatEntity(const std::string& path) const { return flat.scene.findEntity(path); }
+    test::TempDir dir;
+    Scene scene;
+    FlatScene flat;
+};
+
+TEST_F(FlattenTest, EveryObjectAtTheTopLevelWithWorldRegions) {
+    const Scene& f = flat.scene;
+    ASSERT_EQ(f.entities.size(), 5u);  // the partless workstation is gone
+    EXPECT_EQ(flatEntity("workstation"), -1);
+    for (const Entity& e : f.entities) {
+        EXPECT_EQ(e.parent, -1) << e.path;
+        EXPECT_TRUE(e.children.empty()) << e.path;
+        EXPECT_EQ(e.name, e.path);
+        EXPECT_TRUE(e.movable()) << e.path;  // the desk was fixed inside a movable group
+    }
+    EXPECT_EQ(flat.representative[size_t(scene.findEntity("workstation"))], flatEntity("workstation.desk"));
+    // Four group rotations, each giving one region per member.
+    EXPECT_EQ(f.entities[size_t(flatEntity("workstation.desk"))].regions.size(), 4u);
+    EXPECT_EQ(f.entities[size_t(flatEntity("workstation.desk.monitor"))].regions.size(), 4u);
+    EXPECT_EQ(f.entities[size_t(flatEntity("workstation.chair"))].regions.size(), 4u);
+    EXPECT_EQ(f.entities[size_t(flatEntity("shelf"))].regions.size(), 2u);
+    // The desk's world regions: the group's box shifted by its offset turned 0/90/180/270.
+    const Region& turned = f.entities[size_t(flatEntity("workstation.desk"))].regions[1];
+    EXPECT_NEAR(turned.lo.x, 1 - 0.2, 1e-12);
+    EXPECT_NEAR(turned.hi.y, 3, 1e-12);
+    ASSERT_EQ(turned.rotationsDeg.size(), 1u);
+    EXPECT_NEAR(turned.rotationsDeg[0], 90, 1e-12);
+    // The chair keeps its interval, turned with the group.
+    const Region& chair = f.entities[size_t(flatEntity("workstation.chair"))].regions[2];
+    EXPECT_TRUE(chair.continuousRotation);
+    EXPECT_NEAR(chair.rotationMinDeg, 340, 1e-9);
+    EXPECT_NEAR(chair.rotationMaxDeg, 380, 1e-9);
+
+    // The sampler and the lamp move to the desk, in its frame (0.2 m behind the group origin).
+    const LightSamplerSpec& s = f.samplers[0];
+    EXPECT_EQ(s.entity, flatEntity("workstation.desk"));
+    EXPECT_NEAR(length(s.center - Vec3(0.1, 0.0, 0.75)), 0.0, 1e-12);
+    const Entity& desk = f.entities[size_t(flatEntity("workstation.desk"))];
+    EXPECT_EQ(desk.samplers, std::vector<int>{0});
+    EXPECT_EQ(desk.emitters.size(), 1u);
+
+    // A constraint on the workstation keeps the group's centre and fronts.
+    const ConstraintSpec& onGroup = f.constraints[3];
+    EXPECT_EQ(onGroup.a, flatEntity("workstation.desk"));
+    ASSERT_TRUE(onGroup.groupA.has_value());
+    EXPECT_EQ(onGroup.groupA->members.size(), 3u);
+    EXPECT_FALSE(onGroup.groupB.has_value());
+
+    // Cohesion: the chair and the monitor towards the desk (the anchor), not counted
+    // in G's normalizer; the constraints on objects are kept.
+    int chairDistance = 0, chairFocus = 0, monitorDistance = 0, monitorTurn = 0;
+    for (const ConstraintSpec& c : f.constraints) {
+        if (!c.cohesion) continue;
+        EXPECT_EQ(c.b, flatEntity("workstation.desk"));
+        bool isChair = c.a == flatEntity("workstation.chair");
+        ASSERT_TRUE(isChair || c.a == flatEntity("workstation.desk.monitor"));
+        if (c.type == ConstraintType::Distance) {
+            (isChair ? chairDistance : monitorDistance)++;
+            EXPECT_EQ(c.distanceTolerance, 0.25);
+            EXPECT_LT(c.minDistance, c.maxDistance);
+        } else {
+            (isChair ? chairFocus : monitorTurn)++;
+        }
+    }
+    EXPECT_EQ(chairDistance, 1);
+    EXPECT_EQ(chairFocus, 1);  // the chair faces the desk from everywhere in its region
+    EXPECT_EQ(monitorDistance, 1);
+    EXPECT_EQ(monitorTurn, 1);
+    EXPECT_EQ(flat.cohesionConstraints, 4);
+    EXPECT_EQ(f.constraints.size(), scene.constraints.size() + 4);
+    // The desk and its monitor were parent and child: they may still overlap.
+    EXPECT_NE(std::find(f.overlapExempt.begin(), f.overlapExempt.end(),
+                        std::make_pair(flatEntity("workstation.desk"), flatEntity("workstation.desk.monitor"))),
+              f.overlapExempt.end());
+}
+
+TEST_F(FlattenTest, EveryHierarchicalLayoutCostsTheSameFlat) {
+    GeometryEvaluator hierarchical(scene), flatG(flat.scene);
+    Rng rng(hashValues({7}));
+    const Layout base = initialLayout(scene);
+    int rejected = 0;
+    for (int trial = 0; trial < 300; ++trial) {
+        Layout layout = sampleLayout(scene, base, rng);
+        Layout flatLayout = flatLayoutOf(scene, flat, layout);
+        std::vector<Transform> world = worldTransforms(scene, layout);
+        std::vector<Transform> flatWorld = worldTransforms(flat.scene, flatLayout);
+        for (size_t f = 0; f < flat.scene.entities.size(); ++f) {
+            ASSERT_GE(flatLayout.placements[f].region, 0) << flat.scene.entities[f].path << " outside its world regions";
+            expectSameTransform(flatWorld[f], world[size_t(flat.originalOf[f])], flat.scene.entities[f].path);
+        }
+        const LightSamplerSpec& s = scene.samplers[0];
+        const LightSamplerSpec& fs = flat.scene.samplers[0];
+        EXPECT_NEAR(length(world[size_t(s.entity)].applyPoint(s.center) - flatWorld[size_t(fs.entity)].applyPoint(fs.center)),
+                    0.0, 1e-9);
+        const Emitter& m = scene.emitters[0];
+        const Emitter& fm = flat.scene.emitters[0];
+        EXPECT_NEAR(length(world[size_t(m.entity)].applyPoint(m.center) - flatWorld[size_t(fm.entity)].applyPoint(fm.center)),
+                    0.0, 1e-9);
+
+        GeometryResult g = hierarchical.evaluate(world);
+        GeometryResult gf = flatG.evaluate(flatWorld, true);
+        hierarchical.commit(), flatG.commit();
+        EXPECT_NEAR(gf.cost, g.cost, 1e-9);
+
+        EXPECT_EQ(gf.rejected, g.rejected);
+        rejected += g.rejected;
+        for (const PenaltyTerm& t : gf.terms)
+            if (t.constraint >= 0 && flat.scene.constraints[size_t(t.constraint)].cohesion) {
+                EXPECT_EQ(t.penalty, 0.0) << describe(flat.scene, t);
+            }
+    }
+    EXPECT_GT(rejected, 0);  // both kinds of layout were drawn
+    EXPECT_LT(rejected, 300);
+}
+
+TEST_F(FlattenTest, LayoutsConvertBothWays) {
+    Rng rng(hashValues({8}));
+    for (int trial = 0; trial < 50; ++trial) {
+        Layout layout = sampleLayout(scene, initialLayout(scene), rng);
+        Layout back = hierarchicalLayoutOf(scene, flat, flatLayoutOf(scene, flat, layout));
+        for (size_t k = 0; k < scene.entities.size(); ++k) {
+            if (!scene.entities[k].movable()) continue;
+            const Placement &a = layout.placements[k], &b = back.placements[k];
+            EXPECT_NEAR(length(a.position - b.position), 0.0, 1e-9) << scene.entities[k].path;
+            EXPECT_TRUE(sameRotation(a.rotationDeg, b.rotationDeg)) << a.rotationDeg << " vs " << b.rotationDeg;
+            EXPECT_EQ(a.region, b.region) << scene.entities[k].path;
+        }
+    }
+}
+
+TEST_F(FlattenTest, BreakingAGroupCostsAndStillWritesAReadableLayout) {
+    Layout flatLayout = initialLayout(flat.scene);
+    const int chair = flatEntity("workstation.chair");
+    flatLayout.placements[size_t(chair)].position.y -= 1.0;  // 1 m further from the desk
+    GeometryEvaluator g(flat.scene);
+    GeometryResult r = g.evaluate(worldTransforms(flat.scene, flatLayout), true);
+    double cohesion = 0;
+    for (const PenaltyTerm& t : r.terms)
+        if (t.constraint >= 0 && flat.scene.constraints[size_t(t.constraint)].cohesion) cohesion += t.penalty;
+    EXPECT_GT(cohesion, 0);
+    EXPECT_TRUE(r.rejected);  // beyond the range by more than the 0.25 m elastic limit
+
+    // In the scene's hierarchy the chair is outside its region: the layout says so by
+    // giving no region index, and reads back.
+    Layout layout = hierarchicalLayoutOf(scene, flat, flatLayout);
+    const int original = scene.findEntity("workstation.chair");
+    EXPECT_EQ(layout.placements[size_t(original)].region, -1);
+    auto json = nlohmann::json::parse(io::layoutToJson(scene, layout));
+    EXPECT_FALSE(json["entities"]["workstation.chair"].contains("region"));
+    EXPECT_TRUE(json["entities"]["workstation"].contains("region"));
+    auto file = dir.write("layout.json", io::layoutToJson(scene, layout));
+    Layout read = io::readLayout(file, scene);
+    EXPECT_NEAR(length(read.placements[size_t(original)].position - layout.placements[size_t(original)].position), 0.0,
+                1e-9);
+}
+
+TEST_F(FlattenTest, TheOptimizerSearchesTheFlatSceneOnOneLevel) {
+    OptimizerOptions o = optimizerOptions(flat.scene);
+    o.hierarchy = Hierarchy::Flat;
+    o.iterations = 3000;
+    o.seed = 5;
+    OptimizerResult r = Optimizer(flat.scene, o).run();
+    ASSERT_EQ(r.levels.size(), 1u);
+    EXPECT_EQ(r.levels[0].entities.size(), 5u);
+    EXPECT_TRUE(r.feasible);
+    // The best layout keeps the group together (every cohesion rule within its elastic limit).
+    for (const PenaltyTerm& t : r.bestGeometry.terms)
+        if (t.constraint >= 0 && flat.scene.constraints[size_t(t.constraint)].cohesion) {
+            EXPECT_LE(t.penalty, 1.0);
+        }
+}
+
+}  // namespace
+}  // namespace luxplan
