@@ -11,11 +11,15 @@ Each trace.csv has the columns iteration,current,best,feasible (docs/optimizer.m
 Per group, every run's `best` column is read as a step function of the iteration:
 the value of the last row at or before the iteration is carried forward (also past
 the run's last row, e.g. when it stopped at C = 0); `best` is empty until the first
-feasible layout and counts as missing there. At each iteration of the common grid
-(the union of every row's iteration) the mean, min and max over the runs that have a
-value are taken. The chart shows one line per group (the mean) with a light band from
-min to max; the y axis is logarithmic by default (costs of 0 are drawn at --floor).
-A table with the final mean/min/max per group is printed on standard output.
+feasible layout (none has passed the geometric rules yet). At each iteration of the
+common grid (the union of every row's iteration) the chart's upper panel shows the
+mean best C over the seeds, drawn only where every seed has a feasible layout (a
+mean over the lucky seeds alone would flatter a mode), with a light band from the
+min to the max over the seeds that have one; the y axis is logarithmic by default
+(costs of 0 are drawn at --floor). The lower panel shows the fraction of seeds with
+a feasible layout. A table at a few iterations (--at, default 10/25/50/100% of the
+run) is printed on standard output: seeds feasible, mean (when all are) and median
+(an infeasible seed counts as worse than any feasible one) of the best C.
 
 Python 3 standard library only.
 """
@@ -60,10 +64,11 @@ def group_curve(traces, grid):
     rows = []
     for it in grid:
         vals = [v for v in (value_at(t, it) for t in traces) if v is not None]
+        mean = sum(vals) / len(vals) if vals and len(vals) == len(traces) else None
         if vals:
-            rows.append((it, sum(vals) / len(vals), min(vals), max(vals), len(vals)))
+            rows.append((it, mean, min(vals), max(vals), len(vals) / len(traces)))
         else:
-            rows.append((it, None, None, None, 0))
+            rows.append((it, None, None, None, 0.0))
     return rows
 
 
@@ -95,9 +100,10 @@ def esc(s):
     return s.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;")
 
 
-def svg_chart(groups, curves, title, log_y, floor, width=760, height=440):
+def svg_chart(groups, curves, title, log_y, floor, width=760, height=560):
     left, right, top, bottom = 80, 20, 40, 60
-    pw, ph = width - left - right, height - top - bottom
+    panel = 110  # the feasible-fraction panel below the cost panel
+    pw, ph = width - left - right, height - top - bottom - panel - 20
     x_max = max(r[0] for c in curves for r in c) or 1
     vals = [v for c in curves for r in c for v in r[1:4] if v is not None]
     if log_y:
@@ -139,14 +145,17 @@ def svg_chart(groups, curves, title, log_y, floor, width=760, height=440):
         out.append('<line x1="%.1f" y1="%g" x2="%.1f" y2="%g" stroke="#e6e6e6"/>' % (x, top, x, top + ph))
         out.append('<line x1="%.1f" y1="%g" x2="%.1f" y2="%g" stroke="black"/>' % (x, top + ph, x, top + ph + 5))
         out.append('<text x="%.1f" y="%g" text-anchor="middle">%s</text>' % (x, top + ph + 19, fmt(t)))
+        fb = top + ph + 40 + panel
+        out.append('<line x1="%.1f" y1="%g" x2="%.1f" y2="%g" stroke="black"/>' % (x, fb, x, fb + 5))
+        out.append('<text x="%.1f" y="%g" text-anchor="middle">%s</text>' % (x, fb + 19, fmt(t)))
     out.append('<rect x="%g" y="%g" width="%g" height="%g" fill="none" stroke="black"/>' % (left, top, pw, ph))
-    out.append('<text x="%g" y="%g" text-anchor="middle">iteration</text>' % (left + pw / 2, height - 18))
+    out.append('<text x="%g" y="%g" text-anchor="middle">iteration</text>' % (left + pw / 2, height - 12))
     ylab = "best cost C (mean over seeds%s)" % (", log scale" if log_y else "")
     out.append('<text transform="translate(18,%g) rotate(-90)" text-anchor="middle">%s</text>' % (top + ph / 2, ylab))
     # bands, then lines
     for gi, c in enumerate(curves):
         col = COLOURS[gi % len(COLOURS)]
-        pts = [r for r in c if r[1] is not None]
+        pts = [r for r in c if r[2] is not None]
         if not pts:
             continue
         upper = ["%.1f,%.1f" % (tx(r[0]), ty(r[3])) for r in pts]
@@ -170,6 +179,19 @@ def svg_chart(groups, curves, title, log_y, floor, width=760, height=440):
         out.append('<line x1="%g" y1="%g" x2="%g" y2="%g" stroke="%s" stroke-width="2"/>' % (lx + 8, y, lx + 34, y, col))
         out.append('<text x="%g" y="%g">%s (n = %d)</text>' % (lx + 42, y + 4, esc(name), len(paths)))
     out.append('<text x="%g" y="%g" fill="#555">line: mean; band: min..max</text>' % (lx + 8, ly + 16 + 22 * len(groups)))
+    # feasible fraction
+    ftop = top + ph + 40
+    out.append('<rect x="%g" y="%g" width="%g" height="%g" fill="none" stroke="black"/>' % (left, ftop, pw, panel))
+    for frac in (0, 0.5, 1):
+        y = ftop + panel * (1 - frac)
+        out.append('<line x1="%g" y1="%.1f" x2="%g" y2="%.1f" stroke="#e6e6e6"/>' % (left, y, left + pw, y))
+        out.append('<text x="%g" y="%.1f" text-anchor="end">%g</text>' % (left - 8, y + 4, frac))
+    out.append('<text transform="translate(18,%g) rotate(-90)" text-anchor="middle">seeds feasible</text>'
+               % (ftop + panel / 2))
+    for gi, c in enumerate(curves):
+        col = COLOURS[gi % len(COLOURS)]
+        line = " ".join("%.1f,%.1f" % (tx(r[0]), ftop + panel * (1 - r[4])) for r in c)
+        out.append('<polyline points="%s" fill="none" stroke="%s" stroke-width="2"/>' % (line, col))
     out.append("</svg>")
     return "\n".join(out) + "\n"
 
@@ -180,6 +202,7 @@ def parse_args(argv):
     p.add_argument("--title", default="Best cost vs iteration")
     p.add_argument("--linear", action="store_true", help="linear y axis (default: log)")
     p.add_argument("--floor", type=float, default=1e-4, help="value drawn for C = 0 on a log axis")
+    p.add_argument("--at", type=int, nargs="+", help="iterations for the printed table")
     p.add_argument("--group", nargs="+", action="append", metavar=("NAME", "TRACE"), required=True,
                    help="a group name followed by its trace.csv files")
     a = p.parse_args(argv)
@@ -197,17 +220,20 @@ def main(argv=None):
     curves = [group_curve(ts, grid) for ts in traces]
     with open(a.output, "w") as f:
         f.write(svg_chart(groups, curves, a.title, not a.linear, a.floor))
-    print("| group | runs | final best C: mean | min | max | runs at C = 0 |")
-    print("|---|---|---|---|---|---|")
     last_it = grid[-1]
-    for (name, paths), ts in zip(groups, traces):
-        finals = [value_at(t, last_it) for t in ts]
-        ok = [v for v in finals if v is not None]
-        if ok:
-            print("| %s | %d | %.4f | %.4f | %.4f | %d |" % (
-                name, len(ts), sum(ok) / len(ok), min(ok), max(ok), sum(1 for v in ok if v == 0)))
-        else:
-            print("| %s | %d | – | – | – | 0 |" % (name, len(ts)))
+    at = a.at or sorted({max(1, last_it // 10), last_it // 4, last_it // 2, last_it})
+    print("| iteration | group | seeds feasible | mean best C | median best C | min | max | seeds at C = 0 |")
+    print("|---|---|---|---|---|---|---|---|")
+    for it in at:
+        for (name, paths), ts in zip(groups, traces):
+            vals = [value_at(t, it) for t in ts]
+            ok = sorted(v for v in vals if v is not None)
+            ranked = ok + [math.inf] * (len(vals) - len(ok))
+            median = ranked[(len(ranked) - 1) // 2] if len(ranked) % 2 else 0.5 * (ranked[len(ranked) // 2 - 1] + ranked[len(ranked) // 2])
+            cell = lambda v: "%.4f" % v if v is not None and math.isfinite(v) else "–"
+            print("| %d | %s | %d / %d | %s | %s | %s | %s | %d |" % (
+                it, name, len(ok), len(vals), cell(sum(ok) / len(ok) if ok and len(ok) == len(vals) else None),
+                cell(median), cell(ok[0] if ok else None), cell(ok[-1] if ok else None), sum(1 for v in ok if v == 0)))
     return 0
 
 
