@@ -154,6 +154,62 @@ const char* kLightSeeking = R"({"luxplan": 1,
   "objective": {"lighting_weight": 0.8},
   "optimizer": {"iterations": 150, "seed": 2, "paths_per_point": 16, "report_paths_per_point": 64}})";
 
+// A dining set as a group without parts: a table and two chairs that may shift a
+// little around it; one luminaire.
+const char* kDiningSet = R"({"luxplan": 1,
+  "materials": {"wall": {"type": "diffuse", "reflectance": 0.5}, "wood": {"type": "diffuse", "reflectance": 0.4}},
+  "geometry": [{"name": "room", "room": {"min": [0,0,0], "max": [6,4,3]},
+                "materials": {"floor": "wall", "walls": "wall", "ceiling": "wall"}}],
+  "luminaires": [{"name": "lamp", "shape": "rect", "center": [4.5,2,2.99], "normal": [0,0,-1], "size": [0.6,0.6], "flux_lm": 4000}],
+  "entities": [{"name": "set", "position": [2, 2],
+                "placement": {"regions": [{"min": [1.2,1.2], "max": [4.8,2.8], "rotations": [0, 90, 180, 270]}]},
+                "samplers": [{"name": "table_top", "type": "planar", "center": [0,0,0.76], "size": [0.8,0.6],
+                              "grid": [2,2], "target": [300, 600], "tolerance": 100}],
+                "children": [
+                  {"name": "table", "parts": [{"preset": "table", "size": [1.0, 0.8, 0.75], "material": "wood"}]},
+                  {"name": "chair1", "position": [0, -0.6], "rotation": 180,
+                   "placement": {"regions": [{"min": [-0.2,-0.7], "max": [0.2,-0.5], "rotations": [180]}]},
+                   "parts": [{"preset": "chair", "material": "wood"}]},
+                  {"name": "chair2", "position": [0, 0.6],
+                   "placement": {"regions": [{"min": [-0.2,0.5], "max": [0.2,0.7], "rotations": [0]}]},
+                   "parts": [{"preset": "chair", "material": "wood"}]}]}],
+  "constraints": [{"type": "alignment", "a": "set", "b": "room", "tolerance_deg": 10}],
+  "objective": {"lighting_weight": 0.5},
+  "optimizer": {"iterations": 300, "seed": 4, "paths_per_point": 8, "report_paths_per_point": 64}})";
+
+TEST(Cli, OptimizeFlatRunsTheGrouplessBaselineAndItsLayoutsReadBack) {
+    test::TempDir dir;
+    auto scene = dir.write("scene.json", kDiningSet);
+    auto out = dir.path() / "flat";
+    Result r = run("optimize " + scene.string() + " -o " + out.string() + " --flat --threads 1 --no-pictures");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("flat: 3 objects without groups, 4 cohesion constraints"), std::string::npos) << r.output;
+    auto report = nlohmann::json::parse(std::ifstream(out / "report.json"));
+    ASSERT_TRUE(report["feasible"].get<bool>()) << report.dump(1);
+    EXPECT_EQ(report["settings"]["hierarchy"], "flat") << report.dump(1);
+    int cohesion = 0;
+    for (const auto& c : report["constraints"])
+        cohesion += c["json_path"].get<std::string>().find("(cohesion with set.table)") != std::string::npos;
+    EXPECT_EQ(cohesion, 4);
+    // layout.json is in the scene's hierarchy and validates against it; layout_flat.json
+    // measures (--flat) exactly as the report did.
+    auto layout = nlohmann::json::parse(std::ifstream(out / "layout.json"));
+    for (const char* e : {"set", "set.chair1", "set.chair2"}) EXPECT_TRUE(layout["entities"].contains(e)) << e;
+    Result v = run("validate " + scene.string() + " --layout " + (out / "layout.json").string());
+    EXPECT_EQ(v.exitCode, 0) << v.output;
+    Result m = run("measure " + scene.string() + " --flat --layout " + (out / "layout_flat.json").string() +
+                   " --paths 64 --json");
+    ASSERT_EQ(m.exitCode, 0) << m.output;
+    auto measured = nlohmann::json::parse(m.output.substr(m.output.find('{')));
+    EXPECT_DOUBLE_EQ(measured["samplers"][0]["value"].get<double>(), report["samplers"][0]["value"].get<double>());
+    // The hierarchical reading of layout.json puts everything in the same place.
+    Result h = run("measure " + scene.string() + " --layout " + (out / "layout.json").string() + " --paths 64 --json");
+    ASSERT_EQ(h.exitCode, 0) << h.output;
+    auto hier = nlohmann::json::parse(h.output.substr(h.output.find('{')));
+    EXPECT_NEAR(hier["samplers"][0]["value"].get<double>(), report["samplers"][0]["value"].get<double>(),
+                1e-6 * report["samplers"][0]["value"].get<double>());
+}
+
 TEST(Cli, OptimizeFindsTheLitRegionAndWritesItsOutputs) {
     test::TempDir dir;
     auto scene = dir.write("scene.json", kLightSeeking);
