@@ -85,8 +85,11 @@ bool runOptimize(const OptimizeArgs& args) {
     measure.seed = options.seed;
     measure.threads = args.threads;
     std::unique_ptr<PathTracedLighting> lighting;
-    if (!scene.samplers.empty())
+    const int reportPaths = std::max(scene.optimizer.reportPathsPerPoint, measure.pathsPerPoint);
+    if (!scene.samplers.empty()) {
         lighting = std::make_unique<PathTracedLighting>(scene, daylight ? &*daylight : nullptr, measure);
+        lighting->setConfirmPaths(reportPaths);  // before stopping at C = 0
+    }
 
     Optimizer optimizer(scene, options, lighting && scene.objective.lightingWeight > 0 ? lighting.get() : nullptr);
     optimizer.initialize();
@@ -105,7 +108,7 @@ bool runOptimize(const OptimizeArgs& args) {
     // values it shows are accurate (the chain used paths_per_point).
     if (lighting && result.feasible) {
         MeasureOptions report = measure;
-        report.pathsPerPoint = std::max(scene.optimizer.reportPathsPerPoint, measure.pathsPerPoint);
+        report.pathsPerPoint = reportPaths;
         lighting->setOptions(report);
         Evaluation& best = result.bestEvaluation;
         best.lighting = lighting->evaluate(result.best, worldTransforms(scene, result.best), &best.samplers);

@@ -132,7 +132,7 @@ TEST_F(OptimizerTest, LightingOnlyForLayoutsThatPassTheGeometricTest) {
             rejected += m.rejectedGeometry;
         }
     EXPECT_GT(rejected, 0);  // the room is tight enough that some proposals collide
-    EXPECT_EQ(light.calls, 1 + evaluatedFeasible);
+    EXPECT_EQ(light.calls, 1 + evaluatedFeasible + r.confirmations);
 }
 
 TEST_F(OptimizerTest, NoLightingHookMeansLZero) {
@@ -256,6 +256,49 @@ TEST(OptimizerStop, StopsAtZeroCost) {
     EXPECT_EQ(r.bestEvaluation.cost, 0);
     EXPECT_LT(r.iterations, 20000);
     EXPECT_EQ(r.bestIteration, r.iterations);
+}
+
+// A lighting estimate that always says 0 while a more accurate measurement says
+// `truth`: the run stops at C = 0 only once the measurement confirms it.
+class OptimisticLight : public LightingEvaluator {
+public:
+    explicit OptimisticLight(double truth) : truth_(truth) {}
+    double evaluate(const Layout&, const std::vector<Transform>&, LightingBreakdown*) override { return 0; }
+    double confirm(const Layout&, const std::vector<Transform>&, LightingBreakdown*) override {
+        ++confirms;
+        return truth_;
+    }
+    int confirms = 0;
+
+private:
+    double truth_;
+};
+
+TEST(OptimizerStop, ZeroCostIsConfirmedBeforeStopping) {
+    test::TempDir dir;
+    Scene s = io::loadScene(dir.write("scene.json", R"({
+      "luxplan": 1,
+      "samplers": [{"name": "s", "type": "planar", "center": [2, 2, 1], "size": [1, 1], "target": [100, 200]}],
+      "entities": [
+        {"name": "a", "position": [0, 0], "placement": {"regions": [{"min": [0, 0], "max": [4, 4]}]}},
+        {"name": "b", "position": [1, 0], "placement": {"regions": [{"min": [0, 0], "max": [4, 4]}]}}],
+      "constraints": [{"type": "distance", "a": "a", "b": "b", "min": 0.5, "max": 1.5}]})"));
+    OptimizerOptions o;
+    o.iterations = 500;
+    o.start = StartFrom::Scene;  // feasible, G = 0: the estimate says C = 0 at once
+    OptimisticLight wrong(0.4);
+    OptimizerResult r = Optimizer(s, o, &wrong).run();
+    EXPECT_EQ(r.stop, StopReason::Iterations);
+    EXPECT_GE(r.confirmations, 1);
+    EXPECT_EQ(r.confirmations, wrong.confirms);
+    EXPECT_DOUBLE_EQ(r.bestEvaluation.lighting, 0.4);  // the confirmed value, not the estimate
+    EXPECT_DOUBLE_EQ(r.bestEvaluation.cost, 0.2);
+
+    OptimisticLight right(0.0);
+    r = Optimizer(s, o, &right).run();
+    EXPECT_EQ(r.stop, StopReason::ZeroCost);
+    EXPECT_EQ(r.iterations, 0);
+    EXPECT_EQ(r.confirmations, 1);
 }
 
 TEST(OptimizerStop, NothingToMove) {

@@ -30,6 +30,12 @@ public:
     // geometric term rejects, and only when the lighting weight is above 0 (and once
     // more for the final layout's report).
     virtual double evaluate(const Layout& layout, const std::vector<Transform>& world, LightingBreakdown* out) = 0;
+    // L(x) measured more accurately, before the chain stops because its estimate of
+    // C reached 0 (a noisy estimate reaches 0 sooner than the layout does). Defaults
+    // to evaluate().
+    virtual double confirm(const Layout& layout, const std::vector<Transform>& world, LightingBreakdown* out) {
+        return evaluate(layout, world, out);
+    }
 };
 
 }  // namespace luxplan

@@ -135,7 +135,7 @@ void Optimizer::initialize() {
     best_ = current_;
     bestEval_ = currentEval_;
     feasible_ = !currentEval_.rejected;
-    iteration_ = bestIteration_ = 0;
+    iteration_ = bestIteration_ = confirmations_ = 0;
     trace_.clear();
     record();
     initialized_ = true;
@@ -234,7 +234,19 @@ OptimizerResult Optimizer::run(const ProgressCallback& progress, const std::atom
         pr.etaSeconds = done > 0 ? pr.seconds / done * std::max(0, options_.iterations - iteration_) : 0.0;
         progress(pr);
     };
-    auto solved = [&] { return options_.stopAtZeroCost && feasible_ && bestEval_.cost == 0; };
+    auto solved = [&] {
+        if (!options_.stopAtZeroCost || !feasible_ || bestEval_.cost != 0) return false;
+        if (!bestEval_.lightingEvaluated) return true;
+        // A noisy estimate of L reaches 0 before the layout does: measure it again.
+        ++confirmations_;
+        Evaluation confirmed = bestEval_;
+        confirmed.lighting = lighting_->confirm(best_, worldTransforms(*scene_, best_), &confirmed.samplers);
+        const double w = scene_->objective.lightingWeight;
+        confirmed.cost = w * confirmed.lighting + (1 - w) * confirmed.geometry;
+        if (bestIteration_ == iteration_) currentEval_ = confirmed;  // the current layout is the best one
+        bestEval_ = confirmed;
+        return confirmed.cost == 0;
+    };
 
     StopReason stop = StopReason::Iterations;
     if (levels_.empty()) stop = StopReason::NothingToMove;
@@ -270,6 +282,7 @@ OptimizerResult Optimizer::run(const ProgressCallback& progress, const std::atom
     r.startEvaluation = startEval_;
     r.iterations = iteration_;
     r.bestIteration = bestIteration_;
+    r.confirmations = confirmations_;
     r.seconds = seconds();
     r.stop = stop;
     r.feasible = feasible_;

@@ -55,7 +55,10 @@ struct OptimizerOptions {
     StartFrom start = StartFrom::Uniform;
     int startAttempts = 1000;
     MoveOptions moves;
-    bool stopAtZeroCost = true;  // the paper stops as soon as C = 0
+    // The paper stops as soon as C = 0. With a lighting term the chain first confirms
+    // it (LightingEvaluator::confirm); a confirmed C above 0 replaces the best
+    // layout's estimate and the run goes on.
+    bool stopAtZeroCost = true;
     int progressEvery = 100;     // iterations between progress callbacks
     int traceEvery = 0;          // iterations between trace rows; 0: about 10^4 rows per run
 };
@@ -115,6 +118,7 @@ struct OptimizerResult {
     Evaluation startEvaluation;
     int iterations = 0;  // proposals made
     int bestIteration = 0;
+    int confirmations = 0;  // zero-cost estimates measured again before stopping
     double seconds = 0;
     StopReason stop = StopReason::Iterations;
     bool feasible = false;       // some layout passed the geometric test
@@ -165,6 +169,7 @@ private:
     Evaluation currentEval_, bestEval_, startEval_;
     bool feasible_ = false;
     int iteration_ = 0, bestIteration_ = 0, traceEvery_ = 1;
+    int confirmations_ = 0;
     std::vector<TracePoint> trace_;
 };
 

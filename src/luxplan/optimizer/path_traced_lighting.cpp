@@ -25,4 +25,12 @@ double PathTracedLighting::evaluate(const Layout& /*layout*/, const std::vector<
     return scene_.samplers.empty() ? 0.0 : lightingCost(scene_, values);
 }
 
+double PathTracedLighting::confirm(const Layout& layout, const std::vector<Transform>& world, LightingBreakdown* out) {
+    const MeasureOptions search = options_;
+    if (confirmPaths_ > 0) options_.pathsPerPoint = confirmPaths_;
+    double cost = evaluate(layout, world, out);
+    options_ = search;
+    return cost;
+}
+
 }  // namespace luxplan

@@ -15,6 +15,10 @@ public:
     PathTracedLighting(const Scene& scene, const DaylightEnvironment* daylight, const MeasureOptions& options);
 
     double evaluate(const Layout& layout, const std::vector<Transform>& world, LightingBreakdown* out) override;
+    // evaluate() with `confirmPathsPerPoint` paths per point (set by setConfirmPaths;
+    // by default the same as the search's).
+    double confirm(const Layout& layout, const std::vector<Transform>& world, LightingBreakdown* out) override;
+    void setConfirmPaths(int pathsPerPoint) { confirmPaths_ = pathsPerPoint; }
 
     // The full measurement of the last evaluated layout (per-point values, errors).
     const MeasureResult& lastMeasurement() const { return last_; }
@@ -27,6 +31,7 @@ private:
     EmbreeScene rt_;
     PathTracer tracer_;
     MeasureOptions options_;
+    int confirmPaths_ = 0;  // 0: options_.pathsPerPoint
     MeasureResult last_;
     uint64_t evaluations_ = 0;
     RayStats rays_;

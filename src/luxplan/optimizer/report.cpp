@@ -81,6 +81,7 @@ std::string reportJson(const Scene& scene, const OptimizerResult& r) {
     if (best.rejected) j["rejected_by"] = best.rejectedBy;
     j["iterations"] = r.iterations;
     j["best_iteration"] = r.bestIteration;
+    j["zero_cost_confirmations"] = r.confirmations;
     j["seconds"] = r.seconds;
     j["stop_reason"] = stopReasonName(r.stop);
     j["start"] = {{"C", number(r.startEvaluation.cost)}, {"L", number(r.startEvaluation.lighting)},
