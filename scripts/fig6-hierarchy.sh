@@ -2,7 +2,8 @@
 # The paper's Figure 6: hierarchical against flat optimization at equal iterations,
 # over several seeds, on one scene. Writes OUT/<scene>/{hierarchical,flat}-<seed>/
 # (every run's layout.json, report.json, trace.csv), the chart OUT/<scene>.svg and
-# the table OUT/<scene>.md (scripts/plot_traces.py).
+# the tables OUT/<scene>.md: the search's best C at several iterations
+# (scripts/plot_traces.py) and the final layouts' re-measured C (scripts/report_table.py).
 #
 #   scripts/fig6-hierarchy.sh SCENE.json [ITERATIONS] [SEEDS] [OUT]
 #   e.g. scripts/fig6-hierarchy.sh scenes/paper/fig9-apartment-night.json 5000 8 out/fig6
@@ -41,4 +42,8 @@ python3 "$(dirname "$0")/plot_traces.py" -o "$out/$name.svg" \
   --title "$name: best C vs iteration ($seeds seeds)" \
   --group hierarchical "$out/$name"/hierarchical-*/trace.csv \
   --group "flat (--flat)" "$out/$name"/flat-*/trace.csv | tee "$out/$name.md"
+echo >> "$out/$name.md"
+python3 "$(dirname "$0")/report_table.py" \
+  --group hierarchical "$out/$name"/hierarchical-*/report.json \
+  --group "flat (--flat)" "$out/$name"/flat-*/report.json | tee -a "$out/$name.md"
 echo "wrote $out/$name.svg and $out/$name.md"
