@@ -1,10 +1,6 @@
 // The command line contract: exit codes and FILE: /json/path: message lines.
 #include <gtest/gtest.h>
 
-#include <array>
-#include <cstdio>
-#include <sys/wait.h>
-
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -13,28 +9,14 @@
 #include <stb_image.h>
 #include <tiny_gltf.h>
 
+#include "run_cli.h"
 #include "support/temp_files.h"
 
 namespace luxplan {
 namespace {
 
-struct Result {
-    int exitCode = -1;
-    std::string output;  // stdout and stderr together
-};
-
-Result run(const std::string& args) {
-    std::string command = std::string(LUXPLAN_CLI) + " " + args + " 2>&1";
-    Result r;
-    FILE* pipe = popen(command.c_str(), "r");
-    if (!pipe) return r;
-    std::array<char, 4096> buffer;
-    size_t n;
-    while ((n = fread(buffer.data(), 1, buffer.size(), pipe)) > 0) r.output.append(buffer.data(), n);
-    int status = pclose(pipe);
-    r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return r;
-}
+using Result = test::CliResult;
+Result run(const std::string& args) { return test::runCli(args); }
 
 const std::string kDemo = std::string(LUXPLAN_SOURCE_DIR) + "/scenes/demo/office.json";
 

@@ -1,0 +1,78 @@
+// Every bundled scene of scenes/paper/ validates, optimizes (a few iterations, few
+// paths) and leaves every output: pictures that decode, a .glb that parses, a layout
+// that reads back.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <stb_image.h>
+#include <tiny_gltf.h>
+
+#include "run_cli.h"
+#include "support/temp_files.h"
+
+namespace luxplan {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kPaperScenes = fs::path(LUXPLAN_SOURCE_DIR) / "scenes" / "paper";
+
+std::vector<std::string> paperScenes() {
+    std::vector<std::string> names;
+    for (const auto& entry : fs::directory_iterator(kPaperScenes)) {
+        std::string name = entry.path().filename().string();
+        if (entry.path().extension() == ".json" && name.find("-layout") == std::string::npos)
+            names.push_back(entry.path().stem().string());
+    }
+    std::sort(names.begin(), names.end());
+    return names;
+}
+
+class PaperScene : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(PaperScene, ValidatesOptimizesAndWritesEveryOutput) {
+    const fs::path scene = kPaperScenes / (GetParam() + ".json");
+    test::CliResult v = test::runCli("validate " + scene.string());
+    ASSERT_EQ(v.exitCode, 0) << v.output;
+
+    test::TempDir dir;
+    const fs::path out = dir.path() / "out";
+    test::CliResult r = test::runCli("optimize " + scene.string() + " -o " + out.string() +
+                                     " --iterations 8 --paths 2 --threads 2 -q --spp 1");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    for (const char* f : {"layout.json", "report.json", "trace.csv", "report.html"})
+        EXPECT_TRUE(fs::is_regular_file(out / f)) << f;
+    for (const char* png : {"plan.png", "render.png", "convergence.png"}) {
+        int w = 0, h = 0, n = 0;
+        EXPECT_TRUE(stbi_info((out / png).c_str(), &w, &h, &n) && w > 0 && h > 0) << png;
+    }
+    tinygltf::TinyGLTF loader;
+    tinygltf::Model model;
+    std::string err, warn;
+    EXPECT_TRUE(loader.LoadBinaryFromFile(&model, &err, &warn, (out / "scene.glb").string())) << err;
+    EXPECT_GT(model.nodes.size(), 1u);
+
+    test::CliResult back = test::runCli("validate " + scene.string() + " --layout " + (out / "layout.json").string());
+    EXPECT_EQ(back.exitCode, 0) << back.output;
+}
+
+INSTANTIATE_TEST_SUITE_P(Bundled, PaperScene, ::testing::ValuesIn(paperScenes()),
+                         [](const ::testing::TestParamInfo<std::string>& info) {
+                             std::string name = info.param;
+                             std::replace(name.begin(), name.end(), '-', '_');
+                             return name;
+                         });
+
+TEST(PaperScenes, AllTwelveAreBundledAndTheLabLayoutReadsBack) {
+    EXPECT_EQ(paperScenes().size(), 12u);
+    test::CliResult r = test::runCli("validate " + (kPaperScenes / "fig8-lab.json").string() + " --layout " +
+                                     (kPaperScenes / "fig8-lab-symmetric-layout.json").string());
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+}
+
+}  // namespace
+}  // namespace luxplan
