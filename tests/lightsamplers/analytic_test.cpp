@@ -137,6 +137,47 @@ TEST(Analytic, GlazedOpeningScalesByThePanesTransmittance) {
     expectWithin(rg.samplers[0], expected(0.8), 1e-3, "glazed");
 }
 
+TEST(Analytic, SeveralPortalsSumTheirProjectedSolidAngles) {
+    // Black room, uniform sky over a black ground, two windows on different walls, a
+    // door and a skylight: an upward sensor gets L times the projected solid angle of
+    // the openings above its horizon. Portal sampling (one opening by weight, then its
+    // spherical rectangle) and plain sky-map sampling must both give it.
+    const std::string json = R"({"luxplan": 1, )" + materials(0) + R"(,
+      "daylight": {"sky": {"model": "uniform", "luminance_nits": 1000}, "sun": false, "ground_reflectance": 0},
+      "geometry": [{"name": "room", "room": {"min": [0,0,0], "max": [4,4,3]},
+                    "materials": {"floor": "black", "walls": "black", "ceiling": "black"},
+                    "openings": [{"wall": "south", "offset": 1, "width": 2, "sill": 1, "height": 1.5},
+                                 {"wall": "east", "offset": 0.5, "width": 1, "sill": 1.2, "height": 1},
+                                 {"wall": "north", "offset": 2.5, "width": 1, "sill": 0, "height": 2.1},
+                                 {"wall": "ceiling", "center": [1.5, 2.5], "size": [0.8, 0.6]}]}],
+      "samplers": [{"name": "p", "type": "planar", "center": [2,1.6,1.0], "size": [0.001,0.001], "grid": [1,1], "target": [0, null]}]})";
+    // Quadrature of L cos(receiver) cos(opening) dA / d^2 over each opening.
+    const Vec3 p(2, 1.6, 1.0);
+    auto opening = [&](Vec3 corner, Vec3 u, Vec3 v, Vec3 normal) {
+        const int n = 300;
+        double sum = 0, dA = length(u) * length(v) / (n * n);
+        for (int i = 0; i < n; ++i)
+            for (int j = 0; j < n; ++j) {
+                Vec3 d = corner + u * ((i + 0.5) / n) + v * ((j + 0.5) / n) - p;
+                double dist = length(d);
+                if (d.z <= 0) continue;  // below the horizon: the receiver does not see it
+                sum += 1000 * (d.z / dist) * std::abs(dot(d, normal)) / dist * dA / (dist * dist);
+            }
+        return sum;
+    };
+    double expected = opening({1, 0, 1}, {2, 0, 0}, {0, 0, 1.5}, {0, 1, 0}) +     // south
+                      opening({4, 0.5, 1.2}, {0, 1, 0}, {0, 0, 1}, {1, 0, 0}) +   // east
+                      opening({2.5, 4, 0}, {1, 0, 0}, {0, 0, 2.1}, {0, 1, 0}) +   // north door
+                      opening({1.1, 2.2, 3}, {0.8, 0, 0}, {0, 0.6, 0}, {0, 0, 1});  // skylight
+    PathTracerOptions noPortals;
+    noPortals.portals = false;
+    test::Lab portals(json), skyMap(json, noPortals);
+    SamplerResult a = portals.measure(20000).samplers[0], b = skyMap.measure(20000).samplers[0];
+    expectWithin(a, expected, 2e-3, "portals");
+    expectWithin(b, expected, 5e-3, "sky map");  // the map's pixels cut the opening edges
+    EXPECT_LT(a.standardError, 0.5 * b.standardError);
+}
+
 TEST(Analytic, SunPatchFallsWhereGeometryPutsIt) {
     // Sun from the south at 45 degrees through a 2 x 1 m opening with sill 1 m: the patch
     // on the floor spans x in [2, 4], y in [1, 2] (up to the disk's half-degree blur).

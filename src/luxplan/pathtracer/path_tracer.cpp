@@ -57,64 +57,79 @@ void PathTracer::viewPortals(const Vec3& p, PortalView& view) const {
     // Every path of a sampler point starts at the same place: keep the last view of
     // each thread (measureSamplers runs a point's paths on one thread in a row).
     thread_local uint64_t cachedTracer = 0;
-    thread_local Vec3 cachedPoint;
     thread_local PortalView cachedView;
-    if (cachedTracer == id_ && cachedPoint == p) {
-        view.active = cachedView.active, view.count = cachedView.count, view.total = cachedView.total;
-        std::copy(cachedView.rects, cachedView.rects + cachedView.count, view.rects);
-        return;
+    if (cachedTracer != id_ || !(cachedView.point == p)) {
+        computePortals(p, cachedView, true);
+        cachedTracer = id_;
     }
-    computePortals(p, view);
-    cachedTracer = id_, cachedPoint = p;
-    cachedView.active = view.active, cachedView.count = view.count, cachedView.total = view.total;
-    std::copy(view.rects, view.rects + view.count, cachedView.rects);
+    view = cachedView;
 }
 
-void PathTracer::computePortals(const Vec3& p, PortalView& view) const {
+void PathTracer::computePortals(const Vec3& p, PortalView& view, bool buildAll) const {
     view.active = options_.portals && hasRoom_ && !portals_.empty() && room_.contains(p);
+    view.point = p;
     view.count = 0;
-    view.total = 0;
+    view.weightTotal = 0;
     if (!view.active) return;
     for (const Rect3& r : portals_) {
         if (view.count == kMaxPortals) break;
-        view.rects[view.count] = SphericalRect(r, p);
-        view.total += view.rects[view.count++].solidAngle();
+        const int i = view.count++;
+        // Area x cos / d^2 = |n . d| / d^3 with n = edgeU x edgeV (|n| = area).
+        Vec3 d = r.corner + (r.edgeU + r.edgeV) * 0.5 - p;
+        double d2 = dot(d, d);
+        double w = d2 > 0 ? std::abs(dot(cross(r.edgeU, r.edgeV), d)) / (d2 * std::sqrt(d2)) : 2 * kPi;
+        view.weight[i] = std::min(w, 2 * kPi);
+        view.weightTotal += view.weight[i];
+        view.built[i] = false;
+        if (buildAll) portalRect(view, i);
     }
 }
 
+const SphericalRect& PathTracer::portalRect(const PortalView& view, int i) const {
+    if (!view.built[i]) {
+        view.rects[i] = SphericalRect(portals_[size_t(i)], view.point);
+        view.built[i] = true;
+    }
+    return view.rects[i];
+}
+
 // Inside the room every sky direction that can reach p passes through one opening, so
-// sampling the openings' spherical rectangles (uniform over their joint solid angle)
-// wastes no samples on walls. Outside, the sky map's own importance sampling is used.
+// sampling the openings' spherical rectangles wastes no samples on walls. Outside,
+// the sky map's own importance sampling is used.
 double PathTracer::skyPdf(const PortalView& view, const Vec3& p, const Vec3& w) const {
     if (!daylight_ || !daylight_->hasSky()) return 0;
     if (!view.active) return daylight_->skyPdf(w);
-    if (view.total <= 0) return 0;
+    if (view.weightTotal <= 0) return 0;
     for (int i = 0; i < view.count; ++i)
-        if (portals_[i].intersect(p, w) > 0) return 1 / view.total;
+        if (view.weight[i] > 0 && portals_[size_t(i)].intersect(p, w) > 0) {
+            double omega = portalRect(view, i).solidAngle();
+            return omega > 0 ? view.weight[i] / view.weightTotal / omega : 0;
+        }
     return 0;
 }
 
 EnvironmentSample PathTracer::sampleSky(const PortalView& view, const Vec3& p, Vec2 u) const {
     if (!view.active) return daylight_->sampleSky(u);
     EnvironmentSample s;
-    if (view.total <= 0) return s;
-    // Choose a portal by solid angle, reusing u.x within the chosen interval.
-    double target = u.x * view.total, acc = 0;
+    if (view.weightTotal <= 0) return s;
+    // Choose a portal by weight, reusing u.x within the chosen interval.
+    double target = u.x * view.weightTotal, acc = 0;
     int chosen = -1;
     for (int i = 0; i < view.count; ++i) {
-        double omega = view.rects[i].solidAngle();
-        if (omega > 0 && target < acc + omega) {
+        if (view.weight[i] > 0 && target < acc + view.weight[i]) {
             chosen = i;
-            u.x = std::min((target - acc) / omega, 1 - 1e-12);
+            u.x = std::min((target - acc) / view.weight[i], 1 - 1e-12);
             break;
         }
-        acc += omega;
+        acc += view.weight[i];
     }
     if (chosen < 0) return s;
-    Vec3 q = view.rects[chosen].sample(u);
+    const SphericalRect& rect = portalRect(view, chosen);
+    if (rect.solidAngle() <= 0) return s;
+    Vec3 q = rect.sample(u);
     s.wi = normalize(q - p);
     s.Le = daylight_->Le(s.wi);
-    s.pdf = 1 / view.total;
+    s.pdf = view.weight[chosen] / view.weightTotal / rect.solidAngle();
     return s;
 }
 
@@ -185,7 +200,8 @@ double PathTracer::trace(SensorKind sensor, const Vec3& origin, const Vec3& n, R
     double lastPdf = 0;
     Vec3 lastPoint = origin;
     const bool sky = daylight_ && daylight_->hasSky();
-    PortalView view, lastView;
+    PortalView views[2];  // this vertex's, and the last non-delta vertex's
+    int current = 0;
     double firstWeight = 0;
 
     for (int depth = 0; depth < options_.maxDepth; ++depth) {
@@ -212,7 +228,9 @@ double PathTracer::trace(SensorKind sensor, const Vec3& origin, const Vec3& n, R
                 addLight(s.wi, s.Le, s.pdf, kInf, -1);
             }
             if (sky) {
-                viewPortals(v.p, view);
+                PortalView& view = views[current];
+                if (depth == 0) viewPortals(v.p, view);
+                else computePortals(v.p, view, false);
                 EnvironmentSample s = sampleSky(view, v.p, {rng.uniform(), rng.uniform()});
                 addLight(s.wi, s.Le, s.pdf, kInf, -1);
             }
@@ -250,7 +268,7 @@ double PathTracer::trace(SensorKind sensor, const Vec3& origin, const Vec3& n, R
         if (!delta) {
             lastPdf = pdf;
             lastPoint = v.p;
-            if (sky) std::swap(lastView, view);
+            if (sky) current ^= 1;  // views[current ^ 1] is now the last non-delta vertex's
         }
         lastDelta = delta;
 
@@ -270,7 +288,7 @@ double PathTracer::trace(SensorKind sensor, const Vec3& origin, const Vec3& n, R
             if (!hit) {
                 if (daylight_) {
                     Vec3 sky = daylight_->Le(d), sun = daylight_->sunLe(d);
-                    double wSky = lastDelta ? 1 : powerHeuristic(1, lastPdf, 1, skyPdf(lastView, lastPoint, d));
+                    double wSky = lastDelta ? 1 : powerHeuristic(1, lastPdf, 1, skyPdf(views[current ^ 1], lastPoint, d));
                     double wSun = lastDelta ? 1 : powerHeuristic(1, lastPdf, 1, daylight_->sunPdf(d));
                     L += throughput * (sky * wSky + sun * wSun);
                 }

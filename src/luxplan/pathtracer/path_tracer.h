@@ -52,19 +52,26 @@ private:
     enum class SensorKind { Hemisphere, Sphere, Camera };
     double trace(SensorKind sensor, const Vec3& p, const Vec3& n, Rng& rng, RayStats& stats) const;
 
-    // The room's openings seen from one vertex: their spherical rectangles, computed once
-    // per vertex and reused for the sky sample there and for the MIS weight of the ray
-    // that leaves it. Openings beyond kMaxPortals are not sampled directly (BSDF
-    // sampling still finds them, so the estimate stays unbiased).
+    // The room's openings seen from one vertex. A portal is chosen with a cheap weight
+    // (area x cos / distance^2, capped at 2 pi), then a direction uniform in its
+    // spherical rectangle: pdf = P(portal) / solid angle. Only the rectangles a vertex
+    // samples or an escaping ray passes through are set up (four acos each); the view of
+    // a sampler point, shared by all its paths, sets up all. Openings beyond kMaxPortals
+    // are not sampled directly (BSDF sampling still finds them, so the estimate stays
+    // unbiased).
     static constexpr int kMaxPortals = 16;
     struct PortalView {
         bool active = false;  // the vertex is inside the room: sample the portals
         int count = 0;
-        SphericalRect rects[kMaxPortals];
-        double total = 0;     // joint solid angle (sr)
+        Vec3 point;
+        double weight[kMaxPortals] = {};
+        double weightTotal = 0;
+        mutable SphericalRect rects[kMaxPortals];
+        mutable bool built[kMaxPortals] = {};
     };
     void viewPortals(const Vec3& p, PortalView& view) const;
-    void computePortals(const Vec3& p, PortalView& view) const;
+    void computePortals(const Vec3& p, PortalView& view, bool buildAll) const;
+    const SphericalRect& portalRect(const PortalView& view, int i) const;
     double skyPdf(const PortalView& view, const Vec3& p, const Vec3& w) const;
     EnvironmentSample sampleSky(const PortalView& view, const Vec3& p, Vec2 u) const;
     // Transmittance along p + t w up to tMax (the distance to the sampled point on
