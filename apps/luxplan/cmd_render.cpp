@@ -17,6 +17,7 @@ struct PictureArgs {
     int64_t seed = -1;
     double cell = 0;
     int cellPaths = 0;
+    bool raw = false;
 };
 
 void addPictureOptions(CLI::App* cmd, PictureArgs& args) {
@@ -29,6 +30,7 @@ void addPictureOptions(CLI::App* cmd, PictureArgs& args) {
         ->check(CLI::PositiveNumber);
     cmd->add_option("--spp", args.spp, "Render samples per pixel (default " + std::to_string(defaults.renderSamplesPerPixel) + ")")
         ->check(CLI::PositiveNumber);
+    cmd->add_flag("--raw", args.raw, "render.png without the denoising filter (the path tracer's pixel means)");
     cmd->add_option("--paths", args.paths, "Paths per sampler point (default " + std::to_string(defaults.samplerPaths) + ")")
         ->check(CLI::PositiveNumber);
     cmd->add_option("--cell", args.cell, "Work-plane grid cell in metres (default 0.25)")->check(CLI::PositiveNumber);
@@ -44,6 +46,7 @@ OutputOptions outputOptions(const PictureArgs& args, const Scene& scene) {
     if (args.width > 0) o.renderWidth = args.width;
     if (args.height > 0) o.renderHeight = args.height;
     if (args.spp > 0) o.renderSamplesPerPixel = args.spp;
+    o.renderDenoise = !args.raw;
     if (args.paths > 0) o.samplerPaths = args.paths;
     if (args.cell > 0) o.cellSize = args.cell;
     if (args.cellPaths > 0) o.cellPaths = args.cellPaths;

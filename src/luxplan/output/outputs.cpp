@@ -90,6 +90,7 @@ RunOutputs writeRunOutputs(const std::filesystem::path& folder, const Scene& sce
         ro.width = options.renderWidth;
         ro.height = options.renderHeight;
         ro.samplesPerPixel = options.renderSamplesPerPixel;
+        ro.denoise = options.renderDenoise;
         ro.seed = options.seed;
         ro.threads = options.threads;
         writePng(renderPerspective(tracer, defaultCamera(scene), ro), folder / "render.png");

@@ -25,6 +25,7 @@ struct OutputOptions {
     bool glb = true;          // scene.glb
     bool html = true;         // report.html (written last; links what exists)
     int renderWidth = 480, renderHeight = 320, renderSamplesPerPixel = 16;
+    bool renderDenoise = true;      // edge-avoiding filter on render.png (denoise.h)
     double cellSize = 0.25;         // work-plane grid cell (m)
     int cellPaths = 32;             // illuminance samples per cell
     double workPlaneHeight = 0.8;   // m above the floor

@@ -64,43 +64,91 @@ Camera defaultCamera(const Scene& scene) {
     return camera;
 }
 
+namespace {
+
+// Primary rays of a pinhole camera: (px, py) in pixels from the top-left corner.
+struct CameraRays {
+    CameraRays(const Camera& camera, int width, int height) : origin(camera.position), width(width), height(height) {
+        forward = normalize(camera.lookAt - camera.position);
+        right = cross(forward, camera.up);
+        if (length(right) < 1e-9) right = cross(forward, std::abs(forward.x) < 0.9 ? Vec3(1, 0, 0) : Vec3(0, 1, 0));
+        right = normalize(right);
+        up = cross(right, forward);
+        tanHalf = std::tan(radians(std::clamp(camera.fovDeg, 1.0, 179.0)) / 2);
+        aspect = double(width) / height;
+    }
+    Ray at(double px, double py) const {
+        double sx = (2 * px / width - 1) * tanHalf * aspect;
+        double sy = (1 - 2 * py / height) * tanHalf;
+        return {origin, normalize(forward + right * sx + up * sy)};
+    }
+    Vec3 origin, forward, right, up;
+    double tanHalf = 1, aspect = 1;
+    int width, height;
+};
+
+template <typename Rows>
+void forRows(int height, int threads, const Rows& rows) {
+    auto run = [&] { tbb::parallel_for(tbb::blocked_range<int>(0, height, 1), rows); };
+    if (threads > 0) tbb::task_arena(threads).execute(run);
+    else run();
+}
+
+}  // namespace
+
 LuminanceImage renderLuminance(const PathTracer& tracer, const Camera& camera, const RenderOptions& options) {
     LuminanceImage out;
     out.width = std::max(1, options.width);
     out.height = std::max(1, options.height);
     out.values.assign(size_t(out.width) * size_t(out.height), 0.0);
+    out.variance.assign(out.values.size(), 0.0);
+    out.emitters.assign(out.values.size(), 0.0);
     const int spp = std::max(1, options.samplesPerPixel);
+    const CameraRays rays(camera, out.width, out.height);
+    const EmbreeScene& rt = tracer.rayTracer();
 
-    Vec3 forward = normalize(camera.lookAt - camera.position);
-    Vec3 right = cross(forward, camera.up);
-    if (length(right) < 1e-9) right = cross(forward, std::abs(forward.x) < 0.9 ? Vec3(1, 0, 0) : Vec3(0, 1, 0));
-    right = normalize(right);
-    Vec3 up = cross(right, forward);
-    const double tanHalf = std::tan(radians(std::clamp(camera.fovDeg, 1.0, 179.0)) / 2);
-    const double aspect = double(out.width) / out.height;
-
-    auto renderRows = [&](const tbb::blocked_range<int>& rows) {
+    forRows(out.height, options.threads, [&](const tbb::blocked_range<int>& rows) {
         RayStats stats;
         for (int y = rows.begin(); y != rows.end(); ++y)
             for (int x = 0; x < out.width; ++x) {
                 const uint64_t pixel = uint64_t(y) * uint64_t(out.width) + uint64_t(x);
-                double sum = 0;
+                double sum = 0, sumSquares = 0, emitters = 0;
                 for (int k = 0; k < spp; ++k) {
                     Rng rng(hashValues({options.seed, kRenderTag, pixel, uint64_t(k)}));
                     double u = rng.uniform(), v = rng.uniform();
-                    double sx = (2 * (x + u) / out.width - 1) * tanHalf * aspect;
-                    double sy = (1 - 2 * (y + v) / out.height) * tanHalf;
-                    Ray ray{camera.position, normalize(forward + right * sx + up * sy)};
+                    const Ray ray = rays.at(x + u, y + v);
                     double L = tracer.radianceSample(ray, rng, stats);
-                    if (std::isfinite(L) && L > 0) sum += L;
+                    if (!std::isfinite(L) || L <= 0) continue;
+                    auto first = rt.intersect(ray);
+                    if (first && first->kind == HitKind::Emitter) emitters += L;
+                    else sum += L, sumSquares += L * L;
                 }
-                out.values[pixel] = sum / spp;
+                const double mean = sum / spp;
+                out.values[pixel] = mean + emitters / spp;
+                out.emitters[pixel] = emitters / spp;
+                out.variance[pixel] = spp > 1 ? std::max(0.0, sumSquares / spp - mean * mean) / (spp - 1) : mean * mean;
             }
-    };
-    auto run = [&] { tbb::parallel_for(tbb::blocked_range<int>(0, out.height, 1), renderRows); };
-    if (options.threads > 0) tbb::task_arena(options.threads).execute(run);
-    else run();
+    });
     return out;
+}
+
+GuideBuffer cameraGuide(const EmbreeScene& rt, const Camera& camera, int width, int height) {
+    GuideBuffer g;
+    g.width = width, g.height = height;
+    const size_t n = size_t(width) * size_t(height);
+    g.position.assign(n, Vec3()), g.normal.assign(n, Vec3(0, 0, 1)), g.surface.assign(n, -1);
+    const CameraRays rays(camera, width, height);
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            const size_t p = size_t(y) * width + x;
+            Ray ray = rays.at(x + 0.5, y + 0.5);
+            auto hit = rt.intersect(ray);
+            if (!hit || hit->kind == HitKind::Emitter) continue;
+            g.position[p] = hit->point;
+            g.normal[p] = dot(hit->shadingNormal, ray.direction) <= 0 ? hit->shadingNormal : -hit->shadingNormal;
+            g.surface[p] = int32_t(hit->material);
+        }
+    return g;
 }
 
 double autoExposure(const LuminanceImage& image) {
@@ -131,6 +179,13 @@ Image toneMap(const LuminanceImage& image, double exposure) {
 
 Image renderPerspective(const PathTracer& tracer, const Camera& camera, const RenderOptions& options) {
     LuminanceImage luminance = renderLuminance(tracer, camera, options);
+    if (options.denoise) {
+        std::vector<double> surfaces(luminance.values.size());
+        for (size_t i = 0; i < surfaces.size(); ++i) surfaces[i] = luminance.values[i] - luminance.emitters[i];
+        denoiseLuminance(surfaces, luminance.variance,
+                         cameraGuide(tracer.rayTracer(), camera, luminance.width, luminance.height), camera.position);
+        for (size_t i = 0; i < surfaces.size(); ++i) luminance.values[i] = surfaces[i] + luminance.emitters[i];
+    }
     double exposure = options.exposure > 0 ? options.exposure : autoExposure(luminance);
     return toneMap(luminance, exposure);
 }

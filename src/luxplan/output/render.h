@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include <luxplan/output/denoise.h>
 #include <luxplan/output/image.h>
 #include <luxplan/pathtracer/path_tracer.h>
 
@@ -30,12 +31,18 @@ struct RenderOptions {
     uint64_t seed = 1;
     int threads = 0;        // 0: all cores; the image does not depend on it
     double exposure = 0;    // multiplies luminance before the tone curve; 0: automatic
+    bool denoise = true;    // renderPerspective: edge-avoiding à-trous filter (denoise.h)
 };
 
 // Luminance (cd/m^2) per pixel, row-major, top row first.
 struct LuminanceImage {
     int width = 0, height = 0;
     std::vector<double> values;
+    // renderLuminance only: the variance of each pixel's mean, and the part of the mean
+    // from samples whose camera ray hits a luminaire (the denoiser leaves it out, so that
+    // a lamp's edge stays sharp and its light does not spread over the ceiling). Both
+    // exclude the emitter samples.
+    std::vector<double> variance, emitters;
 };
 
 // Each pixel averages samplesPerPixel radianceSample()s through jittered positions in
@@ -51,7 +58,12 @@ double autoExposure(const LuminanceImage& image);
 // carries luminance only, no colour.
 Image toneMap(const LuminanceImage& image, double exposure);
 
-// renderLuminance + toneMap (exposure from the options, or autoExposure).
+// What the camera sees at each pixel's centre: first hit, normal, material (the guide
+// of the denoiser).
+GuideBuffer cameraGuide(const EmbreeScene& rt, const Camera& camera, int width, int height);
+
+// renderLuminance, denoiseLuminance (unless options.denoise is off) and toneMap
+// (exposure from the options, or autoExposure).
 Image renderPerspective(const PathTracer& tracer, const Camera& camera, const RenderOptions& options = {});
 
 // The two images next to each other on white, each with its label above (heights may differ).
