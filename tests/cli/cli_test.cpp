@@ -254,7 +254,7 @@ TEST(Cli, RenderReportAndOptimizeWriteTheirPictures) {
     const std::string tiny = small + " --width 48 --height 32 --paths 8 --cell 0.5 --cell-paths 4";
 
     auto render = dir.path() / "render";
-    Result r = run("render " + scene.string() + " --layout " + layout.string() + " -o " + render.string() + tiny);
+    Result r = run("render " + scene.string() + " --layout " + layout.string() + " -o " + render.string() + tiny + " --raw");
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_EQ(expectPng(render / "render.png"), std::pair(48, 32));
     expectPng(render / "plan.png");
