@@ -10,15 +10,34 @@ namespace luxplan {
 
 static double cross(Vec2 a, Vec2 b) { return a.x * b.y - a.y * b.x; }
 
-std::vector<Vec2> worldFronts(const Scene& scene, const std::vector<Transform>& world, int e) {
-    std::vector<Vec2> fronts;
-    for (Vec2 f : scene.entities[e].fronts) {
-        Vec3 w = world[e].applyVector({f.x, f.y, 0});
+std::vector<Vec2> frontsIn(const std::vector<Vec2>& fronts, const Transform& frame) {
+    std::vector<Vec2> out;
+    for (Vec2 f : fronts) {
+        Vec3 w = frame.applyVector({f.x, f.y, 0});
         Vec2 xy(w.x, w.y);
         double len = length(xy);
-        if (len > 0) fronts.push_back(xy * (1.0 / len));
+        if (len > 0) out.push_back(xy * (1.0 / len));
     }
-    return fronts;
+    return out;
+}
+
+double axialAngle(const std::vector<Vec2>& fa, const std::vector<Vec2>& fb) {
+    double best = kPi / 2;
+    for (Vec2 u : fa)
+        for (Vec2 v : fb) best = std::min(best, std::atan2(std::abs(cross(u, v)), std::abs(dot(u, v))));
+    return best;
+}
+
+double facingAngle(const std::vector<Vec2>& fronts, const Vec3& from, const Vec3& to) {
+    Vec2 d(to.x - from.x, to.y - from.y);
+    if (length(d) < 1e-9) return kPi / 2;
+    double best = kPi;
+    for (Vec2 u : fronts) best = std::min(best, std::atan2(std::abs(cross(u, d)), dot(u, d)));
+    return best;
+}
+
+std::vector<Vec2> worldFronts(const Scene& scene, const std::vector<Transform>& world, int e) {
+    return frontsIn(scene.entities[e].fronts, world[e]);
 }
 
 namespace {
@@ -37,29 +56,11 @@ End resolveEnd(const Scene& scene, const EntityInfo& info, const std::vector<Tra
     const Transform groupFromWorld = worldFromGroup.inverse();
     Bounds3 box;
     for (int m : group->members) box.extend((groupFromWorld * world[m]).apply(info.localBounds(m)));
-    End end{group->members.empty() ? worldFromGroup.t : worldFromGroup.applyPoint(box.center()), {}};
-    for (Vec2 f : group->fronts) {
-        Vec3 w = worldFromGroup.applyVector({f.x, f.y, 0});
-        Vec2 xy(w.x, w.y);
-        if (length(xy) > 0) end.fronts.push_back(xy * (1.0 / length(xy)));
-    }
-    return end;
+    return {group->members.empty() ? worldFromGroup.t : worldFromGroup.applyPoint(box.center()),
+            frontsIn(group->fronts, worldFromGroup)};
 }
 
-double axialAngle(const std::vector<Vec2>& fa, const std::vector<Vec2>& fb) {
-    double best = kPi / 2;
-    for (Vec2 u : fa)
-        for (Vec2 v : fb) best = std::min(best, std::atan2(std::abs(cross(u, v)), std::abs(dot(u, v))));
-    return best;
-}
-
-double facingAngle(const End& s, const End& t) {
-    Vec2 d(t.center.x - s.center.x, t.center.y - s.center.y);
-    if (length(d) < 1e-9) return kPi / 2;
-    double best = kPi;
-    for (Vec2 u : s.fronts) best = std::min(best, std::atan2(std::abs(cross(u, d)), dot(u, d)));
-    return best;
-}
+double facingAngle(const End& s, const End& t) { return facingAngle(s.fronts, s.center, t.center); }
 
 }  // namespace
 

@@ -18,14 +18,23 @@ inline constexpr double kDistanceRejectFraction = 0.05;
 // one centimetre, half the default voxel edge.
 inline constexpr double kMinDistanceElasticLimit = 0.01;
 
+// Front directions mapped by `frame` (entity frame -> another), as unit vectors in the
+// xy plane; fronts that map to vertical are dropped.
+std::vector<Vec2> frontsIn(const std::vector<Vec2>& fronts, const Transform& frame);
+
+// Eq. 4's measured value: the smallest angle ([0, pi/2]) between the axes of a front
+// in `a` and a front in `b` (unit xy vectors).
+double axialAngle(const std::vector<Vec2>& a, const std::vector<Vec2>& b);
+// Eq. 7's measured value: the smallest angle ([0, pi]) between a front and the
+// horizontal direction from `from` to `to` (coincident: pi/2).
+double facingAngle(const std::vector<Vec2>& fronts, const Vec3& from, const Vec3& to);
+
 // Fronts of an entity in world space, unit vectors in the xy plane.
 std::vector<Vec2> worldFronts(const Scene& scene, const std::vector<Transform>& world, int e);
 
-// The measured values (evaluateRelational): Eq. 4, the smallest angle ([0, pi/2])
-// between the axes of a front of a and a front of b (b = room: the room axes);
-// Eq. 7, the smallest angle ([0, pi]) between a front of s and the horizontal
-// direction from s's centre to t's (coincident centres: pi/2); Eq. 5, the distance
-// between the centres (entityCenter(), or a former group's, ConstraintSpec::groupA/B).
+// evaluateRelational applies axialAngle (b = room: the room axes) and facingAngle to
+// the ends' fronts and centres, and Eq. 5 takes the distance between the centres: an
+// end's own (entityCenter()), or a former group's (ConstraintSpec::groupA/B).
 
 // Eq. 4 read in angle space: P(angle, 0, theta, theta/8, 2). Zero up to the
 // tolerance theta, quadratic beyond, 1 at theta + theta/8.

@@ -7,6 +7,7 @@
 #include <set>
 
 #include <luxplan/constraints/entity_info.h>
+#include <luxplan/constraints/relational.h>
 #include <luxplan/optimizer/placement.h>
 
 namespace luxplan {
@@ -107,18 +108,6 @@ std::vector<Transform> samplePlacements(const Entity& e) {
                        e.position.z);
                 for (double t : turns) out.push_back(Transform::placement(p, t));
             }
-    }
-    return out;
-}
-
-double cross2(Vec2 a, Vec2 b) { return a.x * b.y - a.y * b.x; }
-
-std::vector<Vec2> frontsIn(const Entity& e, const Transform& frame) {
-    std::vector<Vec2> out;
-    for (Vec2 f : e.fronts) {
-        Vec3 w = frame.applyVector({f.x, f.y, 0});
-        Vec2 xy(w.x, w.y);
-        if (length(xy) > 0) out.push_back(xy * (1.0 / length(xy)));
     }
     return out;
 }
@@ -277,20 +266,16 @@ FlatScene flattenScene(const Scene& scene) {
         const Entity& fb = out.entities[size_t(b)];
         const Transform bInGroup = flat.entityFromRepresentative[group];
         const Vec3 cb = bInGroup.applyPoint(ownCenter(fb));
-        const std::vector<Vec2> frontsB = frontsIn(fb, bInGroup);
+        const std::vector<Vec2> frontsB = frontsIn(fb.fronts, bInGroup);
         double dMin = kInf, dMax = 0, focusMax = 0, alignMax = 0;
         for (const Transform& placement : samplePlacements(member)) {
             Transform aInGroup = placement * flat.entityFromRepresentative[k];
             Vec3 ca = aInGroup.applyPoint(ownCenter(fa));
             double d = length(ca - cb);
             dMin = std::min(dMin, d), dMax = std::max(dMax, d);
-            Vec2 towards(cb.x - ca.x, cb.y - ca.y);
-            double focus = kPi, align = kPi / 2;
-            for (Vec2 u : frontsIn(fa, aInGroup)) {
-                if (length(towards) > 1e-9) focus = std::min(focus, std::atan2(std::abs(cross2(u, towards)), dot(u, towards)));
-                for (Vec2 v : frontsB) align = std::min(align, std::atan2(std::abs(cross2(u, v)), std::abs(dot(u, v))));
-            }
-            focusMax = std::max(focusMax, focus), alignMax = std::max(alignMax, align);
+            const std::vector<Vec2> frontsA = frontsIn(fa.fronts, aInGroup);
+            focusMax = std::max(focusMax, facingAngle(frontsA, ca, cb));
+            alignMax = std::max(alignMax, axialAngle(frontsA, frontsB));
         }
         ConstraintSpec c;
         c.jsonPath = member.jsonPath + " (cohesion with " + fb.path + ")";

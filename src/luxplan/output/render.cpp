@@ -105,7 +105,6 @@ LuminanceImage renderLuminance(const PathTracer& tracer, const Camera& camera, c
     out.emitters.assign(out.values.size(), 0.0);
     const int spp = std::max(1, options.samplesPerPixel);
     const CameraRays rays(camera, out.width, out.height);
-    const EmbreeScene& rt = tracer.rayTracer();
 
     forRows(out.height, options.threads, [&](const tbb::blocked_range<int>& rows) {
         RayStats stats;
@@ -116,11 +115,10 @@ LuminanceImage renderLuminance(const PathTracer& tracer, const Camera& camera, c
                 for (int k = 0; k < spp; ++k) {
                     Rng rng(hashValues({options.seed, kRenderTag, pixel, uint64_t(k)}));
                     double u = rng.uniform(), v = rng.uniform();
-                    const Ray ray = rays.at(x + u, y + v);
-                    double L = tracer.radianceSample(ray, rng, stats);
+                    bool luminaire = false;
+                    double L = tracer.radianceSample(rays.at(x + u, y + v), rng, stats, luminaire);
                     if (!std::isfinite(L) || L <= 0) continue;
-                    auto first = rt.intersect(ray);
-                    if (first && first->kind == HitKind::Emitter) emitters += L;
+                    if (luminaire) emitters += L;
                     else sum += L, sumSquares += L * L;
                 }
                 const double mean = sum / spp;

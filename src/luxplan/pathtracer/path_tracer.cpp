@@ -42,6 +42,7 @@ PathTracer::PathTracer(const EmbreeScene& rt, const DaylightEnvironment* dayligh
             WallFrame f = wallFrame(room->box, o.wall);
             auto r = openingRect(room->box, o);
             portals_.push_back({f.origin + f.u * r[0] + f.v * r[1], f.u * (r[2] - r[0]), f.v * (r[3] - r[1])});
+            portalNormals_.push_back(cross(portals_.back().edgeU, portals_.back().edgeV));
         }
     }
     updateLayout();
@@ -77,7 +78,7 @@ void PathTracer::computePortals(const Vec3& p, PortalView& view, bool buildAll) 
         // Area x cos / d^2 = |n . d| / d^3 with n = edgeU x edgeV (|n| = area).
         Vec3 d = r.corner + (r.edgeU + r.edgeV) * 0.5 - p;
         double d2 = dot(d, d);
-        double w = d2 > 0 ? std::abs(dot(cross(r.edgeU, r.edgeV), d)) / (d2 * std::sqrt(d2)) : 2 * kPi;
+        double w = d2 > 0 ? std::abs(dot(portalNormals_[size_t(i)], d)) / (d2 * std::sqrt(d2)) : 2 * kPi;
         view.weight[i] = std::min(w, 2 * kPi);
         view.weightTotal += view.weight[i];
         view.built[i] = false;
@@ -166,8 +167,13 @@ double PathTracer::sphericalLuminanceSample(const Vec3& p, Rng& rng, RayStats& s
 double PathTracer::radianceSample(const Ray& ray, Rng& rng, RayStats& stats) const {
     return trace(SensorKind::Camera, ray.origin, ray.direction, rng, stats);
 }
+double PathTracer::radianceSample(const Ray& ray, Rng& rng, RayStats& stats, bool& hitEmitterFirst) const {
+    hitEmitterFirst = false;
+    return trace(SensorKind::Camera, ray.origin, ray.direction, rng, stats, &hitEmitterFirst);
+}
 
-double PathTracer::trace(SensorKind sensor, const Vec3& origin, const Vec3& n, Rng& rng, RayStats& stats) const {
+double PathTracer::trace(SensorKind sensor, const Vec3& origin, const Vec3& n, Rng& rng, RayStats& stats,
+                         bool* hitEmitterFirst) const {
     Vec3 L, throughput(1, 1, 1);
     Vertex v;
     v.p = origin;
@@ -295,6 +301,7 @@ double PathTracer::trace(SensorKind sensor, const Vec3& origin, const Vec3& n, R
                 return luminance(L);
             }
             if (hit->kind == HitKind::Emitter) {
+                if (hitEmitterFirst && depth == 0 && crossings == 0) *hitEmitterFirst = true;
                 double Le = emitters_.emitted(size_t(hit->index), d, hit->geometricNormal);
                 if (Le > 0) {
                     double w = lastDelta ? 1 : powerHeuristic(1, lastPdf, 1, emitters_.pdf(size_t(hit->index), lastPoint, hit->point));

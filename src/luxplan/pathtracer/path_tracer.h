@@ -44,13 +44,17 @@ public:
     double sphericalLuminanceSample(const Vec3& p, Rng& rng, RayStats& stats) const;
     // luminance arriving at ray.origin from ray.direction (unit), in cd/m^2.
     double radianceSample(const Ray& ray, Rng& rng, RayStats& stats) const;
+    // The same, also telling whether the ray's first hit is a luminaire (the value is then
+    // its luminance alone: emitters end paths).
+    double radianceSample(const Ray& ray, Rng& rng, RayStats& stats, bool& hitEmitterFirst) const;
 
     const EmbreeScene& rayTracer() const { return rt_; }
     const EmitterSet& emitters() const { return emitters_; }
 
 private:
     enum class SensorKind { Hemisphere, Sphere, Camera };
-    double trace(SensorKind sensor, const Vec3& p, const Vec3& n, Rng& rng, RayStats& stats) const;
+    double trace(SensorKind sensor, const Vec3& p, const Vec3& n, Rng& rng, RayStats& stats,
+                 bool* hitEmitterFirst = nullptr) const;
 
     // The room's openings seen from one vertex. A portal is chosen with a cheap weight
     // (area x cos / distance^2, capped at 2 pi), then a direction uniform in its
@@ -87,6 +91,7 @@ private:
     std::vector<Bsdf> bsdfs_;  // per scene material
     EmitterSet emitters_;
     std::vector<Rect3> portals_;
+    std::vector<Vec3> portalNormals_;  // edgeU x edgeV: the opening's normal times its area
     Bounds3 room_;
     bool hasRoom_ = false;
     uint64_t id_ = 0;  // unique per tracer, keys the per-thread portal cache
