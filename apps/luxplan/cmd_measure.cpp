@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.h"
+#include <luxplan/lightsamplers/sampler_type.h>
 #include <luxplan/io/layout_io.h>
 #include <luxplan/io/scene_loader.h>
 #include <luxplan/lightsamplers/light_samplers.h>
@@ -47,8 +48,8 @@ void runMeasure(const MeasureArgs& args) {
             const LightSamplerSpec& s = scene.samplers[k];
             const SamplerResult& r = result.samplers[k];
             samplers.push_back({{"name", s.name},
-                                {"type", samplerTypeName(s.type)},
-                                {"unit", s.unit()},
+                                {"type", s.type->name()},
+                                {"unit", s.type->unit()},
                                 {"value", r.value},
                                 {"std_error", r.standardError},
                                 {"target", {bound(s.targetMin), bound(s.targetMax)}},
@@ -70,9 +71,9 @@ void runMeasure(const MeasureArgs& args) {
         const SamplerResult& r = result.samplers[k];
         std::ostringstream target;
         target << "[" << s.targetMin << ", " << (std::isfinite(s.targetMax) ? std::to_string(int(s.targetMax)) : "inf") << "]";
-        std::cout << std::left << std::setw(24) << s.name << std::setw(12) << samplerTypeName(s.type) << std::right << std::fixed
+        std::cout << std::left << std::setw(24) << s.name << std::setw(12) << s.type->name() << std::right << std::fixed
                   << std::setprecision(1) << std::setw(12) << r.value << std::setw(10) << r.standardError << std::setw(8)
-                  << s.unit() << std::setw(22) << target.str() << std::setprecision(3) << std::setw(10) << r.penalty
+                  << s.type->unit() << std::setw(22) << target.str() << std::setprecision(3) << std::setw(10) << r.penalty
                   << (r.penalty > 0 ? "  MISSED" : "  ok") << "\n";
     }
     std::cout << std::setprecision(2) << result.paths << " paths (" << options.pathsPerPoint << " per point), "

@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "commands.h"
+#include <luxplan/lightsamplers/sampler_type.h>
 #include <luxplan/io/layout_io.h>
 #include <luxplan/io/scene_loader.h>
 #include <luxplan/scene/layout.h>
@@ -20,7 +21,7 @@ void printSummary(const Scene& s, std::ostream& out) {
         << " deg\n";
     if (s.daylight) {
         const DaylightParams& d = *s.daylight;
-        out << "  daylight: " << skyModelName(d.model) << " sky" << (d.sunEnabled() ? " + sun" : "");
+        out << "  daylight: " << skyModelNames().name(d.model) << " sky" << (d.sunEnabled() ? " + sun" : "");
         if (d.sunOverride) out << " fixed at altitude " << d.sunOverride->altitudeDeg << ", azimuth " << d.sunOverride->azimuthDeg;
         if (d.from) out << ", " << d.from->str() << (d.to ? " to " + d.to->str() + " every " + std::to_string(int(d.stepMinutes)) + " min" : "");
         out << "\n";
@@ -41,7 +42,7 @@ void printSummary(const Scene& s, std::ostream& out) {
             out << "    " << g.name << ": " << size.x << " x " << size.y << " x " << size.z << " m, floor "
                 << size.x * size.y << " m2\n";
             for (const auto& o : g.room->openings) {
-                out << "      opening on " << wallName(o.wall) << ": ";
+                out << "      opening on " << wallNames().name(o.wall) << ": ";
                 if (o.wall == Wall::Ceiling) out << o.size.x << " x " << o.size.y << " m";
                 else out << o.width << " x " << o.height << " m at offset " << o.offset << ", sill " << o.sill;
                 out << (o.material ? " glazed (" + s.materials[*o.material].name + ")" : " open") << "\n";
@@ -72,11 +73,11 @@ void printSummary(const Scene& s, std::ostream& out) {
     }
     out << "  samplers: " << s.samplers.size() << "\n";
     for (const auto& sp : s.samplers)
-        out << "    " << sp.name << " (" << samplerTypeName(sp.type) << (sp.entity >= 0 ? ", on " + s.entities[sp.entity].path : "")
-            << "): target [" << sp.targetMin << ", " << sp.targetMax << "] " << sp.unit() << "\n";
+        out << "    " << sp.name << " (" << sp.type->name() << (sp.entity >= 0 ? ", on " + s.entities[sp.entity].path : "")
+            << "): target [" << sp.targetMin << ", " << sp.targetMax << "] " << sp.type->unit() << "\n";
     out << "  constraints: " << s.constraints.size() << "\n";
     for (const auto& c : s.constraints) {
-        out << "    " << constraintTypeName(c.type);
+        out << "    " << constraintTypeNames().name(c.type);
         if (c.type != ConstraintType::Overlap) out << " " << entityName(s, c.a) << " - " << entityName(s, c.b);
         else out << " tolerance " << s.overlapTolerance;
         out << "\n";

@@ -90,8 +90,8 @@ TEST(DaylightParams, EveryProblemIsReportedWithItsPath) {
     DaylightParams longRange = preethamDay("2026-01-01T00:00Z", "2027-12-31T00:00Z", 15);
     EXPECT_EQ(messages(longRange).size(), 1u);
     EXPECT_THROW(buildDaylight(longRange, kAthens, kSmall), SceneError);
-    EXPECT_EQ(parseSkyModel("cie_overcast"), SkyModelType::CieOvercast);
-    EXPECT_FALSE(parseSkyModel("perez"));
+    EXPECT_EQ(skyModelNames().parse("cie_overcast"), SkyModelType::CieOvercast);
+    EXPECT_FALSE(skyModelNames().parse("perez"));
 }
 
 TEST(DaylightInstants, StepsFromFromToToInclusive) {

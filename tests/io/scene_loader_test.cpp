@@ -199,13 +199,83 @@ TEST(SceneLoader, TargetsAndSamplers) {
     EXPECT_EQ(onlyProblem(s), "/samplers/0/grid: \"grid\" does not apply to a directional sampler");
 }
 
+// The loader keeps no list of keys: what a kind's reader reads is what it knows, and
+// a key another kind of the same family reads "does not apply" to this one.
+TEST(SceneLoader, KeysThatDoNotApplyToTheKindBeingRead) {
+    json s = validScene();
+    s["luminaires"][0]["radius"] = 0.2;
+    EXPECT_EQ(onlyProblem(s), "/luminaires/0/radius: \"radius\" does not apply to a rect emitter");
+    s = validScene();
+    s["luminaires"][0] = {{"name", "bulb"}, {"shape", "sphere"}, {"center", {3, 2, 2}}, {"radius", 0.05},
+                          {"normal", {0, 0, -1}}, {"flux_lm", 800}};
+    EXPECT_EQ(onlyProblem(s), "/luminaires/0/normal: \"normal\" does not apply to a sphere emitter");
+    s = validScene();
+    s["constraints"][1]["min"] = 1;
+    EXPECT_EQ(onlyProblem(s), "/constraints/1/min: \"min\" does not apply to a focus constraint");
+    s = validScene();
+    s["constraints"].push_back({{"type", "alignment"}, {"a", "desk1"}, {"b", "room"}, {"max", 2}});
+    EXPECT_EQ(onlyProblem(s), "/constraints/2/max: \"max\" does not apply to an alignment constraint");
+    s = validScene();
+    s["geometry"][0]["material"] = "wall";
+    EXPECT_EQ(onlyProblem(s), "/geometry/0/material: \"material\" does not apply to a room");
+    s = validScene();
+    s["geometry"].push_back({{"name", "pillar"}, {"box", {{"min", {1, 1, 0}}, {"max", {1.2, 1.2, 3}}}}, {"material", "wall"},
+                             {"transform", {{"rotate_deg", 45}}}});
+    EXPECT_EQ(onlyProblem(s), "/geometry/1/transform: \"transform\" does not apply to a box");
+    s = validScene();
+    s["geometry"][0]["openings"][0]["center"] = {1, 1};
+    EXPECT_EQ(onlyProblem(s), "/geometry/0/openings/0/center: \"center\" does not apply to a wall opening");
+    s = validScene();
+    s["entities"][0]["parts"][0]["transform"] = {{"rotate_deg", 90}};
+    EXPECT_EQ(onlyProblem(s), "/entities/0/parts/0/transform: \"transform\" does not apply to a preset part");
+    s = validScene();
+    s["materials"]["wall"]["roughness"] = 0.3;
+    EXPECT_EQ(onlyProblem(s), "/materials/wall/roughness: \"roughness\" does not apply to a diffuse material");
+}
+
+TEST(SceneLoader, SuggestsTheClosestName) {
+    json s = validScene();
+    s["materials"]["wall"]["reflectence"] = 0.5;
+    s["materials"]["wall"].erase("reflectance");
+    auto all = [&] {
+        test::TempDir dir;
+        return problems(s, dir);
+    };
+    auto list = all();
+    ASSERT_EQ(list.size(), 2u);  // the misspelt key, and the required one it was meant to be
+    EXPECT_TRUE(startsWith(list[1], "/materials/wall/reflectence: unknown key \"reflectence\" (did you mean \"reflectance\"?)"))
+        << list[1];
+    s = validScene();
+    s["samplers"][0]["type"] = "directonal";
+    EXPECT_TRUE(startsWith(onlyProblem(s), "/samplers/0/type: unknown sampler type \"directonal\" (did you mean \"directional\"?) "
+                                           "(planar, directional or volume)"))
+        << onlyProblem(s);
+    s = validScene();
+    s["entities"][0]["parts"][0]["preset"] = "dsk";
+    EXPECT_TRUE(startsWith(onlyProblem(s), "/entities/0/parts/0/preset: unknown preset \"dsk\" (did you mean \"desk\"?)"))
+        << onlyProblem(s);
+    s = validScene();
+    s["geometry"][0]["materials"]["floor"] = "wal";
+    EXPECT_EQ(onlyProblem(s), "/geometry/0/materials/floor: unknown material \"wal\" (did you mean \"wall\"?)");
+    s = validScene();
+    s["geometry"][0]["openings"][0]["wall"] = "sout";
+    EXPECT_EQ(onlyProblem(s), "/geometry/0/openings/0/wall: unknown wall \"sout\" (did you mean \"south\"?) "
+                              "(north, south, east, west or ceiling)");
+}
+
+TEST(SceneLoader, IntegersBeyondTheirTypeAreRefused) {
+    json s = validScene();
+    s["optimizer"]["iterations"] = 3000000000LL;
+    EXPECT_EQ(onlyProblem(s), "/optimizer/iterations: value 3000000000 exceeds the limit of 2147483647");
+}
+
 TEST(SceneLoader, NamesThatDoNotResolve) {
     json s = validScene();
     s["geometry"][0]["materials"]["floor"] = "marble";
     EXPECT_EQ(onlyProblem(s), "/geometry/0/materials/floor: unknown material \"marble\"");
     s = validScene();
     s["constraints"][0]["a"] = "desk2";
-    EXPECT_EQ(onlyProblem(s), "/constraints/0/a: unknown entity \"desk2\"");
+    EXPECT_EQ(onlyProblem(s), "/constraints/0/a: unknown entity \"desk2\" (did you mean \"desk1\"?)");
     s = validScene();
     s["constraints"][1]["a"] = "desk1.screen";
     EXPECT_EQ(onlyProblem(s), "/constraints/1/a: unknown entity \"desk1.screen\"");

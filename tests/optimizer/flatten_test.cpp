@@ -10,6 +10,7 @@
 #include <luxplan/constraints/geometry_cost.h>
 #include <luxplan/io/layout_io.h>
 #include <luxplan/io/scene_loader.h>
+#include <luxplan/lightsamplers/sampler_type.h>
 #include <luxplan/optimizer/flatten.h>
 #include <luxplan/optimizer/optimizer.h>
 #include <luxplan/optimizer/placement.h>
@@ -17,6 +18,13 @@
 
 namespace luxplan {
 namespace {
+
+// The mean of a sampler's measurement points: a planar grid's centre.
+Vec3 pointsCenter(const std::vector<Vec3>& points) {
+    Vec3 sum;
+    for (const Vec3& p : points) sum = sum + p;
+    return sum * (1.0 / double(points.size()));
+}
 
 // A partless group (workstation) whose anchor is the desk (fixed in the group, at an
 // offset), a desk that is also a group (its monitor), a sampler and a lamp on the
@@ -106,7 +114,7 @@ TEST_F(FlattenTest, EveryObjectAtTheTopLevelWithWorldRegions) {
     // The sampler and the lamp move to the desk, in its frame (0.2 m behind the group origin).
     const LightSamplerSpec& s = f.samplers[0];
     EXPECT_EQ(s.entity, flatEntity("workstation.desk"));
-    EXPECT_NEAR(length(s.center - Vec3(0.1, 0.0, 0.75)), 0.0, 1e-12);
+    EXPECT_NEAR(length(pointsCenter(s.type->place(Transform())->drawing().dots) - Vec3(0.1, 0.0, 0.75)), 0.0, 1e-12);
     const Entity& desk = f.entities[size_t(flatEntity("workstation.desk"))];
     EXPECT_EQ(desk.samplers, std::vector<int>{0});
     EXPECT_EQ(desk.emitters.size(), 1u);
@@ -162,8 +170,10 @@ TEST_F(FlattenTest, EveryHierarchicalLayoutCostsTheSameFlat) {
         }
         const LightSamplerSpec& s = scene.samplers[0];
         const LightSamplerSpec& fs = flat.scene.samplers[0];
-        EXPECT_NEAR(length(world[size_t(s.entity)].applyPoint(s.center) - flatWorld[size_t(fs.entity)].applyPoint(fs.center)),
-                    0.0, 1e-9);
+        std::vector<Vec3> points = s.type->place(world[size_t(s.entity)])->drawing().dots;
+        std::vector<Vec3> flatPoints = fs.type->place(flatWorld[size_t(fs.entity)])->drawing().dots;
+        ASSERT_EQ(points.size(), flatPoints.size());
+        for (size_t i = 0; i < points.size(); ++i) EXPECT_NEAR(length(points[i] - flatPoints[i]), 0.0, 1e-9);
         const Emitter& m = scene.emitters[0];
         const Emitter& fm = flat.scene.emitters[0];
         EXPECT_NEAR(length(world[size_t(m.entity)].applyPoint(m.center) - flatWorld[size_t(fm.entity)].applyPoint(fm.center)),

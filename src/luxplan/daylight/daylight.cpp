@@ -44,21 +44,12 @@ long long stepCount(const DateTime& from, const DateTime& to, double stepMinutes
 
 }  // namespace
 
-std::string_view skyModelName(SkyModelType m) {
-    switch (m) {
-        case SkyModelType::Preetham: return "preetham";
-        case SkyModelType::CieOvercast: return "cie_overcast";
-        case SkyModelType::Uniform: return "uniform";
-        case SkyModelType::CieGeneral: return "cie_general";
-    }
-    return "preetham";
-}
-
-std::optional<SkyModelType> parseSkyModel(std::string_view name) {
-    for (SkyModelType m : {SkyModelType::Preetham, SkyModelType::CieOvercast, SkyModelType::Uniform,
-                           SkyModelType::CieGeneral})
-        if (skyModelName(m) == name) return m;
-    return std::nullopt;
+const EnumNames<SkyModelType>& skyModelNames() {
+    static const EnumNames<SkyModelType> names{{{SkyModelType::Preetham, "preetham"},
+                                                {SkyModelType::CieOvercast, "cie_overcast"},
+                                                {SkyModelType::Uniform, "uniform"},
+                                                {SkyModelType::CieGeneral, "cie_general"}}};
+    return names;
 }
 
 bool DaylightParams::sunEnabled() const {
@@ -78,7 +69,7 @@ std::vector<Diagnostic> validateDaylight(const DaylightParams& p, const Site& si
     range("/site/longitude", "longitude", site.longitudeDeg, -180, 180);
     if (!std::isfinite(site.northDeg)) add("/site/north_deg", "north_deg must be a finite number");
 
-    const std::string model(skyModelName(p.model));
+    const std::string model(skyModelNames().name(p.model));
     if (usesTurbidity(p)) range("/daylight/sky/turbidity", "turbidity", p.turbidity, kMinTurbidity, kMaxTurbidity);
     if (p.model == SkyModelType::CieOvercast || p.model == SkyModelType::CieGeneral) {
         if (!p.horizontalIlluminanceLx)

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include <luxplan/core/error.h>
+#include <luxplan/core/names.h>
 #include <luxplan/daylight/datetime.h>
 #include <luxplan/daylight/environment.h>
 #include <luxplan/daylight/solar_position.h>
@@ -25,8 +26,8 @@ struct Site {
 
 // "sky.model": preetham | cie_overcast | uniform | cie_general.
 enum class SkyModelType { Preetham, CieOvercast, Uniform, CieGeneral };
-std::string_view skyModelName(SkyModelType m);
-std::optional<SkyModelType> parseSkyModel(std::string_view name);
+// The scene file's names of the sky models ("preetham", "cie_overcast", ...).
+const EnumNames<SkyModelType>& skyModelNames();
 
 // "sun": {"altitude_deg", "azimuth_deg", "normal_illuminance_lx"?}: a fixed sun.
 struct SunOverride {

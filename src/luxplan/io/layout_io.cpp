@@ -5,9 +5,11 @@
 
 #include <nlohmann/json.hpp>
 
-#include <luxplan/io/json_fields.h>
+#include <luxplan/json/fields.h>
 
 namespace luxplan::io {
+
+using namespace json;
 
 std::string layoutToJson(const Scene& scene, const Layout& layout) {
     Json entities = Json::object();
@@ -46,7 +48,7 @@ Layout readLayout(const std::filesystem::path& file, const Scene& scene) {
         throw SceneError(sink.diagnostics);
     }
     Layout layout = initialLayout(scene);
-    Fields top(sink, root, "", {"entities"}, "a layout object");
+    Fields top(sink, root, "", "a layout object");
     if (top.valid() && !top.has("entities")) top.missing("entities");
     if (top.has("entities")) {
         const Json& entities = top.get("entities");
@@ -60,7 +62,7 @@ Layout readLayout(const std::filesystem::path& file, const Scene& scene) {
                     continue;
                 }
                 const Entity& e = scene.entities[index];
-                Fields f(sink, value, path, {"position", "rotation", "region"});
+                Fields f(sink, value, path);
                 if (!f.valid()) continue;
                 if (!e.movable()) {
                     sink.error(path, "entity \"" + name + "\" is fixed (it has no placement regions)");
@@ -83,8 +85,10 @@ Layout readLayout(const std::filesystem::path& file, const Scene& scene) {
                 } else if (!f.has("region")) {
                     p.region = findRegion(e, {p.position.x, p.position.y}, p.rotationDeg);
                 }
+                f.finish();
             }
     }
+    top.finish();
     if (sink.count()) throw SceneError(sink.diagnostics);
     return layout;
 }

@@ -10,13 +10,22 @@
 #include <nlohmann/json.hpp>
 
 #include <luxplan/daylight/datetime.h>
-#include <luxplan/io/json_fields.h>
+#include <luxplan/json/fields.h>
+#include <luxplan/lightsamplers/sampler_type.h>
 #include <luxplan/io/mesh_io.h>
 #include <luxplan/scene/presets.h>
 #include <luxplan/scene/room.h>
 
 namespace luxplan::io {
 namespace {
+
+using json::DiagnosticSink;
+using json::Fields;
+using json::Json;
+using json::Range;
+using json::formatNumber;
+using json::pointer;
+using json::typeName;
 
 // ---- JSON parsing with duplicate-key detection and line/column for syntax errors ----
 
@@ -93,7 +102,18 @@ std::optional<Json> parseJson(const std::string& text, DiagnosticSink& sink) {
 const Range kUnit = Range::closed(0, 1);
 const Range kNonNegative = Range::atLeast(0);
 
+// "a rect emitter", "an alignment constraint".
+std::string article(const std::string& noun) {
+    return (std::string("aeiou").find(noun.empty() ? 'x' : noun[0]) != std::string::npos ? "an " : "a ") + noun;
+}
+
 // ---- the loader ----
+//
+// Objects whose keys depend on a kind ("shape", "type", "model") read their common
+// keys, then the kind's own with one function per kind; finish() then reports what
+// no function read. A family's keys are what its kinds' functions ask for on an empty
+// object (json::probeKeys), so a key read by one kind is reported on another as not
+// applying to it.
 
 class Loader {
 public:
@@ -120,11 +140,16 @@ public:
     }
 
 private:
+    // The keys every kind of a family reads, for finish().
+    template <class Kind, class ReadKind>
+    std::vector<std::string> familyKeys(const std::vector<Kind>& kinds, ReadKind readKind) {
+        std::vector<std::vector<std::string>> lists;
+        for (const Kind& k : kinds) lists.push_back(json::probeKeys([&](const Fields& f) { readKind(f, k); }));
+        return json::unionKeys(lists);
+    }
+
     void readRoot(const Json& root) {
-        Fields f(sink_, root, "",
-                 {"luxplan", "name", "site", "daylight", "materials", "geometry", "luminaires", "entities", "samplers",
-                  "constraints", "objective", "optimizer"},
-                 "a scene object");
+        Fields f(sink_, root, "", "a scene object");
         if (!f.valid()) return;
         if (auto v = f.integer("luxplan", {}, true); v && *v != 1)
             f.error("luxplan", "unsupported format version " + std::to_string(*v) + " (this luxplan reads version 1)");
@@ -148,17 +173,17 @@ private:
         if (auto* a = f.array("constraints"))
             for (size_t i = 0; i < a->size(); ++i) readConstraint((*a)[i], pointer(f.at("constraints"), i));
         if (f.has("objective")) {
-            Fields o(sink_, f.get("objective"), f.at("objective"), {"lighting_weight"});
+            Fields o(sink_, f.get("objective"), f.at("objective"));
             scene_.objective.lightingWeight = o.number("lighting_weight", 0.5, kUnit);
+            o.finish();
         }
         if (f.has("optimizer")) readOptimizer(f.get("optimizer"), f.at("optimizer"));
+        f.finish();
         checkUniqueNames();
     }
 
     void readOptimizer(const Json& j, const std::string& path) {
-        Fields o(sink_, j, path,
-                 {"iterations", "seed", "paths_per_point", "report_paths_per_point", "hierarchy", "inner_iterations",
-                  "temperature", "start"});
+        Fields o(sink_, j, path);
         OptimizerSettings& s = scene_.optimizer;
         s.iterations = o.integer("iterations", Range::atLeast(0)).value_or(10000);
         s.seed = uint64_t(o.integer("seed", Range::atLeast(0)).value_or(1));
@@ -168,12 +193,14 @@ private:
         s.reportPathsPerPoint = o.integer("report_paths_per_point", Range::atLeast(1)).value_or(std::max(1000, s.pathsPerPoint));
         s.innerIterations = o.integer("inner_iterations", Range::closed(1, 1000)).value_or(4);
         if (auto h = o.string("hierarchy")) {
-            if (*h == "flat") s.flat = true;
-            else if (*h != "hierarchical") o.error("hierarchy", "unknown hierarchy \"" + *h + "\" (hierarchical or flat)");
+            static const EnumNames<bool> hierarchies{{{false, "hierarchical"}, {true, "flat"}}};
+            if (auto flat = hierarchies.parse(*h)) s.flat = *flat;
+            else o.error("hierarchy", hierarchies.unknown("hierarchy", *h));
         }
         if (auto start = o.string("start")) {
-            if (*start == "scene") s.startFromScene = true;
-            else if (*start != "uniform") o.error("start", "unknown start \"" + *start + "\" (uniform or scene)");
+            static const EnumNames<bool> starts{{{false, "uniform"}, {true, "scene"}}};
+            if (auto scene = starts.parse(*start)) s.startFromScene = *scene;
+            else o.error("start", starts.unknown("start", *start));
         }
         if (o.has("temperature")) {
             const Json& t = o.get("temperature");
@@ -181,18 +208,21 @@ private:
                 s.constantTemperature = true;
                 s.temperatureStart = s.temperatureEnd = o.number("temperature", 0.1, Range::positive());
             } else {
-                Fields tf(sink_, t, o.at("temperature"), {"start", "end"}, "a number or {\"start\", \"end\"}");
+                Fields tf(sink_, t, o.at("temperature"), "a number or {\"start\", \"end\"}");
                 s.temperatureStart = tf.number("start", 0.1, Range::positive());
                 s.temperatureEnd = tf.number("end", 0.001, Range::positive());
+                tf.finish();
             }
         }
+        o.finish();
     }
 
     void readSite(const Json& j, const std::string& path) {
-        Fields f(sink_, j, path, {"latitude", "longitude", "north_deg"});
+        Fields f(sink_, j, path);
         scene_.site.latitudeDeg = f.number("latitude", 0.0, Range::closed(-90, 90, "deg"));
         scene_.site.longitudeDeg = f.number("longitude", 0.0, Range::closed(-180, 180, "deg"));
         scene_.site.northDeg = f.number("north_deg", 0.0, Range::closed(-360, 360, "deg"));
+        f.finish();
     }
 
     std::optional<DateTime> readTime(const Fields& f, const char* key) {
@@ -204,51 +234,55 @@ private:
         return t;
     }
 
+    // The keys of one sky model.
+    static void readSkyModel(const Fields& s, SkyModelType model, DaylightParams& d) {
+        switch (model) {
+            case SkyModelType::Preetham: d.turbidity = s.number("turbidity", 3.0); break;
+            case SkyModelType::CieOvercast: d.horizontalIlluminanceLx = s.number("horizontal_illuminance_lx"); break;
+            case SkyModelType::Uniform: d.luminanceNits = s.number("luminance_nits"); break;
+            case SkyModelType::CieGeneral:
+                d.horizontalIlluminanceLx = s.number("horizontal_illuminance_lx");
+                d.cieSkyType = s.integer("type").value_or(12);
+                d.turbidity = s.number("turbidity", 3.0);
+                break;
+        }
+    }
+
     // Types, units and keys here; the cross-field rules (what each sky model needs, the
     // time interval) are the daylight module's validateDaylight(), run once this passes.
     void readDaylight(const Json& j, const std::string& path) {
         size_t before = sink_.count();
-        Fields f(sink_, j, path,
-                 {"sky", "sun", "ground_reflectance", "from", "to", "step_minutes", "pressure_mbar", "temperature_c"});
+        Fields f(sink_, j, path);
         if (!f.valid()) return;
         DaylightParams d;
         if (!f.has("sky")) f.missing("sky");
         else {
-            Fields s(sink_, f.get("sky"), f.at("sky"),
-                     {"model", "turbidity", "horizontal_illuminance_lx", "luminance_nits", "type"});
+            Fields s(sink_, f.get("sky"), f.at("sky"));
             auto model = s.string("model", true);
-            auto parsed = model ? parseSkyModel(*model) : std::nullopt;
-            if (model && !parsed)
-                s.error("model", "unknown sky model \"" + *model + "\" (preetham, cie_overcast, uniform or cie_general)");
+            auto parsed = model ? skyModelNames().parse(*model) : std::nullopt;
+            if (model && !parsed) s.error("model", skyModelNames().unknown("sky model", *model));
+            static const std::vector<std::string> family = familyKeys(
+                skyModelNames().entries, [](const Fields& k, const auto& e) { DaylightParams p; readSkyModel(k, e.first, p); });
             if (parsed) {
                 d.model = *parsed;
-                std::vector<const char*> own;
-                switch (d.model) {
-                    case SkyModelType::Preetham: own = {"turbidity"}; break;
-                    case SkyModelType::CieOvercast: own = {"horizontal_illuminance_lx"}; break;
-                    case SkyModelType::Uniform: own = {"luminance_nits"}; break;
-                    case SkyModelType::CieGeneral: own = {"horizontal_illuminance_lx", "type", "turbidity"}; break;
-                }
-                for (const char* k : {"turbidity", "horizontal_illuminance_lx", "luminance_nits", "type"})
-                    if (s.has(k) && std::none_of(own.begin(), own.end(), [&](const char* o) { return std::string(o) == k; }))
-                        s.error(k, std::string("\"") + k + "\" does not apply to the " + *model + " sky");
+                readSkyModel(s, d.model, d);
+                s.finish("the " + *model + " sky", family);
+            } else if (!model) {
+                s.finish("", family);
             }
-            d.turbidity = s.number("turbidity", 3.0);
-            d.horizontalIlluminanceLx = s.number("horizontal_illuminance_lx");
-            d.luminanceNits = s.number("luminance_nits");
-            d.cieSkyType = s.integer("type").value_or(12);
         }
         if (f.has("sun")) {
             const Json& sun = f.get("sun");
             if (sun.is_boolean()) {
                 d.sun = sun.get<bool>();
             } else if (sun.is_object()) {
-                Fields o(sink_, sun, f.at("sun"), {"altitude_deg", "azimuth_deg", "normal_illuminance_lx"});
+                Fields o(sink_, sun, f.at("sun"));
                 SunOverride so;
                 so.altitudeDeg = o.number("altitude_deg", {}, true).value_or(45);
                 so.azimuthDeg = o.number("azimuth_deg", {}, true).value_or(180);
                 so.normalIlluminanceLx = o.number("normal_illuminance_lx");
                 d.sunOverride = so;
+                o.finish();
             } else {
                 f.error("sun", "expected true, false or a sun object, got " + typeName(sun));
             }
@@ -259,6 +293,7 @@ private:
         d.temperatureC = f.number("temperature_c", 10.0);
         d.from = readTime(f, "from");
         d.to = readTime(f, "to");
+        f.finish();
         if (sink_.count() == before && siteValid_)
             for (Diagnostic diag : validateDaylight(d, scene_.site)) {
                 diag.file = sink_.file;
@@ -267,46 +302,51 @@ private:
         scene_.daylight = d;
     }
 
+    // The keys of one material type.
+    static void readMaterialType(const Fields& f, MaterialType type, Material& m) {
+        switch (type) {
+            case MaterialType::Diffuse: m.reflectance = f.color("reflectance", true).value_or(Vec3(0.5, 0.5, 0.5)); break;
+            case MaterialType::Glossy:
+                m.reflectance = f.color("reflectance").value_or(Vec3(0.04, 0.04, 0.04));
+                m.roughness = f.number("roughness", 0.1, Range{0, 1, true, false});
+                m.base = f.color("base").value_or(Vec3(0, 0, 0));
+                break;
+            case MaterialType::Glass: m.transmittance = f.number("transmittance", 0.88, kUnit); break;
+            case MaterialType::Mirror: m.reflectance = f.color("reflectance").value_or(Vec3(0.9, 0.9, 0.9)); break;
+        }
+    }
+
     void readMaterials(const Json& j, const std::string& path) {
         if (!j.is_object()) {
             sink_.error(path, "expected an object of named materials, got " + typeName(j));
             return;
         }
+        static const std::vector<std::string> family = familyKeys(
+            materialTypeNames().entries, [](const Fields& k, const auto& e) { Material m; readMaterialType(k, e.first, m); });
         for (const auto& [name, value] : j.items()) {
-            std::string p = pointer(path, name);
-            Fields f(sink_, value, p, {"type", "reflectance", "roughness", "base", "transmittance"});
+            Fields f(sink_, value, pointer(path, name));
             if (!f.valid()) continue;
             Material m;
             m.name = name;
             auto type = f.string("type", true);
-            auto notFor = [&](std::initializer_list<const char*> keys) {
-                for (const char* k : keys)
-                    if (f.has(k)) f.error(k, std::string("\"") + k + "\" does not apply to a " + *type + " material");
-            };
-            if (type == "diffuse") {
-                m.type = MaterialType::Diffuse;
-                m.reflectance = f.color("reflectance", true).value_or(Vec3(0.5, 0.5, 0.5));
-                notFor({"roughness", "base", "transmittance"});
-            } else if (type == "glossy") {
-                m.type = MaterialType::Glossy;
-                m.reflectance = f.color("reflectance").value_or(Vec3(0.04, 0.04, 0.04));
-                m.roughness = f.number("roughness", 0.1, Range{0, 1, true, false});
-                m.base = f.color("base").value_or(Vec3(0, 0, 0));
-                notFor({"transmittance"});
-            } else if (type == "glass") {
-                m.type = MaterialType::Glass;
-                m.transmittance = f.number("transmittance", 0.88, kUnit);
-                notFor({"reflectance", "roughness", "base"});
-            } else if (type == "mirror") {
-                m.type = MaterialType::Mirror;
-                m.reflectance = f.color("reflectance").value_or(Vec3(0.9, 0.9, 0.9));
-                notFor({"roughness", "base", "transmittance"});
-            } else if (type) {
-                f.error("type", "unknown material type \"" + *type + "\" (diffuse, glossy, glass or mirror)");
+            auto parsed = type ? materialTypeNames().parse(*type) : std::nullopt;
+            if (type && !parsed) f.error("type", materialTypeNames().unknown("material type", *type));
+            if (parsed) {
+                m.type = *parsed;
+                readMaterialType(f, m.type, m);
+                f.finish(article(*type + " material"), family);
+            } else if (!type) {
+                f.finish("", family);
             }
             scene_.materialIndex[name] = uint32_t(scene_.materials.size());
             scene_.materials.push_back(m);
         }
+    }
+
+    std::vector<std::string> materialNames() const {
+        std::vector<std::string> names;
+        for (const auto& [name, _] : scene_.materialIndex) names.push_back(name);
+        return names;
     }
 
     std::optional<uint32_t> materialRef(const Fields& f, const char* key, bool required) {
@@ -314,7 +354,7 @@ private:
         if (!name) return std::nullopt;
         auto it = scene_.materialIndex.find(*name);
         if (it == scene_.materialIndex.end()) {
-            f.error(key, "unknown material \"" + *name + "\"");
+            f.error(key, "unknown material \"" + *name + "\"" + didYouMean(*name, materialNames()));
             return std::nullopt;
         }
         return it->second;
@@ -323,7 +363,7 @@ private:
     // {"translate": [x,y,z], "rotate_deg": a, "scale": s | [sx,sy,sz]}
     Transform readTransform(const Fields& parent, const char* key) {
         if (!parent.has(key)) return Transform();
-        Fields f(sink_, parent.get(key), parent.at(key), {"translate", "rotate_deg", "scale"});
+        Fields f(sink_, parent.get(key), parent.at(key));
         Vec3 scale(1, 1, 1);
         if (f.has("scale")) {
             if (f.get("scale").is_number()) {
@@ -333,8 +373,10 @@ private:
                 scale = f.vec3("scale", false, Range::positive()).value_or(scale);
             }
         }
-        return Transform::placement(f.vec3("translate").value_or(Vec3()), f.number("rotate_deg", 0.0)) *
-               Transform::scale(scale);
+        Transform t = Transform::placement(f.vec3("translate").value_or(Vec3()), f.number("rotate_deg", 0.0)) *
+                      Transform::scale(scale);
+        f.finish();
+        return t;
     }
 
     TriangleMesh readMeshFile(const Fields& f, const char* key, uint32_t material) {
@@ -351,6 +393,7 @@ private:
 
     std::optional<Bounds3> readMinMax(const Fields& f, const char* what) {
         auto lo = f.vec3("min", true), hi = f.vec3("max", true);
+        f.finish();
         if (!lo || !hi) return std::nullopt;
         for (int a = 0; a < 3; ++a)
             if ((*hi)[a] <= (*lo)[a]) {
@@ -361,54 +404,69 @@ private:
         return Bounds3(*lo, *hi);
     }
 
+    // The shape of a static item: "room", "box" or "mesh", each with its own keys.
+    void readStaticShape(const Fields& f, StaticKind kind, StaticItem& item) {
+        switch (kind) {
+            case StaticKind::Room: readRoom(f, item); break;
+            case StaticKind::Box: {
+                uint32_t m = materialRef(f, "material", !item.invisible).value_or(0);
+                if (f.has("box")) {
+                    Fields b(sink_, f.get("box"), f.at("box"));
+                    if (auto box = readMinMax(b, "box")) addBox(item.mesh, *box, m);
+                }
+                break;
+            }
+            case StaticKind::Mesh: {
+                uint32_t m = materialRef(f, "material", !item.invisible).value_or(0);
+                Transform t = readTransform(f, "transform");
+                item.mesh.append(readMeshFile(f, "mesh", m), t);
+                break;
+            }
+        }
+    }
+
     void readStatic(const Json& j, const std::string& path) {
-        Fields f(sink_, j, path, {"name", "room", "box", "mesh", "transform", "material", "materials", "openings", "invisible"});
+        static const EnumNames<StaticKind> shapes{{{StaticKind::Room, "room"}, {StaticKind::Box, "box"}, {StaticKind::Mesh, "mesh"}}};
+        Fields f(sink_, j, path);
         if (!f.valid()) return;
         StaticItem item;
         item.jsonPath = path;
         item.name = f.string("name", true).value_or("");
         item.invisible = f.boolean("invisible").value_or(false);
-        int shapes = int(f.has("room")) + int(f.has("box")) + int(f.has("mesh"));
-        if (shapes != 1) {
-            sink_.error(path, shapes == 0 ? "needs one shape: \"room\", \"box\" or \"mesh\""
-                                          : "has more than one shape (\"room\", \"box\", \"mesh\")");
+        std::optional<StaticKind> kind;
+        int count = 0;
+        for (const auto& [k, name] : shapes.entries)
+            if (f.has(name)) kind = k, ++count;
+        if (count != 1) {
+            f.error(count == 0 ? "needs one shape: \"room\", \"box\" or \"mesh\""
+                               : "has more than one shape (\"room\", \"box\", \"mesh\")");
             return;
         }
-        if (f.has("room")) {
-            item.kind = StaticKind::Room;
-            for (const char* k : {"material", "transform"})
-                if (f.has(k)) f.error(k, std::string("\"") + k + "\" does not apply to a room (use \"materials\")");
-            readRoom(f, item);
-        } else {
-            for (const char* k : {"materials", "openings"})
-                if (f.has(k)) f.error(k, std::string("\"") + k + "\" applies only to a room");
-            auto mat = materialRef(f, "material", !item.invisible);
-            uint32_t m = mat.value_or(0);
-            if (f.has("box")) {
-                item.kind = StaticKind::Box;
-                if (f.has("transform")) f.error("transform", "\"transform\" applies only to a mesh");
-                Fields b(sink_, f.get("box"), f.at("box"), {"min", "max"});
-                if (auto box = readMinMax(b, "box")) addBox(item.mesh, *box, m);
-            } else {
-                item.kind = StaticKind::Mesh;
-                Transform t = readTransform(f, "transform");
-                item.mesh.append(readMeshFile(f, "mesh", m), t);
-            }
-        }
+        static const std::vector<std::string> family = familyKeys(shapes.entries, [this](const Fields& k, const auto& e) {
+            StaticItem probe;
+            readStaticShape(k, e.first, probe);
+        });
+        item.kind = *kind;
+        readStaticShape(f, item.kind, item);
+        f.finish(article(std::string(shapes.name(item.kind))), family);
         scene_.geometry.push_back(std::move(item));
     }
 
     void readRoom(const Fields& f, StaticItem& item) {
-        Fields r(sink_, f.get("room"), f.at("room"), {"min", "max"});
-        auto box = readMinMax(r, "room");
         RoomShell room;
+        std::optional<Bounds3> box;
+        if (f.has("room")) {
+            Fields r(sink_, f.get("room"), f.at("room"));
+            box = readMinMax(r, "room");
+        }
         if (box) room.box = *box;
         if (!f.has("materials")) f.missing("materials");
         else {
-            Fields m(sink_, f.get("materials"), f.at("materials"), {"floor", "walls", "ceiling"});
+            Fields m(sink_, f.get("materials"), f.at("materials"));
             room.floorMaterial = materialRef(m, "floor", true).value_or(0);
             room.wallMaterial = materialRef(m, "walls", true).value_or(0);
             room.ceilingMaterial = materialRef(m, "ceiling", true).value_or(0);
+            m.finish();
         }
         if (auto* openings = f.array("openings"))
             for (size_t i = 0; i < openings->size(); ++i) {
@@ -422,36 +480,38 @@ private:
         if (box) item.mesh = buildRoomShell(room);
     }
 
-    std::optional<Opening> readOpening(const Json& j, const std::string& path, const RoomShell& room, bool haveBox) {
-        Fields f(sink_, j, path, {"wall", "offset", "width", "sill", "height", "center", "size", "material"});
-        if (!f.valid()) return std::nullopt;
-        Opening o;
-        auto wall = f.string("wall", true);
-        if (!wall) return std::nullopt;
-        static const std::map<std::string, Wall> walls = {{"north", Wall::North}, {"south", Wall::South},
-                                                          {"east", Wall::East},   {"west", Wall::West},
-                                                          {"ceiling", Wall::Ceiling}};
-        auto it = walls.find(*wall);
-        if (it == walls.end()) {
-            f.error("wall", "unknown wall \"" + *wall + "\" (north, south, east, west or ceiling)");
-            return std::nullopt;
-        }
-        o.wall = it->second;
-        if (f.has("material")) o.material = materialRef(f, "material", true);
-        size_t before = sink_.count();
-        if (o.wall == Wall::Ceiling) {
-            for (const char* k : {"offset", "width", "sill", "height"})
-                if (f.has(k)) f.error(k, std::string("\"") + k + "\" does not apply to a ceiling opening (use center and size)");
+    // The keys of a wall opening (along the wall) or a ceiling one (a rectangle).
+    static void readOpeningPlace(const Fields& f, bool ceiling, Opening& o) {
+        if (ceiling) {
             o.center = f.vec2("center", true).value_or(Vec2());
             o.size = f.vec2("size", true, Range::positive("m")).value_or(Vec2(1, 1));
         } else {
-            for (const char* k : {"center", "size"})
-                if (f.has(k)) f.error(k, std::string("\"") + k + "\" applies only to a ceiling opening");
             o.offset = f.number("offset", kNonNegative, true).value_or(0);
             o.width = f.number("width", Range::positive("m"), true).value_or(1);
             o.sill = f.number("sill", 0.0, kNonNegative);
             o.height = f.number("height", Range::positive("m"), true).value_or(1);
         }
+    }
+
+    std::optional<Opening> readOpening(const Json& j, const std::string& path, const RoomShell& room, bool haveBox) {
+        Fields f(sink_, j, path);
+        if (!f.valid()) return std::nullopt;
+        static const std::vector<std::string> family = json::unionKeys(
+            {json::probeKeys([](const Fields& k) { Opening o; readOpeningPlace(k, true, o); }),
+             json::probeKeys([](const Fields& k) { Opening o; readOpeningPlace(k, false, o); })});
+        Opening o;
+        auto wall = f.string("wall", true);
+        if (f.has("material")) o.material = materialRef(f, "material", true);
+        auto parsed = wall ? wallNames().parse(*wall) : std::nullopt;
+        if (wall && !parsed) f.error("wall", wallNames().unknown("wall", *wall));
+        if (!parsed) {
+            f.finish("", family);
+            return std::nullopt;
+        }
+        o.wall = *parsed;
+        size_t before = sink_.count();
+        readOpeningPlace(f, o.wall == Wall::Ceiling, o);
+        f.finish(o.wall == Wall::Ceiling ? "a ceiling opening" : "a wall opening", family);
         if (sink_.count() != before || !haveBox) return std::nullopt;
         WallFrame wf = wallFrame(room.box, o.wall);
         auto rect = openingRect(room.box, o);
@@ -477,40 +537,40 @@ private:
         }
     }
 
+    // The keys of one emitter shape.
+    static void readEmitterShape(const Fields& f, EmitterShape shape, Emitter& e) {
+        if (shape != EmitterShape::Sphere) e.normal = f.direction("normal").value_or(Vec3(0, 0, -1));
+        if (shape == EmitterShape::Rect) {
+            e.size = f.vec2("size", true, Range::positive("m")).value_or(Vec2(1, 1));
+            Vec3 up = f.direction("up").value_or(std::abs(e.normal.y) > 0.999 ? Vec3(1, 0, 0) : Vec3(0, 1, 0));
+            if (length(cross(up, e.normal)) < 1e-6) f.error(f.has("up") ? "up" : "normal", "\"up\" is parallel to \"normal\"");
+            else e.up = normalize(up - e.normal * dot(up, e.normal));  // orthogonalize
+        } else {
+            e.radius = f.number("radius", Range::positive("m"), true).value_or(0.1);
+        }
+    }
+
     void readEmitter(const Json& j, const std::string& path, int entity) {
-        Fields f(sink_, j, path, {"name", "shape", "center", "normal", "size", "up", "radius", "flux_lm", "cct_k"});
+        Fields f(sink_, j, path);
         if (!f.valid()) return;
+        static const std::vector<std::string> family = familyKeys(
+            emitterShapeNames().entries, [](const Fields& k, const auto& s) { Emitter e; readEmitterShape(k, s.first, e); });
         Emitter e;
         e.jsonPath = path;
         e.entity = entity;
         e.name = f.string("name", true).value_or("");
         auto shape = f.string("shape", true);
-        if (shape == "rect") e.shape = EmitterShape::Rect;
-        else if (shape == "disk") e.shape = EmitterShape::Disk;
-        else if (shape == "sphere") e.shape = EmitterShape::Sphere;
-        else if (shape) f.error("shape", "unknown emitter shape \"" + *shape + "\" (rect, disk or sphere)");
+        auto parsed = shape ? emitterShapeNames().parse(*shape) : std::nullopt;
+        if (shape && !parsed) f.error("shape", emitterShapeNames().unknown("emitter shape", *shape));
         e.center = f.vec3("center", true).value_or(Vec3());
         e.fluxLm = f.number("flux_lm", kNonNegative, true).value_or(0);
         e.cctK = f.number("cct_k", 4000.0, Range::closed(1000, 40000, "K"));
-        if (e.shape == EmitterShape::Sphere) {
-            for (const char* k : {"normal", "size", "up"})
-                if (f.has(k)) f.error(k, std::string("\"") + k + "\" does not apply to a sphere (it emits all round)");
+        if (parsed) {
+            e.shape = *parsed;
+            readEmitterShape(f, e.shape, e);
+            f.finish(article(*shape + " emitter"), family);
         } else {
-            e.normal = f.direction("normal").value_or(Vec3(0, 0, -1));
-        }
-        if (e.shape == EmitterShape::Rect) {
-            e.size = f.vec2("size", true, Range::positive("m")).value_or(Vec2(1, 1));
-            if (f.has("radius")) f.error("radius", "\"radius\" does not apply to a rect (use size)");
-            Vec3 up = f.direction("up").value_or(std::abs(e.normal.y) > 0.999 ? Vec3(1, 0, 0) : Vec3(0, 1, 0));
-            if (length(cross(up, e.normal)) < 1e-6) {
-                f.error(f.has("up") ? "up" : "normal", "\"up\" is parallel to \"normal\"");
-            } else {
-                e.up = normalize(up - e.normal * dot(up, e.normal));  // orthogonalize
-            }
-        } else if (shape) {
-            e.radius = f.number("radius", Range::positive("m"), true).value_or(0.1);
-            if (f.has("size")) f.error("size", "\"size\" does not apply to a " + *shape + " (use radius)");
-            if (f.has("up") && e.shape == EmitterShape::Disk) f.error("up", "\"up\" does not apply to a disk");
+            f.finish("", family);
         }
         int index = int(scene_.emitters.size());
         scene_.emitters.push_back(e);
@@ -518,7 +578,7 @@ private:
     }
 
     std::optional<Region> readRegion(const Json& j, const std::string& path, double initialRotation) {
-        Fields f(sink_, j, path, {"min", "max", "rotations", "rotation_range"});
+        Fields f(sink_, j, path);
         if (!f.valid()) return std::nullopt;
         Region r;
         auto lo = f.vec2("min", true), hi = f.vec2("max", true);
@@ -530,7 +590,9 @@ private:
                                        " < min " + formatNumber((*lo)[a]));
         }
         if (f.has("rotations") && f.has("rotation_range")) {
-            sink_.error(path, "give either \"rotations\" or \"rotation_range\", not both");
+            f.error("give either \"rotations\" or \"rotation_range\", not both");
+            (void)f.get("rotations");
+            (void)f.get("rotation_range");
         } else if (auto* rots = f.array("rotations")) {
             if (rots->empty()) f.error("rotations", "the set of rotations is empty");
             for (size_t i = 0; i < rots->size(); ++i) {
@@ -551,12 +613,12 @@ private:
         } else {
             r.rotationsDeg = {initialRotation};  // no rotation given: the entity keeps its initial one
         }
+        f.finish();
         return r;
     }
 
     void readEntity(const Json& j, const std::string& path, int parent) {
-        Fields f(sink_, j, path,
-                 {"name", "children", "parts", "position", "rotation", "placement", "fixed", "fronts", "samplers", "emitters"});
+        Fields f(sink_, j, path);
         if (!f.valid()) return;
         int index = int(scene_.entities.size());
         scene_.entities.emplace_back();
@@ -570,7 +632,7 @@ private:
             e.path = parent >= 0 ? scene_.entities[parent].path + "." + e.name : e.name;
             if (f.has("position")) {
                 const Json& p = f.get("position");
-                auto n = readNumbers(sink_, p, f.at("position"), p.is_array() && p.size() == 3 ? 3 : 2);
+                auto n = json::readNumbers(sink_, p, f.at("position"), p.is_array() && p.size() == 3 ? 3 : 2);
                 if (n) e.position = Vec3((*n)[0], (*n)[1], n->size() == 3 ? (*n)[2] : 0.0);
             }
             e.rotationDeg = f.number("rotation", 0.0);
@@ -578,20 +640,24 @@ private:
         if (parent >= 0) scene_.entities[parent].children.push_back(index);
 
         bool fixed = f.boolean("fixed").value_or(false);
-        if (f.has("placement") && !fixed) {
-            Fields p(sink_, f.get("placement"), f.at("placement"), {"regions"});
-            if (auto* regions = p.array("regions", true)) {
-                if (regions->empty()) p.error("regions", "placement has no regions");
-                for (size_t i = 0; i < regions->size(); ++i)
-                    if (auto r = readRegion((*regions)[i], pointer(p.at("regions"), i), scene_.entities[index].rotationDeg))
-                        scene_.entities[index].regions.push_back(*r);
+        if (f.has("placement")) {
+            Fields p(sink_, f.get("placement"), f.at("placement"));
+            // A fixed entity keeps its placement: its regions are not read.
+            if (!fixed) {
+                if (auto* regions = p.array("regions", true)) {
+                    if (regions->empty()) p.error("regions", "placement has no regions");
+                    for (size_t i = 0; i < regions->size(); ++i)
+                        if (auto r = readRegion((*regions)[i], pointer(p.at("regions"), i), scene_.entities[index].rotationDeg))
+                            scene_.entities[index].regions.push_back(*r);
+                }
+                p.finish();
             }
         }
         if (auto* fronts = f.array("fronts")) {
             std::vector<Vec2> list;
             if (fronts->empty()) f.error("fronts", "needs at least one front direction");
             for (size_t i = 0; i < fronts->size(); ++i) {
-                auto n = readNumbers(sink_, (*fronts)[i], pointer(f.at("fronts"), i), 2);
+                auto n = json::readNumbers(sink_, (*fronts)[i], pointer(f.at("fronts"), i), 2);
                 if (!n) continue;
                 Vec2 v((*n)[0], (*n)[1]);
                 if (length(v) < 1e-12) sink_.error(pointer(f.at("fronts"), i), "front direction must not be zero");
@@ -607,65 +673,91 @@ private:
             for (size_t i = 0; i < samplers->size(); ++i) readSampler((*samplers)[i], pointer(f.at("samplers"), i), index);
         if (auto* children = f.array("children"))
             for (size_t i = 0; i < children->size(); ++i) readEntity((*children)[i], pointer(f.at("children"), i), index);
+        f.finish();
+    }
+
+    enum class PartKind { Box, Mesh, Preset };
+
+    // The keys of one kind of part; fills `mesh` and `info` (entity frame).
+    void readPartKind(const Fields& f, PartKind kind, TriangleMesh& mesh, PartInfo& info) {
+        switch (kind) {
+            case PartKind::Box: {
+                info.kind = "box";
+                info.material = materialRef(f, "material", true).value_or(0);
+                if (!f.has("box")) return;
+                Fields b(sink_, f.get("box"), f.at("box"));
+                auto size = b.vec3("size", true, Range::positive("m"));
+                auto center = b.vec3("center");
+                b.finish();
+                if (!size) return;
+                Vec3 c = center.value_or(Vec3(0, 0, size->z / 2));
+                addBox(mesh, Bounds3(c - *size * 0.5, c + *size * 0.5), info.material);
+                return;
+            }
+            case PartKind::Mesh: {
+                info.kind = "mesh";
+                info.material = materialRef(f, "material", true).value_or(0);
+                Transform t = readTransform(f, "transform");
+                mesh.append(readMeshFile(f, "mesh", info.material), t);
+                return;
+            }
+            case PartKind::Preset: readPreset(f, mesh, info); return;
+        }
+    }
+
+    void readPreset(const Fields& f, TriangleMesh& mesh, PartInfo& info) {
+        auto name = f.string("preset", true);
+        const PresetInfo* preset = name ? findPreset(*name) : nullptr;
+        if (name && !preset) {
+            std::vector<std::string> known;
+            for (const auto& p : presetCatalog()) known.push_back(p.name);
+            f.error("preset", "unknown preset \"" + *name + "\"" + didYouMean(*name, known) + " (" + listNames(known, ",") + ")");
+        }
+        std::map<std::string, uint32_t> slots;
+        bool hasSlots = f.has("materials");
+        auto body = materialRef(f, "material", preset && !hasSlots);
+        Vec3 size = f.vec3("size", false, Range::positive("m")).value_or(preset ? preset->defaultSize : Vec3(1, 1, 1));
+        Vec3 center = f.vec3("center").value_or(Vec3(0, 0, size.z / 2));
+        if (!preset) {
+            if (hasSlots) f.get("materials");  // not checked against an unknown preset's slots
+            return;
+        }
+        info.kind = preset->name;
+        if (body) slots[preset->slots.front()] = *body;
+        if (hasSlots) {
+            Fields m(sink_, f.get("materials"), f.at("materials"), "an object of material slots");
+            for (const auto& slot : preset->slots)
+                if (auto mat = materialRef(m, slot.c_str(), false)) slots[slot] = *mat;
+            m.finish();
+            if (!slots.count(preset->slots.front()))
+                m.error(preset->slots.front().c_str(), "missing the body material (give \"material\" or \"materials\"." +
+                                                           preset->slots.front() + ")");
+        }
+        info.material = slots.count(preset->slots.front()) ? slots[preset->slots.front()] : 0;
+        mesh.append(buildPreset(*preset, size, slots), Transform::translate(center - Vec3(0, 0, size.z / 2)));
     }
 
     void readPart(const Json& j, const std::string& path, int entity) {
-        Fields f(sink_, j, path, {"box", "mesh", "preset", "transform", "size", "center", "material", "materials"});
+        static const EnumNames<PartKind> kinds{{{PartKind::Box, "box"}, {PartKind::Mesh, "mesh"}, {PartKind::Preset, "preset"}}};
+        Fields f(sink_, j, path);
         if (!f.valid()) return;
-        int shapes = int(f.has("box")) + int(f.has("mesh")) + int(f.has("preset"));
-        if (shapes != 1) {
-            sink_.error(path, shapes == 0 ? "needs one of \"box\", \"mesh\" or \"preset\""
-                                          : "has more than one of \"box\", \"mesh\", \"preset\"");
+        std::optional<PartKind> kind;
+        int count = 0;
+        for (const auto& [k, name] : kinds.entries)
+            if (f.has(name)) kind = k, ++count;
+        if (count != 1) {
+            f.error(count == 0 ? "needs one of \"box\", \"mesh\" or \"preset\"" : "has more than one of \"box\", \"mesh\", \"preset\"");
             return;
         }
+        static const std::vector<std::string> family = familyKeys(kinds.entries, [this](const Fields& k, const auto& e) {
+            TriangleMesh mesh;
+            PartInfo info;
+            readPartKind(k, e.first, mesh, info);
+        });
         PartInfo info;
         TriangleMesh mesh;
-        if (f.has("box")) {
-            for (const char* k : {"transform", "size", "center", "materials"})
-                if (f.has(k)) f.error(k, std::string("\"") + k + "\" does not apply to a box part (put size and center in \"box\")");
-            info.kind = "box";
-            info.material = materialRef(f, "material", true).value_or(0);
-            Fields b(sink_, f.get("box"), f.at("box"), {"size", "center"});
-            auto size = b.vec3("size", true, Range::positive("m"));
-            if (size) {
-                Vec3 c = b.vec3("center").value_or(Vec3(0, 0, size->z / 2));
-                addBox(mesh, Bounds3(c - *size * 0.5, c + *size * 0.5), info.material);
-            }
-        } else if (f.has("mesh")) {
-            for (const char* k : {"size", "center", "materials"})
-                if (f.has(k)) f.error(k, std::string("\"") + k + "\" does not apply to a mesh part (use \"transform\")");
-            info.kind = "mesh";
-            info.material = materialRef(f, "material", true).value_or(0);
-            Transform t = readTransform(f, "transform");
-            mesh.append(readMeshFile(f, "mesh", info.material), t);
-        } else {
-            if (f.has("transform")) f.error("transform", "\"transform\" does not apply to a preset (use size, center)");
-            auto name = f.string("preset", true);
-            const PresetInfo* preset = name ? findPreset(*name) : nullptr;
-            if (name && !preset) {
-                std::string known;
-                for (const auto& p : presetCatalog()) known += (known.empty() ? "" : ", ") + p.name;
-                f.error("preset", "unknown preset \"" + *name + "\" (" + known + ")");
-                return;
-            }
-            if (!preset) return;
-            info.kind = preset->name;
-            std::map<std::string, uint32_t> slots;
-            auto body = materialRef(f, "material", !f.has("materials"));
-            if (body) slots[preset->slots.front()] = *body;
-            if (f.has("materials")) {
-                Fields m(sink_, f.get("materials"), f.at("materials"), preset->slots, "an object of material slots");
-                for (const auto& slot : preset->slots)
-                    if (auto mat = materialRef(m, slot.c_str(), false)) slots[slot] = *mat;
-                if (!slots.count(preset->slots.front()))
-                    m.error(preset->slots.front().c_str(), "missing the body material (give \"material\" or \"materials\"." +
-                                                               preset->slots.front() + ")");
-            }
-            info.material = slots.count(preset->slots.front()) ? slots[preset->slots.front()] : 0;
-            Vec3 size = f.vec3("size", false, Range::positive("m")).value_or(preset->defaultSize);
-            Vec3 center = f.vec3("center").value_or(Vec3(0, 0, size.z / 2));
-            mesh.append(buildPreset(*preset, size, slots), Transform::translate(center - Vec3(0, 0, size.z / 2)));
-        }
+        readPartKind(f, *kind, mesh, info);
+        f.finish(article(std::string(kinds.name(*kind)) + " part"), family);
         info.bounds = mesh.bounds();
         Entity& e = scene_.entities[entity];
         e.parts.push_back(info);
@@ -673,80 +765,34 @@ private:
     }
 
     void readSampler(const Json& j, const std::string& path, int entity) {
-        Fields f(sink_, j, path,
-                 {"name", "type", "target", "tolerance", "weight", "center", "normal", "size", "up", "grid", "origin",
-                  "direction", "fov_deg", "strata", "axes", "points"});
+        Fields f(sink_, j, path);
         if (!f.valid()) return;
+        static const std::vector<std::string> family = [] {
+            std::vector<std::vector<std::string>> lists;
+            for (const SamplerTypeEntry& t : samplerTypes()) lists.push_back(json::probeKeys([&](const Fields& k) { t.read(k); }));
+            return json::unionKeys(lists);
+        }();
         LightSamplerSpec s;
         s.jsonPath = path;
         s.entity = entity;
         s.name = f.string("name", true).value_or("");
         auto type = f.string("type", true);
-        std::vector<const char*> own;
-        if (type == "planar") {
-            s.type = LightSamplerType::Planar;
-            own = {"center", "normal", "size", "up", "grid"};
-            s.center = f.vec3("center", true).value_or(Vec3());
-            s.normal = f.direction("normal").value_or(Vec3(0, 0, 1));
-            s.up = f.direction("up").value_or(Vec3(0, 1, 0));
-            if (length(cross(s.up, s.normal)) < 1e-6)
-                f.error(f.has("up") ? "up" : "normal", "\"up\" is parallel to \"normal\"");
-            s.size = f.vec2("size", true).value_or(Vec2(1, 1));
-            if (f.has("size") && (s.size.x <= 0 || s.size.y <= 0))
-                f.error("size", "sampler has zero area: size " + formatNumber(s.size.x) + " x " + formatNumber(s.size.y));
-            if (f.has("grid")) {
-                auto g = readNumbers(sink_, f.get("grid"), f.at("grid"), 2, Range::closed(1, 1024));
-                if (g) {
-                    if ((*g)[0] != std::floor((*g)[0]) || (*g)[1] != std::floor((*g)[1]))
-                        f.error("grid", "grid counts must be whole numbers");
-                    s.grid = {int((*g)[0]), int((*g)[1])};
-                }
-            }
-        } else if (type == "directional") {
-            s.type = LightSamplerType::Directional;
-            own = {"origin", "direction", "fov_deg", "strata", "up"};
-            s.origin = f.vec3("origin", true).value_or(Vec3());
-            s.direction = f.direction("direction", true).value_or(Vec3(0, -1, 0));
-            s.fovDeg = f.number("fov_deg", 60.0, Range{0, 180, true, true, "deg"});
-            s.strata = f.integer("strata", Range::closed(1, 256)).value_or(8);
-            Vec3 fallbackUp = std::abs(s.direction.z) > 0.999 ? Vec3(0, 1, 0) : Vec3(0, 0, 1);
-            s.up = f.direction("up").value_or(fallbackUp);
-            if (length(cross(s.up, s.direction)) < 1e-6) f.error("up", "\"up\" is parallel to \"direction\"");
-        } else if (type == "volume") {
-            s.type = LightSamplerType::Volume;
-            own = {"center", "axes", "points"};
-            s.center = f.vec3("center", true).value_or(Vec3());
-            if (auto* axes = f.array("axes", true)) {
-                if (axes->size() != 3) f.error("axes", "expected three side vectors, got " + std::to_string(axes->size()));
-                else {
-                    bool ok = true;
-                    for (size_t i = 0; i < 3; ++i) {
-                        auto n = readNumbers(sink_, (*axes)[i], pointer(f.at("axes"), i), 3);
-                        if (n) s.axes[i] = Vec3((*n)[0], (*n)[1], (*n)[2]);
-                        else ok = false;
-                    }
-                    if (ok && std::abs(dot(cross(s.axes[0], s.axes[1]), s.axes[2])) < 1e-12)
-                        f.error("axes", "the box has zero volume (side vectors are degenerate)");
-                }
-            }
-            s.points = f.integer("points", Range::closed(1, 1000000)).value_or(200);
-        } else if (type) {
-            f.error("type", "unknown sampler type \"" + *type + "\" (planar, directional or volume)");
+        const SamplerTypeEntry* entry = type ? findSamplerType(*type) : nullptr;
+        if (type && !entry) {
+            f.error("type", "unknown sampler type \"" + *type + "\"" + didYouMean(*type, samplerTypeNames()) + " (" +
+                                listNames(samplerTypeNames()) + ")");
         }
-        if (type)
-            for (const char* k : {"center", "normal", "size", "up", "grid", "origin", "direction", "fov_deg", "strata", "axes", "points"})
-                if (f.has(k) && std::find_if(own.begin(), own.end(), [&](const char* o) { return std::string(o) == k; }) == own.end() &&
-                    !own.empty())
-                    f.error(k, std::string("\"") + k + "\" does not apply to a " + *type + " sampler");
-        readTarget(f, s);
+        if (entry) s.type = entry->read(f);
+        readTarget(f, s, entry ? s.type->unit() : "");
         s.weight = f.number("weight", 1.0, kNonNegative);
+        f.finish(entry ? article(*type + " sampler") : "", family);
+        if (!entry) return;
         int index = int(scene_.samplers.size());
         scene_.samplers.push_back(s);
         if (entity >= 0) scene_.entities[entity].samplers.push_back(index);
     }
 
-    void readTarget(const Fields& f, LightSamplerSpec& s) {
-        const char* unit = s.unit();
+    void readTarget(const Fields& f, LightSamplerSpec& s, const char* unit) {
         if (!f.has("target")) f.missing("target");
         else {
             const Json& t = f.get("target");
@@ -783,6 +829,12 @@ private:
         s.tolerance = f.number("tolerance", fallback, Range::positive(unit));
     }
 
+    std::vector<std::string> entityNames() const {
+        std::vector<std::string> names{"room"};
+        for (const Entity& e : scene_.entities) names.push_back(e.path);
+        return names;
+    }
+
     int entityRef(const Fields& f, const char* key, bool allowRoom) {
         auto name = f.string(key, true);
         if (!name) return -1;
@@ -803,65 +855,58 @@ private:
                     e = int(i);
                 }
         }
-        if (e < 0 && !entitiesIncomplete_) f.error(key, "unknown entity \"" + *name + "\"");
+        if (e < 0 && !entitiesIncomplete_) f.error(key, "unknown entity \"" + *name + "\"" + didYouMean(*name, entityNames()));
         return e;
     }
 
-    void readConstraint(const Json& j, const std::string& path) {
-        Fields f(sink_, j, path, {"type", "a", "b", "tolerance_deg", "min", "max", "tolerance", "weight"});
-        if (!f.valid()) return;
-        ConstraintSpec c;
-        c.jsonPath = path;
-        auto type = f.string("type", true);
-        if (!type) return;
-        c.weight = f.number("weight", 1.0, kNonNegative);
-        auto only = [&](std::initializer_list<const char*> keys) {
-            for (const char* k : {"a", "b", "tolerance_deg", "min", "max", "tolerance"})
-                if (f.has(k) && std::find_if(keys.begin(), keys.end(), [&](const char* o) { return std::string(o) == k; }) == keys.end())
-                    f.error(k, std::string("\"") + k + "\" does not apply to a " + *type + " constraint");
-        };
+    // The keys of one constraint type (all but "type" and "weight"). The overlap rule's
+    // tolerance is the scene's.
+    void readConstraintType(const Fields& f, ConstraintType type, ConstraintSpec& c, double& overlapTolerance) {
         auto angle = [&] { c.toleranceDeg = f.number("tolerance_deg", 10.0, Range{0, 180, true, false, "deg"}); };
         auto distances = [&] {
             auto lo = f.number("min", kNonNegative, true);
             // "max": null leaves the range open above.
-            auto hi = f.has("max") && f.get("max").is_null() ? std::optional<double>(kInf) : f.number("max", kNonNegative, true);
+            bool open = f.has("max") && f.get("max").is_null();
+            auto hi = open ? std::optional<double>(kInf) : f.number("max", kNonNegative, true);
             if (lo && hi && *hi < *lo)
                 f.error("max", "distance range is reversed: max " + formatNumber(*hi) + " < min " + formatNumber(*lo) + " m");
             c.minDistance = lo.value_or(0), c.maxDistance = hi.value_or(kInf);
             c.distanceTolerance = f.number("tolerance", Range::positive("m"));
         };
-        if (*type == "overlap") {
-            c.type = ConstraintType::Overlap;
-            only({"tolerance"});
-            scene_.overlapTolerance = f.number("tolerance", 0.05, Range{0, 1, true, false});
-            scene_.constraints.push_back(c);
-            return;
-        }
-        if (*type == "alignment") {
-            c.type = ConstraintType::Alignment;
-            only({"a", "b", "tolerance_deg"});
-            angle();
-        } else if (*type == "distance") {
-            c.type = ConstraintType::Distance;
-            only({"a", "b", "min", "max", "tolerance"});
-            distances();
-        } else if (*type == "focus") {
-            c.type = ConstraintType::Focus;
-            only({"a", "b", "tolerance_deg"});
-            angle();
-        } else if (*type == "conversation") {
-            c.type = ConstraintType::Conversation;
-            only({"a", "b", "min", "max", "tolerance_deg", "tolerance"});
-            angle();
-            distances();
-        } else {
-            f.error("type", "unknown constraint type \"" + *type +
-                                "\" (alignment, distance, focus, conversation or overlap)");
-            return;
+        switch (type) {
+            case ConstraintType::Overlap: overlapTolerance = f.number("tolerance", 0.05, Range{0, 1, true, false}); return;
+            case ConstraintType::Alignment:
+            case ConstraintType::Focus: angle(); break;
+            case ConstraintType::Distance: distances(); break;
+            case ConstraintType::Conversation: angle(), distances(); break;
         }
         c.a = entityRef(f, "a", false);
-        c.b = entityRef(f, "b", c.type == ConstraintType::Alignment);
+        c.b = entityRef(f, "b", type == ConstraintType::Alignment);
         if (c.a >= 0 && c.a == c.b) f.error("b", "a constraint needs two different entities");
+    }
+
+    void readConstraint(const Json& j, const std::string& path) {
+        Fields f(sink_, j, path);
+        if (!f.valid()) return;
+        static const std::vector<std::string> family =
+            familyKeys(constraintTypeNames().entries, [this](const Fields& k, const auto& e) {
+                ConstraintSpec c;
+                double tolerance;
+                readConstraintType(k, e.first, c, tolerance);
+            });
+        ConstraintSpec c;
+        c.jsonPath = path;
+        auto type = f.string("type", true);
+        c.weight = f.number("weight", 1.0, kNonNegative);
+        auto parsed = type ? constraintTypeNames().parse(*type) : std::nullopt;
+        if (type && !parsed) f.error("type", constraintTypeNames().unknown("constraint type", *type));
+        if (!parsed) {
+            f.finish("", family);
+            return;
+        }
+        c.type = *parsed;
+        readConstraintType(f, c.type, c, scene_.overlapTolerance);
+        f.finish(article(*type + " constraint"), family);
         scene_.constraints.push_back(c);
     }
 

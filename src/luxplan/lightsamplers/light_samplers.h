@@ -1,32 +1,25 @@
-// The paper's three light samplers (section 4), measured by the path tracer:
-// planar (illuminance at grid points), directional (max over strata of the mean
-// luminance in a pyramidal frustum) and volume (mean spherical luminance at points
-// in an oriented box). Samplers on entities follow the layout.
+// Measuring the scene's light samplers with the path tracer. Each sampler type
+// (sampler_type.h: planar, directional, volume) says where it measures and what one
+// path contributes; this runs the paths in parallel and combines them. Samplers on
+// entities follow the layout.
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
+#include <luxplan/lightsamplers/sampler_type.h>
 #include <luxplan/pathtracer/path_tracer.h>
 
 namespace luxplan {
 
-// Where one sampler measures, in world space for the current layout.
-struct SamplerGeometry {
-    std::vector<Vec3> points;   // planar/volume points; for directional, the apex once
-    Vec3 normal;                // planar
-    Vec3 forward, right, up;    // directional frame
-    double tanHalfFov = 0;
-    int strata = 0;
-};
-
-SamplerGeometry samplerGeometry(const LightSamplerSpec& spec, const Transform& worldFromEntity);
+// A sampler placed for the current layout of `rt`.
+std::unique_ptr<PlacedSampler> placeSampler(const LightSamplerSpec& sampler, const EmbreeScene& rt);
 
 struct SamplerResult {
-    double value = 0;              // lx (planar) or cd/m^2
-    double standardError = 0;      // of `value`, from the per-point sample variances
-    std::vector<double> points;    // per point (planar: row-major over grid; volume: per point)
-                                   // or per stratum (directional: row-major, right fastest, bottom row first)
+    double value = 0;              // in the type's unit (lx, cd/m2)
+    double standardError = 0;      // of `value`, from the per-item sample variances
+    std::vector<double> points;    // per item: the type's points or strata, in its order
     std::vector<double> pointErrors;
     double penalty = 0;            // Eq. 2 with alpha = 1 and the sampler's tolerance
 };

@@ -8,6 +8,7 @@
 
 #include <luxplan/constraints/entity_info.h>
 #include <luxplan/constraints/relational.h>
+#include <luxplan/lightsamplers/sampler_type.h>
 #include <luxplan/optimizer/placement.h>
 
 namespace luxplan {
@@ -116,15 +117,6 @@ std::vector<Transform> samplePlacements(const Entity& e) {
 // without children).
 Vec3 ownCenter(const Entity& e) { return e.hasGeometry() ? e.mesh.bounds().center() : Vec3(); }
 
-void transformSampler(LightSamplerSpec& s, const Transform& t) {
-    s.center = t.applyPoint(s.center);
-    s.origin = t.applyPoint(s.origin);
-    s.normal = t.applyVector(s.normal);
-    s.up = t.applyVector(s.up);
-    s.direction = t.applyVector(s.direction);
-    for (Vec3& a : s.axes) a = t.applyVector(a);
-}
-
 void transformEmitter(Emitter& e, const Transform& t) {
     e.center = t.applyPoint(e.center);
     e.normal = t.applyVector(e.normal);
@@ -219,7 +211,7 @@ FlatScene flattenScene(const Scene& scene) {
         Entity& rep = out.entities[size_t(flat.representative[k])];
         Transform repFromGroup = flat.entityFromRepresentative[k].inverse();
         for (int s : entities[k].samplers) {
-            transformSampler(out.samplers[size_t(s)], repFromGroup);
+            out.samplers[size_t(s)].type = out.samplers[size_t(s)].type->transformed(repFromGroup);
             rep.samplers.push_back(s);
         }
         for (int m : entities[k].emitters) {

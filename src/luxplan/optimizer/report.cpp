@@ -8,6 +8,7 @@
 
 #include <luxplan/core/error.h>
 #include <luxplan/io/layout_io.h>
+#include <luxplan/lightsamplers/sampler_type.h>
 
 namespace luxplan {
 namespace {
@@ -102,7 +103,7 @@ std::string reportJson(const Scene& scene, const OptimizerResult& r) {
     for (const SamplerMeasurement& m : best.samplers.samplers) {
         if (m.sampler < 0 || size_t(m.sampler) >= scene.samplers.size()) continue;
         const LightSamplerSpec& s = scene.samplers[size_t(m.sampler)];
-        Json e = {{"name", s.name}, {"type", samplerTypeName(s.type)}, {"unit", s.unit()},
+        Json e = {{"name", s.name}, {"type", s.type->name()}, {"unit", s.type->unit()},
                   {"value", number(m.value)}, {"target", {number(s.targetMin), number(s.targetMax)}},
                   {"tolerance", s.tolerance}, {"weight", s.weight}, {"penalty", number(m.penalty)}};
         if (!m.points.empty()) e["points"] = m.points;

@@ -10,6 +10,7 @@
 
 #include <luxplan/core/rng.h>
 #include <luxplan/scene/room.h>
+#include <luxplan/lightsamplers/sampler_type.h>
 
 namespace luxplan {
 namespace {
@@ -115,40 +116,6 @@ std::vector<Vec3> emitterOutline(const Emitter& e, const Transform& world) {
                 double phi = 2 * kPi * i / 32;
                 pts.push_back(world.applyPoint(e.center + (f.s * std::cos(phi) + f.t * std::sin(phi)) * e.radius));
             }
-            break;
-        }
-    }
-    return pts;
-}
-
-// The world-space outline points of a sampler and where its label goes.
-std::vector<Vec3> samplerOutline(const LightSamplerSpec& s, const SamplerGeometry& g, const Transform& world) {
-    std::vector<Vec3> pts;
-    switch (s.type) {
-        case LightSamplerType::Planar: {
-            Vec3 n = normalize(s.normal), up = normalize(s.up - n * dot(s.up, n)), side = cross(up, n);
-            for (int i = 0; i < 4; ++i) {
-                double a = (i == 0 || i == 3) ? -0.5 : 0.5, b = i < 2 ? -0.5 : 0.5;
-                pts.push_back(world.applyPoint(s.center + side * (a * s.size.x) + up * (b * s.size.y)));
-            }
-            break;
-        }
-        case LightSamplerType::Directional: {
-            // The frustum's four edge rays, 1 m long, and the apex.
-            const double reach = 1.0;
-            pts.push_back(g.points[0]);
-            for (int i = 0; i < 4; ++i) {
-                double a = (i & 1) ? 1 : -1, b = (i & 2) ? 1 : -1;
-                Vec3 d = normalize(g.forward + g.right * (a * g.tanHalfFov) + g.up * (b * g.tanHalfFov));
-                pts.push_back(g.points[0] + d * reach);
-            }
-            break;
-        }
-        case LightSamplerType::Volume: {
-            Vec3 corner = s.center - (s.axes[0] + s.axes[1] + s.axes[2]) * 0.5;
-            for (int i = 0; i < 8; ++i)
-                pts.push_back(world.applyPoint(corner + s.axes[0] * double(i & 1) + s.axes[1] * double((i >> 1) & 1) +
-                                               s.axes[2] * double((i >> 2) & 1)));
             break;
         }
     }
@@ -418,31 +385,19 @@ Image renderPlan(const Scene& scene, const Layout& layout, const PlanOptions& op
     for (size_t k = 0; k < scene.samplers.size(); ++k) {
         const LightSamplerSpec& spec = scene.samplers[k];
         Transform t = spec.entity >= 0 ? world[size_t(spec.entity)] : Transform();
-        SamplerGeometry g = samplerGeometry(spec, t);
+        SamplerDrawing drawing = spec.type->place(t)->drawing();
         Rgb color = kUnknownColor;
         std::string text = spec.name;
         if (data.samplers && k < data.samplers->size()) {
             double v = (*data.samplers)[k].value;
             color = v >= spec.targetMin && v <= spec.targetMax ? kPassColor : kFailColor;
-            text.append(" ").append(formatValue(std::round(v * 10) / 10)).append(" ").append(spec.unit());
+            text.append(" ").append(formatValue(std::round(v * 10) / 10)).append(" ").append(spec.type->unit());
         }
-        auto poly = footprint(samplerOutline(spec, g, t), map);
-        switch (spec.type) {
-            case LightSamplerType::Planar:
-                image.drawPolygon(poly, color, 2.5);
-                for (const Vec3& p : g.points) image.fillCircle(map(p), 2, color);
-                break;
-            case LightSamplerType::Directional:
-                image.fillPolygon(poly, color, 0.12);
-                image.drawPolygon(poly, color, 1.5);
-                image.fillCircle(map(g.points[0]), 4, color);
-                break;
-            case LightSamplerType::Volume:
-                image.fillPolygon(poly, color, 0.15);
-                image.drawPolygon(poly, color, 2);
-                break;
-        }
-        Vec2 c = spec.type == LightSamplerType::Directional ? map(g.points[0]) : centroid(poly);
+        auto poly = footprint(drawing.outline, map);
+        if (drawing.fillOpacity > 0) image.fillPolygon(poly, color, drawing.fillOpacity);
+        image.drawPolygon(poly, color, drawing.lineWidth);
+        for (const Vec3& p : drawing.dots) image.fillCircle(map(p), drawing.dotRadius, color);
+        Vec2 c = drawing.labelAt ? map(*drawing.labelAt) : centroid(poly);
         if (options.samplerLabels) samplerLabels.push_back({c + Vec2(0, 8), text}), samplerColors.push_back(color);
     }
 

@@ -9,6 +9,7 @@
 
 #include <luxplan/core/error.h>
 #include <luxplan/scene/layout.h>
+#include <luxplan/lightsamplers/sampler_type.h>
 
 namespace luxplan {
 namespace {
@@ -109,7 +110,7 @@ void summary(std::ostringstream& out, const Scene& scene, const ReportData& data
     if (scene.daylight) {
         std::string when = scene.daylight->from ? scene.daylight->from->str() : "";
         if (scene.daylight->to) when += " to " + scene.daylight->to->str();
-        item("daylight", escapeHtml(std::string(skyModelName(scene.daylight->model)) + " sky" +
+        item("daylight", escapeHtml(std::string(skyModelNames().name(scene.daylight->model)) + " sky" +
                                     (when.empty() ? "" : ", " + when)));
     } else {
         item("daylight", "none (night)");
@@ -178,15 +179,15 @@ void samplerTable(std::ostringstream& out, const Scene& scene, const std::vector
            "<th>tolerance</th><th>penalty</th><th>status</th></tr>\n";
     for (size_t k = 0; k < rows.size(); ++k) {
         const LightSamplerSpec& s = scene.samplers[k];
-        out << "<tr>" << cell(escapeHtml(s.name)) << cell(escapeHtml(samplerTypeName(s.type)))
+        out << "<tr>" << cell(escapeHtml(s.name)) << cell(escapeHtml(s.type->name()))
             << cell(s.entity >= 0 ? escapeHtml(entityName(scene, s.entity)) : "<span class=\"muted\">fixed</span>");
         if (rows[k].known) {
             bool ok = rows[k].value >= s.targetMin && rows[k].value <= s.targetMax;
-            out << "<td class=\"num\">" << number(rows[k].value, 1) << "</td>" << cell(escapeHtml(s.unit()))
+            out << "<td class=\"num\">" << number(rows[k].value, 1) << "</td>" << cell(escapeHtml(s.type->unit()))
                 << cell(range(s.targetMin, s.targetMax, 0)) << "<td class=\"num\">" << number(s.tolerance, 1) << "</td>"
                 << "<td class=\"num\">" << number(rows[k].penalty, 3) << "</td>" << cell(ok ? "met" : "missed", ok ? "met" : "missed");
         } else {
-            out << "<td class=\"num\">&ndash;</td>" << cell(escapeHtml(s.unit())) << cell(range(s.targetMin, s.targetMax, 0))
+            out << "<td class=\"num\">&ndash;</td>" << cell(escapeHtml(s.type->unit())) << cell(range(s.targetMin, s.targetMax, 0))
                 << "<td class=\"num\">" << number(s.tolerance, 1) << "</td><td class=\"num\">&ndash;</td>"
                 << cell("not measured", "muted");
         }

@@ -11,35 +11,33 @@ double Emitter::area() const {
     return 0;
 }
 
-const char* samplerTypeName(LightSamplerType t) {
-    switch (t) {
-        case LightSamplerType::Planar: return "planar";
-        case LightSamplerType::Directional: return "directional";
-        case LightSamplerType::Volume: return "volume";
-    }
-    return "?";
+const EnumNames<ConstraintType>& constraintTypeNames() {
+    static const EnumNames<ConstraintType> names{{{ConstraintType::Alignment, "alignment"},
+                                                  {ConstraintType::Distance, "distance"},
+                                                  {ConstraintType::Focus, "focus"},
+                                                  {ConstraintType::Conversation, "conversation"},
+                                                  {ConstraintType::Overlap, "overlap"}}};
+    return names;
 }
 
-const char* constraintTypeName(ConstraintType t) {
-    switch (t) {
-        case ConstraintType::Alignment: return "alignment";
-        case ConstraintType::Distance: return "distance";
-        case ConstraintType::Focus: return "focus";
-        case ConstraintType::Conversation: return "conversation";
-        case ConstraintType::Overlap: return "overlap";
-    }
-    return "?";
+const EnumNames<Wall>& wallNames() {
+    static const EnumNames<Wall> names{
+        {{Wall::North, "north"}, {Wall::South, "south"}, {Wall::East, "east"}, {Wall::West, "west"}, {Wall::Ceiling, "ceiling"}}};
+    return names;
 }
 
-const char* wallName(Wall w) {
-    switch (w) {
-        case Wall::North: return "north";
-        case Wall::South: return "south";
-        case Wall::East: return "east";
-        case Wall::West: return "west";
-        case Wall::Ceiling: return "ceiling";
-    }
-    return "?";
+const EnumNames<EmitterShape>& emitterShapeNames() {
+    static const EnumNames<EmitterShape> names{
+        {{EmitterShape::Rect, "rect"}, {EmitterShape::Disk, "disk"}, {EmitterShape::Sphere, "sphere"}}};
+    return names;
+}
+
+const EnumNames<MaterialType>& materialTypeNames() {
+    static const EnumNames<MaterialType> names{{{MaterialType::Diffuse, "diffuse"},
+                                                {MaterialType::Glossy, "glossy"},
+                                                {MaterialType::Glass, "glass"},
+                                                {MaterialType::Mirror, "mirror"}}};
+    return names;
 }
 
 int Scene::findEntity(const std::string& path) const {

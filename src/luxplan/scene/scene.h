@@ -6,12 +6,14 @@
 #include <array>
 #include <filesystem>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include <luxplan/core/math.h>
+#include <luxplan/core/names.h>
 #include <luxplan/daylight/daylight.h>
 #include <luxplan/materials/material.h>
 #include <luxplan/scene/mesh.h>
@@ -69,34 +71,18 @@ struct Emitter {
     double luminance() const { return fluxLm / (kPi * area()); }
 };
 
-enum class LightSamplerType { Planar, Directional, Volume };
+class SamplerType;  // lightsamplers/sampler_type.h
 
-// A lighting intention: where and what to measure, and the accepted range.
+// A lighting intention (the paper's Section 4): what its type measures where, and
+// the accepted range of the value.
 struct LightSamplerSpec {
     std::string name;
     std::string jsonPath;
-    LightSamplerType type = LightSamplerType::Planar;
-    double targetMin = 0, targetMax = kInf;
+    std::shared_ptr<const SamplerType> type;  // planar, directional, volume (lightsamplers/)
+    double targetMin = 0, targetMax = kInf;   // in the type's unit
     double tolerance = 1;  // the paper's L_rej (same unit as the target)
     double weight = 1;
     int entity = -1;       // -1: world frame; else the entity it moves with
-
-    // planar: illuminance (lx) at the centres of grid[0] x grid[1] cells
-    Vec3 center;
-    Vec3 normal{0, 0, 1};
-    Vec3 up{0, 1, 0};
-    Vec2 size{1, 1};
-    std::array<int, 2> grid{4, 4};
-    // directional: max over strata of the mean luminance (cd/m^2) in a pyramidal frustum
-    Vec3 origin;
-    Vec3 direction{0, -1, 0};
-    double fovDeg = 60;
-    int strata = 8;
-    // volume: mean spherical luminance (cd/m^2) at points in an oriented box
-    std::array<Vec3, 3> axes{Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)};
-    int points = 200;
-
-    const char* unit() const { return type == LightSamplerType::Planar ? "lx" : "cd/m2"; }
 };
 
 // A valid parameter partition X_m: a box for the entity's origin and its rotations.
@@ -181,10 +167,12 @@ struct OptimizerSettings {
     bool startFromScene = false;     // start from the scene's placement instead of uniform draws
 };
 
-// The scene file's names for these enums ("planar", "alignment", "south", ...).
-const char* samplerTypeName(LightSamplerType type);
-const char* constraintTypeName(ConstraintType type);
-const char* wallName(Wall wall);
+// The scene file's names for these enums ("alignment", "south", "rect"): one table
+// each parses, prints and lists them (core/names.h).
+const EnumNames<ConstraintType>& constraintTypeNames();
+const EnumNames<Wall>& wallNames();
+const EnumNames<EmitterShape>& emitterShapeNames();
+const EnumNames<MaterialType>& materialTypeNames();
 
 struct Scene {
     std::filesystem::path file;

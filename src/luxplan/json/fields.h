@@ -1,8 +1,13 @@
-// Validated reading of JSON objects: every problem becomes a Diagnostic with
-// its JSON Pointer, and keys an object does not know are reported, not ignored.
+// Validated reading of JSON objects: every problem becomes a Diagnostic with its
+// JSON Pointer. An object knows its keys from what its reader reads (pbrt's
+// ReportUnused): each accessor marks its key, and finish() reports the rest as
+// unknown, or as not applying to the kind being read when another kind of the same
+// family reads it. No list of keys is kept by hand, so none can drift.
 #pragma once
 
+#include <functional>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -11,7 +16,7 @@
 #include <luxplan/core/error.h>
 #include <luxplan/core/math.h>
 
-namespace luxplan::io {
+namespace luxplan::json {
 
 using Json = nlohmann::json;
 
@@ -41,19 +46,19 @@ struct Range {
     std::string describe() const;
 };
 
-// One JSON object being read. Construction checks it is an object and reports
-// unknown keys; the accessors report wrong types, missing keys and bad ranges.
+// One JSON object being read. Construction checks it is an object; the accessors
+// report wrong types, missing keys and bad ranges, and mark their key as read.
 class Fields {
 public:
-    Fields(DiagnosticSink& sink, const Json& value, std::string path, std::vector<std::string> allowedKeys,
-           const char* what = "an object");
+    Fields(DiagnosticSink& sink, const Json& value, std::string path, const char* what = "an object");
 
     bool valid() const { return valid_; }
-    bool has(const char* key) const;
-    const Json& get(const char* key) const;  // only when has(key)
+    bool has(const char* key) const;         // also makes `key` a known key of this object
+    const Json& get(const char* key) const;  // only when has(key); marks it read
     std::string at(const char* key) const { return pointer(path_, key); }
     const std::string& path() const { return path_; }
     void error(const char* key, std::string message) const { sink_.error(at(key), std::move(message)); }
+    void error(std::string message) const { sink_.error(path_, std::move(message)); }  // the object itself
     void missing(const char* key) const;
 
     std::optional<double> number(const char* key, Range range = {}, bool required = false) const;
@@ -69,13 +74,35 @@ public:
     std::optional<Vec3> direction(const char* key, bool required = false) const;
     // An array (reports a type error otherwise); nullptr if absent or invalid.
     const Json* array(const char* key, bool required = false) const;
+    // An array of `length` numbers, each in `range`.
+    std::optional<std::vector<double>> numbers(const char* key, size_t length, Range range = {}, bool required = false) const;
+    // Where problems go, for values below this object's keys.
+    DiagnosticSink& sink() const { return sink_; }
+
+    // Reports every key of the object that was not read: "\"k\" does not apply to
+    // <kind>" when `family` (the keys of the other kinds) holds it, else "unknown key",
+    // with the closest known key as a hint and the known keys listed. With no `kind`
+    // (it was not recognised) the family's keys are not judged.
+    void finish(const std::string& kind = "", const std::vector<std::string>& family = {}) const;
+    // The keys this reader asked for, in the order it first asked.
+    const std::vector<std::string>& known() const { return known_; }
 
 private:
     DiagnosticSink& sink_;
     const Json* value_;
     std::string path_;
     bool valid_ = false;
+    mutable std::vector<std::string> known_;
+    mutable std::set<std::string> read_;
+    void note(const char* key) const;
+    void markRead(const char* key) const;
 };
+
+// The keys `reader` asks for on an empty object: how a family of kinds learns every
+// key its members read, for finish()'s "does not apply" messages.
+std::vector<std::string> probeKeys(const std::function<void(const Fields&)>& reader);
+// The union of several key lists, first occurrence first.
+std::vector<std::string> unionKeys(const std::vector<std::vector<std::string>>& lists);
 
 // Reads numbers from a JSON array of fixed length at `path`.
 std::optional<std::vector<double>> readNumbers(DiagnosticSink& sink, const Json& value, const std::string& path,
@@ -85,4 +112,4 @@ std::optional<std::vector<double>> readNumbers(DiagnosticSink& sink, const Json&
 std::string typeName(const Json& value);
 std::string formatNumber(double v);
 
-}  // namespace luxplan::io
+}  // namespace luxplan::json

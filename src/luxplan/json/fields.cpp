@@ -1,11 +1,14 @@
-#include <luxplan/io/json_fields.h>
+#include <luxplan/json/fields.h>
 
 #include <algorithm>
 #include <cstdio>
+#include <limits>
 
 #include <nlohmann/json.hpp>
 
-namespace luxplan::io {
+#include <luxplan/core/names.h>
+
+namespace luxplan::json {
 
 std::string pointer(const std::string& base, const std::string& key) {
     std::string escaped;
@@ -47,25 +50,65 @@ std::string typeName(const Json& v) {
     }
 }
 
-Fields::Fields(DiagnosticSink& sink, const Json& value, std::string path, std::vector<std::string> allowedKeys,
-               const char* what)
+Fields::Fields(DiagnosticSink& sink, const Json& value, std::string path, const char* what)
     : sink_(sink), value_(&value), path_(std::move(path)) {
     if (!value.is_object()) {
         sink_.error(path_, std::string("expected ") + what + ", got " + typeName(value));
         return;
     }
     valid_ = true;
-    for (const auto& [key, _] : value.items()) {
-        if (std::find(allowedKeys.begin(), allowedKeys.end(), key) != allowedKeys.end()) continue;
-        std::string known;
-        for (size_t i = 0; i < allowedKeys.size(); ++i) known += (i ? ", " : "") + allowedKeys[i];
-        sink_.error(pointer(path_, key), "unknown key \"" + key + "\" (known keys: " + known + ")");
+}
+
+void Fields::note(const char* key) const {
+    if (std::find(known_.begin(), known_.end(), key) == known_.end()) known_.emplace_back(key);
+}
+
+void Fields::markRead(const char* key) const { read_.insert(key); }
+
+bool Fields::has(const char* key) const {
+    note(key);
+    return valid_ && value_->contains(key);
+}
+
+const Json& Fields::get(const char* key) const {
+    note(key);
+    markRead(key);
+    return (*value_)[key];
+}
+
+void Fields::missing(const char* key) const { sink_.error(path_, std::string("missing required key \"") + key + "\""); }
+
+void Fields::finish(const std::string& kind, const std::vector<std::string>& family) const {
+    if (!valid_) return;
+    std::vector<std::string> all = unionKeys({known_, family});
+    for (const auto& [key, _] : value_->items()) {
+        if (read_.count(key)) continue;
+        bool ofFamily = std::find(family.begin(), family.end(), key) != family.end();
+        if (ofFamily && kind.empty()) continue;  // the kind is unknown: its keys cannot be judged
+        bool known = std::find(all.begin(), all.end(), key) != all.end();
+        if (known && !kind.empty())
+            sink_.error(pointer(path_, key), "\"" + key + "\" does not apply to " + kind);
+        else
+            sink_.error(pointer(path_, key), "unknown key \"" + key + "\"" + didYouMean(key, all) + " (known keys: " +
+                                                 listNames(all, ",") + ")");
     }
 }
 
-bool Fields::has(const char* key) const { return valid_ && value_->contains(key); }
-const Json& Fields::get(const char* key) const { return (*value_)[key]; }
-void Fields::missing(const char* key) const { sink_.error(path_, std::string("missing required key \"") + key + "\""); }
+std::vector<std::string> unionKeys(const std::vector<std::vector<std::string>>& lists) {
+    std::vector<std::string> out;
+    for (const auto& list : lists)
+        for (const auto& k : list)
+            if (std::find(out.begin(), out.end(), k) == out.end()) out.push_back(k);
+    return out;
+}
+
+std::vector<std::string> probeKeys(const std::function<void(const Fields&)>& reader) {
+    static const Json empty = Json::object();
+    DiagnosticSink discard;
+    Fields f(discard, empty, "");
+    reader(f);
+    return f.known();
+}
 
 static bool checkNumber(DiagnosticSink& sink, const Json& v, const std::string& path, const Range& range, double* out) {
     if (!v.is_number()) {
@@ -114,6 +157,11 @@ std::optional<int> Fields::integer(const char* key, Range range, bool required) 
         error(key, "value " + formatNumber(d) + " outside " + range.describe());
         return std::nullopt;
     }
+    // Checked before the conversion: a larger number would wrap.
+    if (std::abs(d) > double(std::numeric_limits<int>::max())) {
+        error(key, "value " + formatNumber(d) + " exceeds the limit of " + std::to_string(std::numeric_limits<int>::max()));
+        return std::nullopt;
+    }
     return int(d);
 }
 
@@ -153,6 +201,14 @@ std::optional<std::vector<double>> readNumbers(DiagnosticSink& sink, const Json&
     for (size_t i = 0; i < length; ++i) ok = checkNumber(sink, v[i], pointer(path, i), range, &out[i]) && ok;
     if (!ok) return std::nullopt;
     return out;
+}
+
+std::optional<std::vector<double>> Fields::numbers(const char* key, size_t length, Range range, bool required) const {
+    if (!has(key)) {
+        if (required && valid_) missing(key);
+        return std::nullopt;
+    }
+    return readNumbers(sink_, get(key), at(key), length, range);
 }
 
 std::optional<Vec2> Fields::vec2(const char* key, bool required, Range range) const {
@@ -214,4 +270,4 @@ const Json* Fields::array(const char* key, bool required) const {
     return &get(key);
 }
 
-}  // namespace luxplan::io
+}  // namespace luxplan::json

@@ -1,0 +1,31 @@
+// The one table of sampler types: a new type is its file and one line here.
+#include <luxplan/lightsamplers/sampler_type.h>
+
+namespace luxplan {
+
+std::shared_ptr<const SamplerType> readPlanarSampler(const json::Fields& f);       // planar.cpp
+std::shared_ptr<const SamplerType> readDirectionalSampler(const json::Fields& f);  // directional.cpp
+std::shared_ptr<const SamplerType> readVolumeSampler(const json::Fields& f);       // volume.cpp
+
+const std::vector<SamplerTypeEntry>& samplerTypes() {
+    static const std::vector<SamplerTypeEntry> types = {
+        {"planar", readPlanarSampler},
+        {"directional", readDirectionalSampler},
+        {"volume", readVolumeSampler},
+    };
+    return types;
+}
+
+const SamplerTypeEntry* findSamplerType(std::string_view name) {
+    for (const SamplerTypeEntry& t : samplerTypes())
+        if (name == t.name) return &t;
+    return nullptr;
+}
+
+std::vector<std::string> samplerTypeNames() {
+    std::vector<std::string> names;
+    for (const SamplerTypeEntry& t : samplerTypes()) names.push_back(t.name);
+    return names;
+}
+
+}  // namespace luxplan
