@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include <luxplan/core/error.h>
+#include <luxplan/emitters/emitter_shape.h>
 #include <luxplan/io/scene_loader.h>
 #include "support/temp_files.h"
 
@@ -81,7 +82,7 @@ TEST(SceneLoader, ValidSceneLoads) {
     EXPECT_EQ(s.samplers[0].entity, 0);
     EXPECT_EQ(s.constraints[1].a, 1);
     EXPECT_EQ(s.optimizer.seed, 3u);
-    EXPECT_NEAR(s.emitters[0].luminance(), 3200 / (kPi * 0.36), 1e-9);
+    EXPECT_NEAR(emitterLuminance(s.emitters[0]), 3200 / (kPi * 0.36), 1e-9);
     EXPECT_EQ(s.materials[s.materialIndex.at("screen")].type, MaterialType::Glossy);
 }
 

@@ -10,6 +10,7 @@
 #include <luxplan/constraints/geometry_cost.h>
 #include <luxplan/io/layout_io.h>
 #include <luxplan/io/scene_loader.h>
+#include <luxplan/emitters/emitter_shape.h>
 #include <luxplan/lightsamplers/sampler_type.h>
 #include <luxplan/optimizer/flatten.h>
 #include <luxplan/optimizer/optimizer.h>
@@ -176,7 +177,7 @@ TEST_F(FlattenTest, EveryHierarchicalLayoutCostsTheSameFlat) {
         for (size_t i = 0; i < points.size(); ++i) EXPECT_NEAR(length(points[i] - flatPoints[i]), 0.0, 1e-9);
         const Emitter& m = scene.emitters[0];
         const Emitter& fm = flat.scene.emitters[0];
-        EXPECT_NEAR(length(world[size_t(m.entity)].applyPoint(m.center) - flatWorld[size_t(fm.entity)].applyPoint(fm.center)),
+        EXPECT_NEAR(length(world[size_t(m.entity)].applyPoint(m.shape->center()) - flatWorld[size_t(fm.entity)].applyPoint(fm.shape->center())),
                     0.0, 1e-9);
 
         GeometryResult g = hierarchical.evaluate(world);

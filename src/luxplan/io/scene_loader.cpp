@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include <luxplan/daylight/datetime.h>
+#include <luxplan/emitters/emitter_shape.h>
 #include <luxplan/json/fields.h>
 #include <luxplan/lightsamplers/sampler_type.h>
 #include <luxplan/io/mesh_io.h>
@@ -537,41 +538,28 @@ private:
         }
     }
 
-    // The keys of one emitter shape.
-    static void readEmitterShape(const Fields& f, EmitterShape shape, Emitter& e) {
-        if (shape != EmitterShape::Sphere) e.normal = f.direction("normal").value_or(Vec3(0, 0, -1));
-        if (shape == EmitterShape::Rect) {
-            e.size = f.vec2("size", true, Range::positive("m")).value_or(Vec2(1, 1));
-            Vec3 up = f.direction("up").value_or(std::abs(e.normal.y) > 0.999 ? Vec3(1, 0, 0) : Vec3(0, 1, 0));
-            if (length(cross(up, e.normal)) < 1e-6) f.error(f.has("up") ? "up" : "normal", "\"up\" is parallel to \"normal\"");
-            else e.up = normalize(up - e.normal * dot(up, e.normal));  // orthogonalize
-        } else {
-            e.radius = f.number("radius", Range::positive("m"), true).value_or(0.1);
-        }
-    }
-
     void readEmitter(const Json& j, const std::string& path, int entity) {
         Fields f(sink_, j, path);
         if (!f.valid()) return;
-        static const std::vector<std::string> family = familyKeys(
-            emitterShapeNames().entries, [](const Fields& k, const auto& s) { Emitter e; readEmitterShape(k, s.first, e); });
+        static const std::vector<std::string> family = [] {
+            std::vector<std::vector<std::string>> lists;
+            for (const EmitterShapeEntry& e : emitterShapes()) lists.push_back(json::probeKeys([&](const Fields& k) { e.read(k); }));
+            return json::unionKeys(lists);
+        }();
         Emitter e;
         e.jsonPath = path;
         e.entity = entity;
         e.name = f.string("name", true).value_or("");
         auto shape = f.string("shape", true);
-        auto parsed = shape ? emitterShapeNames().parse(*shape) : std::nullopt;
-        if (shape && !parsed) f.error("shape", emitterShapeNames().unknown("emitter shape", *shape));
-        e.center = f.vec3("center", true).value_or(Vec3());
+        const EmitterShapeEntry* entry = shape ? findEmitterShape(*shape) : nullptr;
+        if (shape && !entry)
+            f.error("shape", "unknown emitter shape \"" + *shape + "\"" + didYouMean(*shape, emitterShapeNames()) + " (" +
+                                 listNames(emitterShapeNames()) + ")");
+        if (entry) e.shape = entry->read(f);
         e.fluxLm = f.number("flux_lm", kNonNegative, true).value_or(0);
         e.cctK = f.number("cct_k", 4000.0, Range::closed(1000, 40000, "K"));
-        if (parsed) {
-            e.shape = *parsed;
-            readEmitterShape(f, e.shape, e);
-            f.finish(article(*shape + " emitter"), family);
-        } else {
-            f.finish("", family);
-        }
+        f.finish(entry ? article(*shape + " emitter") : "", family);
+        if (!entry) return;
         int index = int(scene_.emitters.size());
         scene_.emitters.push_back(e);
         if (entity >= 0) scene_.entities[entity].emitters.push_back(index);

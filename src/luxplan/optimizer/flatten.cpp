@@ -8,6 +8,7 @@
 
 #include <luxplan/constraints/entity_info.h>
 #include <luxplan/constraints/relational.h>
+#include <luxplan/emitters/emitter_shape.h>
 #include <luxplan/lightsamplers/sampler_type.h>
 #include <luxplan/optimizer/placement.h>
 
@@ -117,11 +118,6 @@ std::vector<Transform> samplePlacements(const Entity& e) {
 // without children).
 Vec3 ownCenter(const Entity& e) { return e.hasGeometry() ? e.mesh.bounds().center() : Vec3(); }
 
-void transformEmitter(Emitter& e, const Transform& t) {
-    e.center = t.applyPoint(e.center);
-    e.normal = t.applyVector(e.normal);
-    e.up = t.applyVector(e.up);
-}
 
 int firstRegionHolding(const Entity& e, Vec2 xy, double rotationDeg) {
     for (size_t i = 0; i < e.regions.size(); ++i)
@@ -215,7 +211,7 @@ FlatScene flattenScene(const Scene& scene) {
             rep.samplers.push_back(s);
         }
         for (int m : entities[k].emitters) {
-            transformEmitter(out.emitters[size_t(m)], repFromGroup);
+            out.emitters[size_t(m)].shape = out.emitters[size_t(m)].shape->transformed(repFromGroup);
             rep.emitters.push_back(m);
         }
     }

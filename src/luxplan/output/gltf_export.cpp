@@ -14,12 +14,11 @@
 #include <tiny_gltf.h>
 
 #include <luxplan/core/error.h>
+#include <luxplan/emitters/emitter_shape.h>
 
 namespace luxplan {
 namespace {
 
-constexpr int kDiskSegments = 48;
-constexpr int kSphereSubdivisions = 2;  // 320 triangles
 constexpr const char* kTransmission = "KHR_materials_transmission";
 constexpr const char* kLights = "KHR_lights_punctual";
 
@@ -78,95 +77,6 @@ void setNodeTransform(tinygltf::Node& node, const Transform& t) {
     if (t.m != identity) node.rotation = quaternion(t.m);
 }
 
-// Turns every triangle of `mesh` so that its winding normal points along outward(centroid).
-template <class Outward>
-void orientTriangles(TriangleMesh& mesh, Outward outward) {
-    for (size_t i = 0; i < mesh.triangles.size(); ++i) {
-        auto& t = mesh.triangles[i];
-        Vec3 a = mesh.positions[t[0]], b = mesh.positions[t[1]], c = mesh.positions[t[2]];
-        if (dot(cross(b - a, c - a), outward((a + b + c) / 3.0)) < 0) std::swap(t[1], t[2]);
-    }
-}
-
-// An emitter's shape in its local frame, where it emits towards -z (glTF spot lights
-// shine along their node's -z) or, for a sphere, all round its centre.
-TriangleMesh emitterShape(const Emitter& e) {
-    TriangleMesh mesh;
-    if (e.shape == EmitterShape::Rect) {
-        double a = e.size.x / 2, b = e.size.y / 2;
-        mesh.positions = {{-a, -b, 0}, {a, -b, 0}, {a, b, 0}, {-a, b, 0}};
-        mesh.addTriangle(0, 3, 2, 0);
-        mesh.addTriangle(0, 2, 1, 0);
-        mesh.normals.assign(4, Vec3(0, 0, -1));
-    } else if (e.shape == EmitterShape::Disk) {
-        mesh.positions.push_back({0, 0, 0});
-        for (int k = 0; k < kDiskSegments; ++k) {
-            double phi = 2 * kPi * k / kDiskSegments;
-            mesh.positions.push_back({e.radius * std::cos(phi), e.radius * std::sin(phi), 0});
-        }
-        for (uint32_t k = 0; k < uint32_t(kDiskSegments); ++k)
-            mesh.addTriangle(0, 1 + (k + 1) % kDiskSegments, 1 + k, 0);
-        mesh.normals.assign(mesh.positions.size(), Vec3(0, 0, -1));
-        orientTriangles(mesh, [](const Vec3&) { return Vec3(0, 0, -1); });
-    } else {
-        // Icosphere: the icosahedron with every triangle split in four, kSphereSubdivisions times.
-        const double g = (1 + std::sqrt(5.0)) / 2;
-        std::vector<Vec3> p = {{-1, g, 0}, {1, g, 0}, {-1, -g, 0}, {1, -g, 0}, {0, -1, g}, {0, 1, g},
-                               {0, -1, -g}, {0, 1, -g}, {g, 0, -1}, {g, 0, 1}, {-g, 0, -1}, {-g, 0, 1}};
-        for (Vec3& v : p) v = normalize(v);
-        std::vector<std::array<uint32_t, 3>> faces = {
-            {0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
-            {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
-            {3, 8, 9},  {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
-        for (int level = 0; level < kSphereSubdivisions; ++level) {
-            std::map<std::pair<uint32_t, uint32_t>, uint32_t> midpoints;
-            auto midpoint = [&](uint32_t a, uint32_t b) {
-                auto key = std::minmax(a, b);
-                auto [it, added] = midpoints.try_emplace({key.first, key.second}, uint32_t(p.size()));
-                if (added) p.push_back(normalize(p[a] + p[b]));
-                return it->second;
-            };
-            std::vector<std::array<uint32_t, 3>> next;
-            for (const auto& f : faces) {
-                uint32_t ab = midpoint(f[0], f[1]), bc = midpoint(f[1], f[2]), ca = midpoint(f[2], f[0]);
-                next.push_back({f[0], ab, ca});
-                next.push_back({f[1], bc, ab});
-                next.push_back({f[2], ca, bc});
-                next.push_back({ab, bc, ca});
-            }
-            faces = std::move(next);
-        }
-        for (const Vec3& v : p) {
-            mesh.positions.push_back(v * e.radius);
-            mesh.normals.push_back(v);
-        }
-        for (const auto& f : faces) mesh.addTriangle(f[0], f[1], f[2], 0);
-        orientTriangles(mesh, [](const Vec3& c) { return c; });
-    }
-    return mesh;
-}
-
-// emitterFromLocal: the emitter's frame in its owner's frame (world or entity), with
-// local -z along the normal for rects and disks.
-Transform emitterFrame(const Emitter& e) {
-    Transform t;
-    t.t = e.center;
-    if (e.shape == EmitterShape::Sphere) return t;
-    Vec3 n = normalize(e.normal);
-    Vec3 x, y;
-    Vec3 up = e.up - n * dot(e.up, n);
-    if (e.shape == EmitterShape::Rect && length(up) > 1e-9) {
-        // The rect's first side runs along cross(up, n), its second along up.
-        y = normalize(up);
-        x = -cross(y, n);
-    } else {
-        Frame f = Frame::fromNormal(-n);
-        x = f.s, y = f.t;
-    }
-    Vec3 z = -n;
-    t.m = {x.x, y.x, z.x, x.y, y.y, z.y, x.z, y.z, z.z};
-    return t;
-}
 
 class GlbBuilder {
 public:
@@ -380,11 +290,12 @@ void writeGlb(const std::filesystem::path& file, const Scene& scene, const Layou
         std::string name = e.entity >= 0 ? scene.entities[size_t(e.entity)].path + "." + e.name : e.name;
         Vec3 rgb = blackBodyRgb(e.cctK);
         Transform owner = e.entity >= 0 ? world[size_t(e.entity)] : Transform();
-        int mesh = glb.addMesh(name, emitterShape(e), Transform(), glb.addEmitterMaterial(e, rgb));
-        tinygltf::Node& node = glb.addNode(name, mesh, toGltf * owner * emitterFrame(e), e.jsonPath);
-        // Intensity of a Lambertian emitter: flux / (4 pi) all round for a sphere; peak
-        // (along the normal) flux / pi for a one-sided rect or disk.
-        bool spot = e.shape != EmitterShape::Sphere;
+        EmitterMesh shape = e.shape->mesh();
+        int mesh = glb.addMesh(name, shape.mesh, Transform(), glb.addEmitterMaterial(e, rgb));
+        tinygltf::Node& node = glb.addNode(name, mesh, toGltf * owner * shape.frame, e.jsonPath);
+        // Intensity of a Lambertian emitter: flux / (4 pi) all round for one that emits
+        // all round; peak (along the normal) flux / pi for a one-sided one.
+        bool spot = e.shape->normal().has_value();
         int light = glb.addLight(name, spot, spot ? e.fluxLm / kPi : e.fluxLm / (4 * kPi), rgb);
         node.extensions[kLights] = tinygltf::Value(tinygltf::Value::Object{{"light", tinygltf::Value(light)}});
     }

@@ -10,6 +10,7 @@
 
 #include <luxplan/core/rng.h>
 #include <luxplan/scene/room.h>
+#include <luxplan/emitters/emitter_shape.h>
 #include <luxplan/lightsamplers/sampler_type.h>
 
 namespace luxplan {
@@ -94,32 +95,6 @@ void drawArrow(Image& image, Vec2 from, Vec2 to, Rgb color, double thickness) {
     double head = std::max(6.0, 3 * thickness);
     image.drawLine(from, to - u * (head * 0.5), color, thickness);
     image.fillPolygon({to, to - u * head + n * (head * 0.5), to - u * head - n * (head * 0.5)}, color);
-}
-
-// The rectangle or disk outline of an emitter, in world space.
-std::vector<Vec3> emitterOutline(const Emitter& e, const Transform& world) {
-    std::vector<Vec3> pts;
-    Vec3 n = normalize(e.normal);
-    switch (e.shape) {
-        case EmitterShape::Rect: {
-            Vec3 up = normalize(e.up - n * dot(e.up, n)), side = cross(up, n);
-            for (int i = 0; i < 4; ++i) {
-                double a = (i == 0 || i == 3) ? -0.5 : 0.5, b = i < 2 ? -0.5 : 0.5;
-                pts.push_back(world.applyPoint(e.center + side * (a * e.size.x) + up * (b * e.size.y)));
-            }
-            break;
-        }
-        case EmitterShape::Disk:
-        case EmitterShape::Sphere: {
-            Frame f = e.shape == EmitterShape::Disk ? Frame::fromNormal(n) : Frame();
-            for (int i = 0; i < 32; ++i) {
-                double phi = 2 * kPi * i / 32;
-                pts.push_back(world.applyPoint(e.center + (f.s * std::cos(phi) + f.t * std::sin(phi)) * e.radius));
-            }
-            break;
-        }
-    }
-    return pts;
 }
 
 // The extent of the plan: the room, else everything with geometry.
@@ -374,7 +349,9 @@ Image renderPlan(const Scene& scene, const Layout& layout, const PlanOptions& op
     // Luminaires.
     for (const Emitter& emitter : scene.emitters) {
         Transform t = emitter.entity >= 0 ? world[size_t(emitter.entity)] : Transform();
-        auto poly = footprint(emitterOutline(emitter, t), map);
+        std::vector<Vec3> outline = emitter.shape->outline();
+        for (Vec3& p : outline) p = t.applyPoint(p);
+        auto poly = footprint(outline, map);
         image.fillPolygon(poly, kLuminaireColor, 0.35);
         image.drawPolygon(poly, kLuminaireEdge, 2);
     }

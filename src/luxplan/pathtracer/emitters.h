@@ -3,21 +3,19 @@
 // solid angle, and the choice of which emitter to sample (EmitterSelector).
 #pragma once
 
+#include <memory>
 #include <vector>
 
-#include <luxplan/pathtracer/spherical_rect.h>
+#include <luxplan/emitters/emitter_shape.h>
 #include <luxplan/scene/scene.h>
 
 namespace luxplan {
 
+// One emitter placed by the current layout.
 struct WorldEmitter {
-    EmitterShape shape = EmitterShape::Rect;
-    Vec3 center, normal, up;
-    Rect3 rect;          // rect emitters
-    double radius = 0;   // disk, sphere
+    std::shared_ptr<const EmitterShape> shape;  // world frame
     double luminance = 0;  // cd/m^2 (flux / (pi A))
     double flux = 0;       // lm
-    double area = 0;
 };
 
 // A sampled point on an emitter as seen from a shading point.
@@ -52,13 +50,11 @@ public:
     // Density (per solid angle, selection included) that sample() gives the point
     // `onEmitter` of emitter i seen from p.
     double pdf(size_t i, const Vec3& p, const Vec3& onEmitter) const;
-    // Luminance emitter i sends along -w (w: direction from the viewer towards it),
-    // with the normal at the hit.
-    double emitted(size_t i, const Vec3& w, const Vec3& hitNormal) const;
+    // Luminance emitter i sends along -w (w: direction from the viewer towards it).
+    double emitted(size_t i, const Vec3& w) const;
 
 private:
     double importance(size_t i, const Vec3& p) const;
-    double solidAnglePdf(size_t i, const Vec3& p, const Vec3& onEmitter) const;
 
     std::vector<WorldEmitter> emitters_;
     EmitterSelection selection_ = EmitterSelection::PowerDistance;

@@ -302,7 +302,7 @@ double PathTracer::trace(SensorKind sensor, const Vec3& origin, const Vec3& n, R
             }
             if (hit->kind == HitKind::Emitter) {
                 if (hitEmitterFirst && depth == 0 && crossings == 0) *hitEmitterFirst = true;
-                double Le = emitters_.emitted(size_t(hit->index), d, hit->geometricNormal);
+                double Le = emitters_.emitted(size_t(hit->index), d);
                 if (Le > 0) {
                     double w = lastDelta ? 1 : powerHeuristic(1, lastPdf, 1, emitters_.pdf(size_t(hit->index), lastPoint, hit->point));
                     L += throughput * Vec3(Le, Le, Le) * w;

@@ -11,6 +11,7 @@
 #include <luxplan/core/rng.h>
 #include <luxplan/daylight/environment.h>
 #include <luxplan/materials/bsdf.h>
+#include <luxplan/core/spherical_rect.h>
 #include <luxplan/pathtracer/emitters.h>
 #include <luxplan/rt/embree_scene.h>
 

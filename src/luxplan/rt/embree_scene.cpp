@@ -4,6 +4,7 @@
 #include <mutex>
 
 #include <luxplan/core/error.h>
+#include <luxplan/emitters/emitter_shape.h>
 
 namespace luxplan {
 
@@ -125,23 +126,21 @@ unsigned EmbreeScene::attachTriangles(SubScene& sub, const TriangleMesh& mesh, H
 }
 
 void EmbreeScene::attachEmitter(SubScene& sub, const Emitter& e, int index) {
-    if (e.shape == EmitterShape::Rect) {
-        // Two triangles, wound so that their normal is the emitter's.
-        Vec3 v = e.up, u = cross(v, e.normal);
-        Vec3 hu = u * (e.size.x / 2), hv = v * (e.size.y / 2);
+    EmitterPrimitive prim = e.shape->primitive();
+    if (prim.kind == EmitterPrimitive::Kind::Triangles) {
         TriangleMesh& m = emitterMeshes_[index];
-        addQuad(m, e.center - hu - hv, e.center + hu - hv, e.center + hu + hv, e.center - hu + hv, 0);
+        m = std::move(prim.triangles);
         attachTriangles(sub, m, HitKind::Emitter, index, kEmitterMask);
         return;
     }
-    bool sphere = e.shape == EmitterShape::Sphere;
+    bool sphere = prim.kind == EmitterPrimitive::Kind::Sphere;
     RTCGeometry g = rtcNewGeometry(device_->handle(), sphere ? RTC_GEOMETRY_TYPE_SPHERE_POINT : RTC_GEOMETRY_TYPE_ORIENTED_DISC_POINT);
     rtcSetGeometryMask(g, kEmitterMask);
     auto* p = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, 4 * sizeof(float), 1));
-    p[0] = float(e.center.x), p[1] = float(e.center.y), p[2] = float(e.center.z), p[3] = float(e.radius);
+    p[0] = float(prim.center.x), p[1] = float(prim.center.y), p[2] = float(prim.center.z), p[3] = float(prim.radius);
     if (!sphere) {
         auto* n = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_NORMAL, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), 1));
-        n[0] = float(e.normal.x), n[1] = float(e.normal.y), n[2] = float(e.normal.z);
+        n[0] = float(prim.normal.x), n[1] = float(prim.normal.y), n[2] = float(prim.normal.z);
     }
     rtcCommitGeometry(g);
     unsigned id = rtcAttachGeometry(sub.scene, g);

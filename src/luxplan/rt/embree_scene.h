@@ -111,7 +111,7 @@ private:
     std::vector<int> subSceneOfInstance_;    // top-level geomID -> subScenes_ index
     std::vector<int> subSceneOfEntity_;      // entity -> subScenes_ index, or -1
     std::vector<Transform> worldFromEntity_;
-    std::vector<TriangleMesh> emitterMeshes_;  // rect emitters as two triangles
+    std::vector<TriangleMesh> emitterMeshes_;  // emitters Embree sees as triangles (rects)
     std::deque<TriangleMesh> splitMeshes_;     // meshes split into opaque and glass parts
     bool hasGlass_ = false;
 };

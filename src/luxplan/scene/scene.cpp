@@ -2,15 +2,6 @@
 
 namespace luxplan {
 
-double Emitter::area() const {
-    switch (shape) {
-        case EmitterShape::Rect: return size.x * size.y;
-        case EmitterShape::Disk: return kPi * radius * radius;
-        case EmitterShape::Sphere: return 4 * kPi * radius * radius;
-    }
-    return 0;
-}
-
 const EnumNames<ConstraintType>& constraintTypeNames() {
     static const EnumNames<ConstraintType> names{{{ConstraintType::Alignment, "alignment"},
                                                   {ConstraintType::Distance, "distance"},
@@ -23,12 +14,6 @@ const EnumNames<ConstraintType>& constraintTypeNames() {
 const EnumNames<Wall>& wallNames() {
     static const EnumNames<Wall> names{
         {{Wall::North, "north"}, {Wall::South, "south"}, {Wall::East, "east"}, {Wall::West, "west"}, {Wall::Ceiling, "ceiling"}}};
-    return names;
-}
-
-const EnumNames<EmitterShape>& emitterShapeNames() {
-    static const EnumNames<EmitterShape> names{
-        {{EmitterShape::Rect, "rect"}, {EmitterShape::Disk, "disk"}, {EmitterShape::Sphere, "sphere"}}};
     return names;
 }
 

@@ -49,26 +49,17 @@ struct StaticItem {
     VoxelGrid voxels;        // solid volume (world frame); empty for the room shell
 };
 
-enum class EmitterShape { Rect, Disk, Sphere };
+class EmitterShape;  // emitters/emitter_shape.h
 
 // A Lambertian area emitter; fixed (entity < 0, world frame) or carried by an
 // entity (its frame).
 struct Emitter {
     std::string name;
     std::string jsonPath;
-    EmitterShape shape = EmitterShape::Rect;
-    Vec3 center;
-    Vec3 normal{0, 0, -1};
-    Vec3 up{0, 1, 0};  // rect: direction of the second side (size[1])
-    Vec2 size{0.6, 0.6};
-    double radius = 0.1;
+    std::shared_ptr<const EmitterShape> shape;  // rect, disk, sphere (emitters/)
     double fluxLm = 1000;
     double cctK = 4000;
     int entity = -1;
-
-    double area() const;
-    // Emitted luminance in cd/m^2: flux / (pi * area) for a Lambertian emitter.
-    double luminance() const { return fluxLm / (kPi * area()); }
 };
 
 class SamplerType;  // lightsamplers/sampler_type.h
@@ -167,11 +158,10 @@ struct OptimizerSettings {
     bool startFromScene = false;     // start from the scene's placement instead of uniform draws
 };
 
-// The scene file's names for these enums ("alignment", "south", "rect"): one table
+// The scene file's names for these enums ("alignment", "south", "glossy"): one table
 // each parses, prints and lists them (core/names.h).
 const EnumNames<ConstraintType>& constraintTypeNames();
 const EnumNames<Wall>& wallNames();
-const EnumNames<EmitterShape>& emitterShapeNames();
 const EnumNames<MaterialType>& materialTypeNames();
 
 struct Scene {

@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <luxplan/core/rng.h>
-#include <luxplan/pathtracer/spherical_rect.h>
+#include <luxplan/core/spherical_rect.h>
 #include "support/chi2.h"
 
 namespace luxplan {

@@ -1,4 +1,4 @@
-#include <luxplan/pathtracer/spherical_rect.h>
+#include <luxplan/core/spherical_rect.h>
 
 namespace luxplan {
 

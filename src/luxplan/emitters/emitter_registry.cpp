@@ -1,0 +1,33 @@
+// The one table of emitter shapes: a new shape is its file and one line here.
+#include <luxplan/emitters/emitter_shape.h>
+
+namespace luxplan {
+
+std::shared_ptr<const EmitterShape> readRectEmitter(const json::Fields& f);    // rect.cpp
+std::shared_ptr<const EmitterShape> readDiskEmitter(const json::Fields& f);    // disk.cpp
+std::shared_ptr<const EmitterShape> readSphereEmitter(const json::Fields& f);  // sphere.cpp
+
+const std::vector<EmitterShapeEntry>& emitterShapes() {
+    static const std::vector<EmitterShapeEntry> shapes = {
+        {"rect", readRectEmitter},
+        {"disk", readDiskEmitter},
+        {"sphere", readSphereEmitter},
+    };
+    return shapes;
+}
+
+const EmitterShapeEntry* findEmitterShape(std::string_view name) {
+    for (const EmitterShapeEntry& s : emitterShapes())
+        if (name == s.name) return &s;
+    return nullptr;
+}
+
+std::vector<std::string> emitterShapeNames() {
+    std::vector<std::string> names;
+    for (const EmitterShapeEntry& s : emitterShapes()) names.push_back(s.name);
+    return names;
+}
+
+double emitterLuminance(const Emitter& e) { return e.fluxLm / (kPi * e.shape->area()); }
+
+}  // namespace luxplan
