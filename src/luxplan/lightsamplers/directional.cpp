@@ -24,7 +24,7 @@ public:
         double a = (-1 + 2 * (i + rng.uniform()) / strata) * tanHalfFov;
         double b = (-1 + 2 * (j + rng.uniform()) / strata) * tanHalfFov;
         Vec3 d = normalize(forward + right * a + up * b);
-        return tracer.radianceSample({eye, d}, rng, stats);
+        return tracer.sample(RaySensor({eye, d}), rng, stats);
     }
 
     // The brightest stratum, with that stratum's own error (the selection among

@@ -14,7 +14,7 @@ public:
         : points_(std::move(points)), normal_(normal), corners_(std::move(corners)) {}
     int items() const override { return int(points_.size()); }
     double sample(const PathTracer& tracer, int item, Rng& rng, RayStats& stats) const override {
-        return tracer.illuminanceSample(points_[size_t(item)], normal_, rng, stats);
+        return tracer.sample(CosineSensor(points_[size_t(item)], normal_), rng, stats);
     }
     SamplerDrawing drawing() const override {
         SamplerDrawing d;

@@ -27,7 +27,7 @@ public:
 
     int items() const override { return int(points.size()); }
     double sample(const PathTracer& tracer, int item, Rng& rng, RayStats& stats) const override {
-        return tracer.sphericalLuminanceSample(points[size_t(item)], rng, stats);
+        return tracer.sample(SphereSensor(points[size_t(item)]), rng, stats);
     }
     SamplerDrawing drawing() const override {
         SamplerDrawing d;

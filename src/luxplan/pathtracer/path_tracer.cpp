@@ -1,10 +1,8 @@
 #include <luxplan/pathtracer/path_tracer.h>
 
 #include <algorithm>
-#include <atomic>
 
 #include <luxplan/core/warp.h>
-#include <luxplan/scene/room.h>
 
 namespace luxplan {
 namespace {
@@ -19,9 +17,7 @@ struct Vertex {
     Vec3 ng;  // geometric normal on the side the path arrived from (surfaces)
     Frame shading;
     Vec3 wo;  // local shading coordinates
-    const Bsdf* bsdf = nullptr;
-    int sensor = -1;  // SensorKind as int for sensors, -1 for surfaces
-    Vec3 sensorNormal;
+    const Bsdf* bsdf = nullptr;  // null at the sensor
 
     bool isSurface() const { return bsdf != nullptr; }
 };
@@ -29,22 +25,8 @@ struct Vertex {
 }  // namespace
 
 PathTracer::PathTracer(const EmbreeScene& rt, const DaylightEnvironment* daylight, const PathTracerOptions& options)
-    : rt_(rt), daylight_(daylight), options_(options) {
-    static std::atomic<uint64_t> nextId{1};
-    id_ = nextId++;
+    : rt_(rt), daylight_(daylight), options_(options), sky_(rt.scene(), daylight, options.portals) {
     for (const Material& m : rt.scene().materials) bsdfs_.push_back(makeBsdf(m));
-    if (const RoomShell* room = rt.scene().room()) {
-        hasRoom_ = true;
-        // Hit points on the shell lie on the box boundary, half of them a float ulp
-        // outside: a millimetre of slack keeps them on the portal side.
-        room_ = Bounds3(room->box.lo - Vec3(1e-3, 1e-3, 1e-3), room->box.hi + Vec3(1e-3, 1e-3, 1e-3));
-        for (const Opening& o : room->openings) {
-            WallFrame f = wallFrame(room->box, o.wall);
-            auto r = openingRect(room->box, o);
-            portals_.push_back({f.origin + f.u * r[0] + f.v * r[1], f.u * (r[2] - r[0]), f.v * (r[3] - r[1])});
-            portalNormals_.push_back(cross(portals_.back().edgeU, portals_.back().edgeV));
-        }
-    }
     updateLayout();
 }
 
@@ -52,86 +34,6 @@ void PathTracer::updateLayout() {
     std::vector<Transform> world(rt_.scene().entities.size());
     for (size_t i = 0; i < world.size(); ++i) world[i] = rt_.worldFromEntity(int(i));
     emitters_ = EmitterSet(rt_.scene(), world, options_.emitterSelection);
-}
-
-void PathTracer::viewPortals(const Vec3& p, PortalView& view) const {
-    // Every path of a sampler point starts at the same place: keep the last view of
-    // each thread (measureSamplers runs a point's paths on one thread in a row).
-    thread_local uint64_t cachedTracer = 0;
-    thread_local PortalView cachedView;
-    if (cachedTracer != id_ || !(cachedView.point == p)) {
-        computePortals(p, cachedView, true);
-        cachedTracer = id_;
-    }
-    view = cachedView;
-}
-
-void PathTracer::computePortals(const Vec3& p, PortalView& view, bool buildAll) const {
-    view.active = options_.portals && hasRoom_ && !portals_.empty() && room_.contains(p);
-    view.point = p;
-    view.count = 0;
-    view.weightTotal = 0;
-    if (!view.active) return;
-    for (const Rect3& r : portals_) {
-        if (view.count == kMaxPortals) break;
-        const int i = view.count++;
-        // Area x cos / d^2 = |n . d| / d^3 with n = edgeU x edgeV (|n| = area).
-        Vec3 d = r.corner + (r.edgeU + r.edgeV) * 0.5 - p;
-        double d2 = dot(d, d);
-        double w = d2 > 0 ? std::abs(dot(portalNormals_[size_t(i)], d)) / (d2 * std::sqrt(d2)) : 2 * kPi;
-        view.weight[i] = std::min(w, 2 * kPi);
-        view.weightTotal += view.weight[i];
-        view.built[i] = false;
-        if (buildAll) portalRect(view, i);
-    }
-}
-
-const SphericalRect& PathTracer::portalRect(const PortalView& view, int i) const {
-    if (!view.built[i]) {
-        view.rects[i] = SphericalRect(portals_[size_t(i)], view.point);
-        view.built[i] = true;
-    }
-    return view.rects[i];
-}
-
-// Inside the room every sky direction that can reach p passes through one opening, so
-// sampling the openings' spherical rectangles wastes no samples on walls. Outside,
-// the sky map's own importance sampling is used.
-double PathTracer::skyPdf(const PortalView& view, const Vec3& p, const Vec3& w) const {
-    if (!daylight_ || !daylight_->hasSky()) return 0;
-    if (!view.active) return daylight_->skyPdf(w);
-    if (view.weightTotal <= 0) return 0;
-    for (int i = 0; i < view.count; ++i)
-        if (view.weight[i] > 0 && portals_[size_t(i)].intersect(p, w) > 0) {
-            double omega = portalRect(view, i).solidAngle();
-            return omega > 0 ? view.weight[i] / view.weightTotal / omega : 0;
-        }
-    return 0;
-}
-
-EnvironmentSample PathTracer::sampleSky(const PortalView& view, const Vec3& p, Vec2 u) const {
-    if (!view.active) return daylight_->sampleSky(u);
-    EnvironmentSample s;
-    if (view.weightTotal <= 0) return s;
-    // Choose a portal by weight, reusing u.x within the chosen interval.
-    double target = u.x * view.weightTotal, acc = 0;
-    int chosen = -1;
-    for (int i = 0; i < view.count; ++i) {
-        if (view.weight[i] > 0 && target < acc + view.weight[i]) {
-            chosen = i;
-            u.x = std::min((target - acc) / view.weight[i], 1 - 1e-12);
-            break;
-        }
-        acc += view.weight[i];
-    }
-    if (chosen < 0) return s;
-    const SphericalRect& rect = portalRect(view, chosen);
-    if (rect.solidAngle() <= 0) return s;
-    Vec3 q = rect.sample(u);
-    s.wi = normalize(q - p);
-    s.Le = daylight_->Le(s.wi);
-    s.pdf = view.weight[chosen] / view.weightTotal / rect.solidAngle();
-    return s;
 }
 
 double PathTracer::transmittance(const Vec3& origin, const Vec3& w, double tMax, int target, RayStats& stats) const {
@@ -158,36 +60,17 @@ double PathTracer::transmittance(const Vec3& origin, const Vec3& w, double tMax,
     return 0;
 }
 
-double PathTracer::illuminanceSample(const Vec3& p, const Vec3& n, Rng& rng, RayStats& stats) const {
-    return trace(SensorKind::Hemisphere, p, n, rng, stats);
-}
-double PathTracer::sphericalLuminanceSample(const Vec3& p, Rng& rng, RayStats& stats) const {
-    return trace(SensorKind::Sphere, p, Vec3(0, 0, 1), rng, stats);
-}
-double PathTracer::radianceSample(const Ray& ray, Rng& rng, RayStats& stats) const {
-    return trace(SensorKind::Camera, ray.origin, ray.direction, rng, stats);
-}
-double PathTracer::radianceSample(const Ray& ray, Rng& rng, RayStats& stats, bool& hitEmitterFirst) const {
-    hitEmitterFirst = false;
-    return trace(SensorKind::Camera, ray.origin, ray.direction, rng, stats, &hitEmitterFirst);
-}
-
-double PathTracer::trace(SensorKind sensor, const Vec3& origin, const Vec3& n, Rng& rng, RayStats& stats,
-                         bool* hitEmitterFirst) const {
+double PathTracer::sample(const Sensor& sensor, Rng& rng, RayStats& stats, bool* hitEmitterFirst) const {
+    const Vec3 origin = sensor.position();
     Vec3 L, throughput(1, 1, 1);
     Vertex v;
     v.p = origin;
-    v.sensor = int(sensor);
-    v.sensorNormal = n;
 
     // f * |cos| and the sampling pdf of the current vertex for a world direction.
     auto evalCos = [&](const Vertex& x, const Vec3& wi) -> Vec3 {
         if (!x.isSurface()) {
-            if (x.sensor == int(SensorKind::Hemisphere)) {
-                double c = dot(wi, x.sensorNormal);
-                return c > 0 ? Vec3(c, c, c) : Vec3();
-            }
-            return Vec3(1, 1, 1) * (1 / (4 * kPi));  // sphere sensor
+            double r = sensor.response(wi);
+            return Vec3(r, r, r);
         }
         // Light must arrive on the side the path is on (no leaks through surfaces).
         if (dot(wi, x.ng) <= 0) return Vec3();
@@ -195,9 +78,7 @@ double PathTracer::trace(SensorKind sensor, const Vec3& origin, const Vec3& n, R
         return x.bsdf->eval(x.wo, local) * std::abs(local.z);
     };
     auto pdfOf = [&](const Vertex& x, const Vec3& wi) -> double {
-        if (!x.isSurface())
-            return x.sensor == int(SensorKind::Hemisphere) ? cosineHemispherePdf(dot(wi, x.sensorNormal))
-                                                           : uniformSpherePdf();
+        if (!x.isSurface()) return sensor.pdf(wi);
         return x.bsdf->pdf(x.wo, x.shading.toLocal(wi));
     };
     auto spawn = [&](const Vertex& x, const Vec3& wi) { return x.isSurface() ? offsetAlong(x.p, x.ng, wi) : x.p; };
@@ -205,13 +86,13 @@ double PathTracer::trace(SensorKind sensor, const Vec3& origin, const Vec3& n, R
     bool lastDelta = false;
     double lastPdf = 0;
     Vec3 lastPoint = origin;
-    const bool sky = daylight_ && daylight_->hasSky();
-    PortalView views[2];  // this vertex's, and the last non-delta vertex's
+    const bool sky = sky_.active();
+    SkyLight::View views[2];  // this vertex's, and the last non-delta vertex's
     int current = 0;
     double firstWeight = 0;
 
     for (int depth = 0; depth < options_.maxDepth; ++depth) {
-        bool deltaVertex = sensor == SensorKind::Camera && depth == 0 ? true : (v.isSurface() && v.bsdf->isDelta());
+        bool deltaVertex = v.isSurface() ? v.bsdf->isDelta() : sensor.isDelta();
 
         // ---- next-event estimation (skipped at delta vertices) ----
         if (!deltaVertex) {
@@ -234,10 +115,10 @@ double PathTracer::trace(SensorKind sensor, const Vec3& origin, const Vec3& n, R
                 addLight(s.wi, s.Le, s.pdf, kInf, -1);
             }
             if (sky) {
-                PortalView& view = views[current];
-                if (depth == 0) viewPortals(v.p, view);
-                else computePortals(v.p, view, false);
-                EnvironmentSample s = sampleSky(view, v.p, {rng.uniform(), rng.uniform()});
+                SkyLight::View& view = views[current];
+                if (depth == 0) sky_.viewFromSensor(v.p, view);
+                else sky_.view(v.p, view);
+                EnvironmentSample s = sky_.sample(view, v.p, {rng.uniform(), rng.uniform()});
                 addLight(s.wi, s.Le, s.pdf, kInf, -1);
             }
         }
@@ -247,18 +128,9 @@ double PathTracer::trace(SensorKind sensor, const Vec3& origin, const Vec3& n, R
         double pdf = 0;
         bool delta = false;
         if (!v.isSurface()) {
-            if (sensor == SensorKind::Camera) {
-                d = normalize(n), weight = Vec3(1, 1, 1), delta = true;
-            } else if (sensor == SensorKind::Hemisphere) {
-                Vec3 local = sampleCosineHemisphere({rng.uniform(), rng.uniform()});
-                d = Frame::fromNormal(n).toWorld(local);
-                pdf = cosineHemispherePdf(local.z);
-                weight = Vec3(kPi, kPi, kPi);  // cos / pdf
-            } else {
-                d = sampleUniformSphere({rng.uniform(), rng.uniform()});
-                pdf = uniformSpherePdf();
-                weight = Vec3(1, 1, 1);  // (1 / 4 pi) / pdf
-            }
+            // A delta sensor draws no random numbers for its one direction.
+            SensorSample s = sensor.isDelta() ? sensor.sample({0, 0}) : sensor.sample({rng.uniform(), rng.uniform()});
+            d = s.wi, weight = Vec3(s.weight, s.weight, s.weight), pdf = s.pdf, delta = s.delta;
         } else {
             double uLobe = rng.uniform();
             auto s = v.bsdf->sample(v.wo, uLobe, {rng.uniform(), rng.uniform()});
@@ -294,7 +166,7 @@ double PathTracer::trace(SensorKind sensor, const Vec3& origin, const Vec3& n, R
             if (!hit) {
                 if (daylight_) {
                     Vec3 sky = daylight_->Le(d), sun = daylight_->sunLe(d);
-                    double wSky = lastDelta ? 1 : powerHeuristic(1, lastPdf, 1, skyPdf(views[current ^ 1], lastPoint, d));
+                    double wSky = lastDelta ? 1 : powerHeuristic(1, lastPdf, 1, sky_.pdf(views[current ^ 1], lastPoint, d));
                     double wSun = lastDelta ? 1 : powerHeuristic(1, lastPdf, 1, daylight_->sunPdf(d));
                     L += throughput * (sky * wSky + sun * wSun);
                 }

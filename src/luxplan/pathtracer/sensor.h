@@ -1,0 +1,79 @@
+// The first vertex of a path: what a measurement responds to, as pbrt's camera or
+// sensor does. A sensor evaluates its response to light arriving from a direction
+// (next-event estimation at the sensor uses it), gives the density with which it
+// samples directions (for multiple importance sampling), and samples one. Light
+// samplers choose their sensor; the path tracer traces from any of them.
+#pragma once
+
+#include <optional>
+
+#include <luxplan/core/math.h>
+#include <luxplan/rt/embree_scene.h>
+
+namespace luxplan {
+
+struct SensorSample {
+    Vec3 wi;             // unit, away from the sensor
+    double weight = 0;   // response * |cos| / pdf
+    double pdf = 0;      // per unit solid angle; 0 for a delta direction
+    bool delta = false;  // a single direction: no light sampling at the sensor
+};
+
+class Sensor {
+public:
+    virtual ~Sensor() = default;
+    virtual Vec3 position() const = 0;
+    // Whether it sees along one direction only (a camera ray): light sampling at the
+    // sensor cannot find that direction, so the tracer skips it there.
+    virtual bool isDelta() const = 0;
+    // The response to unit luminance arriving from `wi` (unit, away from the sensor).
+    virtual double response(const Vec3& wi) const = 0;
+    virtual double pdf(const Vec3& wi) const = 0;
+    virtual SensorSample sample(Vec2 u) const = 0;
+};
+
+// Illuminance (lx) at a point over the hemisphere around unit `normal`: response cos,
+// directions cosine-weighted.
+class CosineSensor final : public Sensor {
+public:
+    CosineSensor(const Vec3& p, const Vec3& normal) : p_(p), n_(normal) {}
+    Vec3 position() const override { return p_; }
+    bool isDelta() const override { return false; }
+    double response(const Vec3& wi) const override;
+    double pdf(const Vec3& wi) const override;
+    SensorSample sample(Vec2 u) const override;
+
+private:
+    Vec3 p_, n_;
+};
+
+// Mean luminance (cd/m2) over the whole sphere at a point: response 1 / (4 pi),
+// directions uniform.
+class SphereSensor final : public Sensor {
+public:
+    explicit SphereSensor(const Vec3& p) : p_(p) {}
+    Vec3 position() const override { return p_; }
+    bool isDelta() const override { return false; }
+    double response(const Vec3& wi) const override;
+    double pdf(const Vec3& wi) const override;
+    SensorSample sample(Vec2 u) const override;
+
+private:
+    Vec3 p_;
+};
+
+// Luminance (cd/m2) arriving along one ray: a pinhole camera's pixel sample.
+class RaySensor final : public Sensor {
+public:
+    explicit RaySensor(const Ray& ray) : ray_(ray) {}
+    Vec3 position() const override { return ray_.origin; }
+    bool isDelta() const override { return true; }
+    double response(const Vec3&) const override { return 0; }
+    double pdf(const Vec3&) const override { return 0; }
+    SensorSample sample(Vec2) const override { return {normalize(ray_.direction), 1, 0, true}; }
+
+private:
+    Ray ray_;
+};
+
+}  // namespace luxplan

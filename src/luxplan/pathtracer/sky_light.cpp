@@ -1,0 +1,105 @@
+#include <luxplan/pathtracer/sky_light.h>
+
+#include <algorithm>
+#include <atomic>
+
+#include <luxplan/scene/room.h>
+
+namespace luxplan {
+
+SkyLight::SkyLight(const Scene& scene, const DaylightEnvironment* daylight, bool portals)
+    : daylight_(daylight), portals_(portals) {
+    static std::atomic<uint64_t> nextId{1};
+    id_ = nextId++;
+    if (const RoomShell* room = scene.room()) {
+        hasRoom_ = true;
+        // Hit points on the shell lie on the box boundary, half of them a float ulp
+        // outside: a millimetre of slack keeps them on the portal side.
+        room_ = Bounds3(room->box.lo - Vec3(1e-3, 1e-3, 1e-3), room->box.hi + Vec3(1e-3, 1e-3, 1e-3));
+        for (const Opening& o : room->openings) {
+            WallFrame f = wallFrame(room->box, o.wall);
+            auto r = openingRect(room->box, o);
+            openings_.push_back({f.origin + f.u * r[0] + f.v * r[1], f.u * (r[2] - r[0]), f.v * (r[3] - r[1])});
+            openingNormals_.push_back(cross(openings_.back().edgeU, openings_.back().edgeV));
+        }
+    }
+}
+
+void SkyLight::viewFromSensor(const Vec3& p, View& view) const {
+    // Every path of a sampler point starts at the same place: keep the last view of
+    // each thread (measureSamplers runs a point's paths on one thread in a row).
+    thread_local uint64_t cachedLight = 0;
+    thread_local View cachedView;
+    if (cachedLight != id_ || !(cachedView.point == p)) {
+        compute(p, cachedView, true);
+        cachedLight = id_;
+    }
+    view = cachedView;
+}
+
+void SkyLight::compute(const Vec3& p, View& view, bool buildAll) const {
+    view.active = portals_ && hasRoom_ && !openings_.empty() && room_.contains(p);
+    view.point = p;
+    view.count = 0;
+    view.weightTotal = 0;
+    if (!view.active) return;
+    for (const Rect3& r : openings_) {
+        if (view.count == kMaxPortals) break;
+        const int i = view.count++;
+        // Area x cos / d^2 = |n . d| / d^3 with n = edgeU x edgeV (|n| = area).
+        Vec3 d = r.corner + (r.edgeU + r.edgeV) * 0.5 - p;
+        double d2 = dot(d, d);
+        double w = d2 > 0 ? std::abs(dot(openingNormals_[size_t(i)], d)) / (d2 * std::sqrt(d2)) : 2 * kPi;
+        view.weight[i] = std::min(w, 2 * kPi);
+        view.weightTotal += view.weight[i];
+        view.built[i] = false;
+        if (buildAll) rect(view, i);
+    }
+}
+
+const SphericalRect& SkyLight::rect(const View& view, int i) const {
+    if (!view.built[i]) {
+        view.rects[i] = SphericalRect(openings_[size_t(i)], view.point);
+        view.built[i] = true;
+    }
+    return view.rects[i];
+}
+
+double SkyLight::pdf(const View& view, const Vec3& p, const Vec3& w) const {
+    if (!active()) return 0;
+    if (!view.active) return daylight_->skyPdf(w);
+    if (view.weightTotal <= 0) return 0;
+    for (int i = 0; i < view.count; ++i)
+        if (view.weight[i] > 0 && openings_[size_t(i)].intersect(p, w) > 0) {
+            double omega = rect(view, i).solidAngle();
+            return omega > 0 ? view.weight[i] / view.weightTotal / omega : 0;
+        }
+    return 0;
+}
+
+EnvironmentSample SkyLight::sample(const View& view, const Vec3& p, Vec2 u) const {
+    if (!view.active) return daylight_->sampleSky(u);
+    EnvironmentSample s;
+    if (view.weightTotal <= 0) return s;
+    // Choose a portal by weight, reusing u.x within the chosen interval.
+    double target = u.x * view.weightTotal, acc = 0;
+    int chosen = -1;
+    for (int i = 0; i < view.count; ++i) {
+        if (view.weight[i] > 0 && target < acc + view.weight[i]) {
+            chosen = i;
+            u.x = std::min((target - acc) / view.weight[i], 1 - 1e-12);
+            break;
+        }
+        acc += view.weight[i];
+    }
+    if (chosen < 0) return s;
+    const SphericalRect& r = rect(view, chosen);
+    if (r.solidAngle() <= 0) return s;
+    Vec3 q = r.sample(u);
+    s.wi = normalize(q - p);
+    s.Le = daylight_->Le(s.wi);
+    s.pdf = view.weight[chosen] / view.weightTotal / r.solidAngle();
+    return s;
+}
+
+}  // namespace luxplan

@@ -1,0 +1,62 @@
+// The sky as a light, sampled through the room's openings (window portals). Inside
+// the room every sky direction that can reach a point passes through one opening, so
+// sampling the openings' spherical rectangles (Ureña et al. 2013, core/spherical_rect.h)
+// wastes no samples on walls; outside, the sky map's own importance sampling is used.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <luxplan/core/spherical_rect.h>
+#include <luxplan/daylight/environment.h>
+#include <luxplan/scene/scene.h>
+
+namespace luxplan {
+
+class SkyLight {
+public:
+    // A portal is chosen with a cheap weight (area x cos / distance^2, capped at 2 pi),
+    // then a direction uniform in its spherical rectangle: pdf = P(portal) / solid
+    // angle. Only the rectangles a vertex samples or an escaping ray passes through are
+    // set up (four acos each); the view of a sampler point, shared by all its paths,
+    // sets up all. Openings beyond kMaxPortals are not sampled directly (BSDF sampling
+    // still finds them, so the estimate stays unbiased).
+    static constexpr int kMaxPortals = 16;
+    struct View {
+        bool active = false;  // the vertex is inside the room: sample the portals
+        int count = 0;
+        Vec3 point;
+        double weight[kMaxPortals] = {};
+        double weightTotal = 0;
+        mutable SphericalRect rects[kMaxPortals];
+        mutable bool built[kMaxPortals] = {};
+    };
+
+    SkyLight() = default;
+    // `daylight` may be null (night); `portals` false samples the sky map everywhere.
+    SkyLight(const Scene& scene, const DaylightEnvironment* daylight, bool portals);
+
+    bool active() const { return daylight_ && daylight_->hasSky(); }
+    // The openings as seen from a path's first vertex: cached per thread, since every
+    // path of a sampler point starts at the same place.
+    void viewFromSensor(const Vec3& p, View& view) const;
+    // The openings as seen from a later vertex: rectangles set up on demand.
+    void view(const Vec3& p, View& view) const { compute(p, view, false); }
+    // Density (per solid angle) of sample() for direction w from the view's point p.
+    double pdf(const View& view, const Vec3& p, const Vec3& w) const;
+    EnvironmentSample sample(const View& view, const Vec3& p, Vec2 u) const;
+
+private:
+    void compute(const Vec3& p, View& view, bool buildAll) const;
+    const SphericalRect& rect(const View& view, int i) const;
+
+    const DaylightEnvironment* daylight_ = nullptr;
+    bool portals_ = true;
+    std::vector<Rect3> openings_;
+    std::vector<Vec3> openingNormals_;  // edgeU x edgeV: the opening's normal times its area
+    Bounds3 room_;
+    bool hasRoom_ = false;
+    uint64_t id_ = 0;  // unique per light, keys the per-thread view cache
+};
+
+}  // namespace luxplan
