@@ -6,12 +6,14 @@ namespace luxplan {
 std::shared_ptr<const SamplerType> readPlanarSampler(const json::Fields& f);       // planar.cpp
 std::shared_ptr<const SamplerType> readDirectionalSampler(const json::Fields& f);  // directional.cpp
 std::shared_ptr<const SamplerType> readVolumeSampler(const json::Fields& f);       // volume.cpp
+std::shared_ptr<const SamplerType> readCylindricalSampler(const json::Fields& f);  // cylindrical.cpp
 
 const std::vector<SamplerTypeEntry>& samplerTypes() {
     static const std::vector<SamplerTypeEntry> types = {
         {"planar", readPlanarSampler},
         {"directional", readDirectionalSampler},
         {"volume", readVolumeSampler},
+        {"cylindrical", readCylindricalSampler},
     };
     return types;
 }
