@@ -113,8 +113,7 @@ bool runOptimize(const OptimizeArgs& args) {
         Evaluation& best = result.bestEvaluation;
         best.lighting = lighting->evaluate(result.best, worldTransforms(scene, result.best), &best.samplers);
         best.lightingEvaluated = true;
-        double w = scene.objective.lightingWeight;
-        best.cost = w * best.lighting + (1 - w) * best.geometry;
+        best.cost = scene.objective.cost(best.lighting, best.geometry);
     }
     writeOptimizerOutputs(args.out, scene, result);
     if (flattened) {

@@ -97,7 +97,7 @@ Evaluation Optimizer::evaluate(const Layout& layout, const std::vector<Transform
         e.lighting = lighting_->evaluate(layout, world, &e.samplers);
         e.lightingEvaluated = true;
     }
-    e.cost = w * e.lighting + (1 - w) * e.geometry;  // Eq. 1
+    e.cost = scene_->objective.cost(e.lighting, e.geometry);
     return e;
 }
 
@@ -241,8 +241,7 @@ OptimizerResult Optimizer::run(const ProgressCallback& progress, const std::atom
         ++confirmations_;
         Evaluation confirmed = bestEval_;
         confirmed.lighting = lighting_->confirm(best_, worldTransforms(*scene_, best_), &confirmed.samplers);
-        const double w = scene_->objective.lightingWeight;
-        confirmed.cost = w * confirmed.lighting + (1 - w) * confirmed.geometry;
+        confirmed.cost = scene_->objective.cost(confirmed.lighting, confirmed.geometry);
         if (bestIteration_ == iteration_) currentEval_ = confirmed;  // the current layout is the best one
         bestEval_ = confirmed;
         return confirmed.cost == 0;

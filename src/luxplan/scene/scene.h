@@ -141,8 +141,10 @@ struct ConstraintSpec {
     std::optional<GroupEnd> groupA, groupB;  // flattenScene(): a or b was a group
 };
 
+// Eq. 1: C = w L + (1 - w) G, w the lighting weight.
 struct Objective {
     double lightingWeight = 0.5;
+    double cost(double lighting, double geometry) const { return lightingWeight * lighting + (1 - lightingWeight) * geometry; }
 };
 
 struct OptimizerSettings {
