@@ -18,7 +18,9 @@ configure: deps
 build: configure
 	cmake --build $(BUILD) -j $(JOBS)
 
-demo: build
+# The demo runs only the CLI, so it builds only that target (no tests, no benchmarks).
+demo: configure
+	cmake --build $(BUILD) -j $(JOBS) --target luxplan_cli
 	./scripts/demo.sh $(BUILD)/luxplan $(DEMO_SCENE) $(DEMO_OUT)
 
 test: build

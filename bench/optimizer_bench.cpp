@@ -2,6 +2,7 @@
 // path-traced lighting term, the share of proposals the geometric test rejects before
 // any light is measured, and the cost of one geometric evaluation.
 #include <benchmark/benchmark.h>
+#include <tbb/global_control.h>
 
 #include <luxplan/io/scene_loader.h>
 #include <luxplan/optimizer/optimizer.h>
@@ -50,9 +51,10 @@ void BM_OptimizeWithLighting(benchmark::State& state) {
     Office& o = office();
     OptimizerOptions options = optimizerOptions(o.scene);
     options.iterations = 200;
+    // The argument is the thread count, limited as luxplan's main() does for --threads.
+    tbb::global_control threads(tbb::global_control::max_allowed_parallelism, size_t(state.range(0)));
     MeasureOptions measure;
     measure.pathsPerPoint = o.scene.optimizer.searchPathsPerPoint;
-    measure.threads = int(state.range(0));
     int64_t iterations = 0;
     uint64_t evaluations = 0;
     OptimizerResult last;

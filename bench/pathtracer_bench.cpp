@@ -2,6 +2,7 @@
 // Embree throughput on the same scene (embree_bench.cpp), single-threaded so that the
 // two compare as a ratio on a shared machine.
 #include <benchmark/benchmark.h>
+#include <tbb/global_control.h>
 
 #include <luxplan/io/scene_loader.h>
 #include <luxplan/lightsamplers/light_samplers.h>
@@ -23,9 +24,9 @@ Office& office() {
 
 void BM_MeasureOffice(benchmark::State& state) {
     Office& o = office();
+    tbb::global_control oneThread(tbb::global_control::max_allowed_parallelism, 1);
     MeasureOptions options;
     options.pathsPerPoint = int(state.range(0));
-    options.threads = 1;
     uint64_t paths = 0, rays = 0, shadow = 0;
     for (auto _ : state) {
         MeasureResult r = measureSamplers(o.tracer, options);

@@ -21,7 +21,7 @@ nlohmann::json bound(double v) { return std::isfinite(v) ? nlohmann::json(v) : n
 
 struct MeasureArgs {
     std::string scene, layout;
-    int paths = 0, threads = 0;
+    int paths = 0;
     int64_t seed = -1;
     bool json = false, flat = false;
 };
@@ -38,7 +38,6 @@ void runMeasure(const MeasureArgs& args) {
     MeasureOptions options;
     options.pathsPerPoint = args.paths > 0 ? args.paths : scene.optimizer.pathsPerPoint;
     options.seed = args.seed >= 0 ? uint64_t(args.seed) : scene.optimizer.seed;
-    options.threads = args.threads;
     MeasureResult result = measureSamplers(tracer, options);
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
@@ -47,14 +46,17 @@ void runMeasure(const MeasureArgs& args) {
         for (size_t k = 0; k < scene.samplers.size(); ++k) {
             const LightSamplerSpec& s = scene.samplers[k];
             const SamplerResult& r = result.samplers[k];
-            samplers.push_back({{"name", s.name},
-                                {"type", s.type->name()},
-                                {"unit", s.type->unit()},
-                                {"value", r.value},
-                                {"std_error", r.standardError},
-                                {"target", {bound(s.targetMin), bound(s.targetMax)}},
-                                {"penalty", r.penalty},
-                                {"points", r.points}});
+            nlohmann::json sampler = {{"name", s.name},
+                                      {"type", s.type->name()},
+                                      {"unit", s.type->unit()},
+                                      {"value", r.value},
+                                      {"std_error", r.standardError},
+                                      {"target", {bound(s.targetMin), bound(s.targetMax)}},
+                                      {"penalty", r.penalty},
+                                      {"points", r.points}};
+            // Only when it happened, so that the usual output stays as it was.
+            if (r.droppedNonFinite > 0) sampler["dropped_nonfinite"] = r.droppedNonFinite;
+            samplers.push_back(sampler);
         }
         nlohmann::json out = {{"samplers", samplers},
                               {"paths_per_point", options.pathsPerPoint},
@@ -82,7 +84,7 @@ void runMeasure(const MeasureArgs& args) {
 
 }  // namespace
 
-void registerMeasureCommand(CLI::App& app) {
+void registerMeasureCommand(CLI::App& app, int& threads) {
     auto args = std::make_shared<MeasureArgs>();
     auto* cmd = app.add_subcommand("measure", "Evaluate every light sampler of a scene by path tracing");
     cmd->add_option("scene", args->scene, "Scene JSON file")->required();
@@ -90,7 +92,7 @@ void registerMeasureCommand(CLI::App& app) {
     cmd->add_option("--paths", args->paths, "Paths per sampler point (default: optimizer.paths_per_point)")
         ->check(CLI::PositiveNumber);
     cmd->add_option("--seed", args->seed, "Random seed (default: optimizer.seed)")->check(CLI::NonNegativeNumber);
-    cmd->add_option("--threads", args->threads, "Worker threads (default: all cores)")->check(CLI::NonNegativeNumber);
+    cmd->add_option("--threads", threads, "Worker threads (default: all cores)")->check(CLI::NonNegativeNumber);
     cmd->add_flag("--json", args->json, "Print JSON with per-point values");
     cmd->add_flag("--flat", args->flat, "Measure in the flattened scene (read the layout_flat.json of optimize --flat)");
     cmd->callback([args] { runMeasure(*args); });

@@ -27,7 +27,7 @@ extern "C" void onInterrupt(int) { interrupted.store(true); }
 
 struct OptimizeArgs {
     std::string scene, out;
-    int iterations = -1, threads = 0, paths = 0, spp = 0;
+    int iterations = -1, paths = 0, spp = 0;
     int64_t seed = -1;
     bool flat = false, quiet = false, noPictures = false;
 };
@@ -83,7 +83,6 @@ bool runOptimize(const OptimizeArgs& args) {
     MeasureOptions measure;
     measure.pathsPerPoint = args.paths > 0 ? args.paths : scene.optimizer.searchPathsPerPoint;
     measure.seed = options.seed;
-    measure.threads = args.threads;
     std::unique_ptr<PathTracedLighting> lighting;
     const int reportPaths = std::max(scene.optimizer.reportPathsPerPoint, measure.pathsPerPoint);
     if (!scene.samplers.empty()) {
@@ -133,7 +132,6 @@ bool runOptimize(const OptimizeArgs& args) {
     std::cout << "\n  wrote " << args.out << "/layout.json, report.json, trace.csv\n";
     if (!args.noPictures) {
         OutputOptions pictures;
-        pictures.threads = args.threads;
         pictures.seed = options.seed;
         pictures.initialLabel = "start";
         if (args.spp > 0) pictures.renderSamplesPerPixel = args.spp;
@@ -150,7 +148,7 @@ bool runOptimize(const OptimizeArgs& args) {
 
 }  // namespace
 
-void registerOptimizeCommand(CLI::App& app) {
+void registerOptimizeCommand(CLI::App& app, int& threads) {
     auto args = std::make_shared<OptimizeArgs>();
     auto* cmd = app.add_subcommand("optimize", "Search the furniture layout for the design rules and lighting goals");
     cmd->add_option("scene", args->scene, "Scene JSON file")->required();
@@ -158,7 +156,7 @@ void registerOptimizeCommand(CLI::App& app) {
     cmd->add_option("--iterations", args->iterations, "Iterations (default: optimizer.iterations)")
         ->check(CLI::NonNegativeNumber);
     cmd->add_option("--seed", args->seed, "Random seed (default: optimizer.seed)")->check(CLI::NonNegativeNumber);
-    cmd->add_option("--threads", args->threads, "Worker threads for light transport (default: all cores)")
+    cmd->add_option("--threads", threads, "Worker threads for light transport (default: all cores)")
         ->check(CLI::NonNegativeNumber);
     cmd->add_option("--paths", args->paths, "Paths per sampler point during the search (default: optimizer.paths_per_point, or 64 if the scene does not give it)")
         ->check(CLI::PositiveNumber);

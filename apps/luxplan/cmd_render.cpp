@@ -13,14 +13,14 @@ namespace {
 
 struct PictureArgs {
     std::string scene, layout, out;
-    int width = 0, height = 0, spp = 0, threads = 0, paths = 0;
+    int width = 0, height = 0, spp = 0, paths = 0;
     int64_t seed = -1;
     double cell = 0;
     int cellPaths = 0;
     bool raw = false;
 };
 
-void addPictureOptions(CLI::App* cmd, PictureArgs& args) {
+void addPictureOptions(CLI::App* cmd, PictureArgs& args, int& threads) {
     OutputOptions defaults;
     cmd->add_option("scene", args.scene, "Scene JSON file")->required();
     cmd->add_option("--layout", args.layout, "layout.json to show instead of the scene's placement");
@@ -37,7 +37,7 @@ void addPictureOptions(CLI::App* cmd, PictureArgs& args) {
     cmd->add_option("--cell-paths", args.cellPaths, "Illuminance samples per work-plane cell (default " +
                                                         std::to_string(defaults.cellPaths) + ")")
         ->check(CLI::PositiveNumber);
-    cmd->add_option("--threads", args.threads, "Worker threads (default: all cores)")->check(CLI::NonNegativeNumber);
+    cmd->add_option("--threads", threads, "Worker threads (default: all cores)")->check(CLI::NonNegativeNumber);
     cmd->add_option("--seed", args.seed, "Random seed (default: optimizer.seed)")->check(CLI::NonNegativeNumber);
 }
 
@@ -50,7 +50,6 @@ OutputOptions outputOptions(const PictureArgs& args, const Scene& scene) {
     if (args.paths > 0) o.samplerPaths = args.paths;
     if (args.cell > 0) o.cellSize = args.cell;
     if (args.cellPaths > 0) o.cellPaths = args.cellPaths;
-    o.threads = args.threads;
     o.seed = args.seed >= 0 ? uint64_t(args.seed) : scene.optimizer.seed;
     return o;
 }
@@ -85,18 +84,18 @@ void runPictures(const PictureArgs& args, bool report) {
 
 }  // namespace
 
-void registerRenderCommand(CLI::App& app) {
+void registerRenderCommand(CLI::App& app, int& threads) {
     auto args = std::make_shared<PictureArgs>();
     auto* cmd = app.add_subcommand("render", "Render a layout: render.png, plan.png and scene.glb");
-    addPictureOptions(cmd, *args);
+    addPictureOptions(cmd, *args, threads);
     cmd->add_option("-o,--out", args->out, "Output folder")->required();
     cmd->callback([args] { runPictures(*args, false); });
 }
 
-void registerReportCommand(CLI::App& app) {
+void registerReportCommand(CLI::App& app, int& threads) {
     auto args = std::make_shared<PictureArgs>();
     auto* cmd = app.add_subcommand("report", "Measure a layout and write every picture, scene.glb and report.html");
-    addPictureOptions(cmd, *args);
+    addPictureOptions(cmd, *args, threads);
     cmd->add_option("-o,--out", args->out, "Output folder")->required();
     cmd->callback([args] { runPictures(*args, true); });
 }

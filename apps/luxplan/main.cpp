@@ -1,5 +1,8 @@
 // luxplan: furniture layout optimization guided by illumination goals.
 #include <iostream>
+#include <optional>
+
+#include <tbb/global_control.h>
 
 #include "commands.h"
 #include <luxplan/core/error.h>
@@ -10,11 +13,19 @@ int main(int argc, char** argv) {
     app.set_version_flag("--version", "luxplan 0.1.0");
     luxplan::cli::registerValidateCommand(app);
     luxplan::cli::registerInfoCommand(app);
-    luxplan::cli::registerMeasureCommand(app);
-    luxplan::cli::registerOptimizeCommand(app);
+    int threads = 0;  // the subcommand's --threads; 0: all cores
+    luxplan::cli::registerMeasureCommand(app, threads);
+    luxplan::cli::registerOptimizeCommand(app, threads);
     luxplan::cli::registerSunCommand(app);
-    luxplan::cli::registerRenderCommand(app);
-    luxplan::cli::registerReportCommand(app);
+    luxplan::cli::registerRenderCommand(app, threads);
+    luxplan::cli::registerReportCommand(app, threads);
+    // The one place that sets the thread count: CLI11 runs this after storing the options
+    // and before the subcommand's callback, and every parallel loop (core/parallel.h) runs
+    // on TBB's default arena, which the control limits for as long as it lives.
+    std::optional<tbb::global_control> parallelism;
+    app.parse_complete_callback([&] {
+        if (threads > 0) parallelism.emplace(tbb::global_control::max_allowed_parallelism, size_t(threads));
+    });
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

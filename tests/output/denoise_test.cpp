@@ -85,7 +85,7 @@ TEST(Denoise, ALowSampleRenderComesCloserToAHighSampleOne) {
       "luminaires": [{"name": "lamp", "shape": "rect", "center": [2.5,2,2.99], "normal": [0,0,-1], "size": [0.6,0.6], "flux_lm": 4000}]})");
     Camera camera = defaultCamera(lab.scene);
     RenderOptions o;
-    o.width = 48, o.height = 36, o.threads = 2;
+    o.width = 48, o.height = 36;
     o.samplesPerPixel = 256;
     LuminanceImage reference = renderLuminance(*lab.tracer, camera, o);
     o.samplesPerPixel = 8, o.seed = 2;

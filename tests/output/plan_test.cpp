@@ -4,6 +4,7 @@
 
 #include <luxplan/output/plan.h>
 #include "support/lab.h"
+#include "support/threads.h"
 
 namespace luxplan {
 namespace {
@@ -64,7 +65,7 @@ TEST(Plan, FurnitureAndSamplersShowWhereTheyAre) {
 TEST(Plan, WorkPlaneUnderAUniformSkyIsPiL) {
     test::Lab lab(R"({"luxplan": 1, "daylight": {"sky": {"model": "uniform", "luminance_nits": 2000}, "sun": false, "ground_reflectance": 0}})");
     Bounds3 area({0, 0, 0}, {1.2, 0.7, 1});
-    IlluminanceGrid grid = measureWorkPlane(*lab.tracer, area, 0.8, 0.5, 256, 3, 2);
+    IlluminanceGrid grid = test::withThreads(2, [&] { return measureWorkPlane(*lab.tracer, area, 0.8, 0.5, 256, 3); });
     EXPECT_EQ(grid.nx, 3);
     EXPECT_EQ(grid.ny, 2);
     ASSERT_EQ(grid.values.size(), 6u);
@@ -77,17 +78,17 @@ TEST(Plan, WorkPlaneUnderAUniformSkyIsPiL) {
             EXPECT_NEAR(grid.at(i, j), kPi * 2000, 4 * sigma + 1e-3 * kPi * 2000) << i << " " << j;
         }
     // The height is above the room's floor.
-    IlluminanceGrid raised = measureWorkPlane(*lab.tracer, Bounds3({0, 0, 1}, {1, 1, 2}), 0.5, 1, 1, 3, 1);
+    IlluminanceGrid raised = measureWorkPlane(*lab.tracer, Bounds3({0, 0, 1}, {1, 1, 2}), 0.5, 1, 1, 3);
     EXPECT_NEAR(raised.cellCenter(0, 0).z, 1.5, 1e-12);
     // Seeded per cell and path: the thread count does not matter.
-    IlluminanceGrid one = measureWorkPlane(*lab.tracer, area, 0.8, 0.5, 256, 3, 1);
+    IlluminanceGrid one = test::withThreads(1, [&] { return measureWorkPlane(*lab.tracer, area, 0.8, 0.5, 256, 3); });
     EXPECT_EQ(one.values, grid.values);
 }
 
 TEST(Plan, WorkPlaneMapAndLegendColourTheFloor) {
     test::Lab lab(kRoomWithTable);
     PlanData data;
-    data.workPlane = measureWorkPlane(*lab.tracer, lab.scene.room()->box, 0.8, 0.5, 8, 1, 2);
+    data.workPlane = measureWorkPlane(*lab.tracer, lab.scene.room()->box, 0.8, 0.5, 8, 1);
     EXPECT_EQ(data.workPlane->nx, 16);
     EXPECT_EQ(data.workPlane->ny, 8);
     PlanOptions options;

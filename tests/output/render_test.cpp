@@ -4,6 +4,7 @@
 
 #include <luxplan/output/render.h>
 #include "support/lab.h"
+#include "support/threads.h"
 
 namespace luxplan {
 namespace {
@@ -33,9 +34,9 @@ TEST(Render, DefaultCameraLooksAcrossTheRoom) {
 TEST(Render, LitRoomIsVisibleAndDeterministic) {
     test::Lab lab(kLitRoom);
     RenderOptions options;
-    options.width = 48, options.height = 36, options.samplesPerPixel = 4, options.seed = 7, options.threads = 2;
+    options.width = 48, options.height = 36, options.samplesPerPixel = 4, options.seed = 7;
     Camera camera = defaultCamera(lab.scene);
-    Image image = renderPerspective(*lab.tracer, camera, options);
+    Image image = test::withThreads(2, [&] { return renderPerspective(*lab.tracer, camera, options); });
     ASSERT_EQ(image.width(), 48);
     ASSERT_EQ(image.height(), 36);
     int lit = 0;
@@ -44,8 +45,8 @@ TEST(Render, LitRoomIsVisibleAndDeterministic) {
         lit += p.r > 10;
     }
     EXPECT_GT(lit, 48 * 36 * 9 / 10);
-    options.threads = 1;
-    EXPECT_EQ(renderPerspective(*lab.tracer, camera, options).pixels(), image.pixels());
+    EXPECT_EQ(test::withThreads(1, [&] { return renderPerspective(*lab.tracer, camera, options); }).pixels(),
+              image.pixels());
     options.seed = 8;
     EXPECT_NE(renderPerspective(*lab.tracer, camera, options).pixels(), image.pixels());
 }

@@ -24,9 +24,9 @@ struct Lab {
         rt = std::make_unique<EmbreeScene>(scene, initialLayout(scene));
         tracer = std::make_unique<PathTracer>(*rt, daylight ? &*daylight : nullptr, options);
     }
-    MeasureResult measure(int paths, uint64_t seed = 1, int threads = 0) const {
+    MeasureResult measure(int paths, uint64_t seed = 1) const {
         MeasureOptions o;
-        o.pathsPerPoint = paths, o.seed = seed, o.threads = threads;
+        o.pathsPerPoint = paths, o.seed = seed;
         return measureSamplers(*tracer, o);
     }
 };

@@ -10,10 +10,8 @@
 
 #include <vector>
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
 #include <luxplan/core/math.h>
+#include <luxplan/core/parallel.h>
 #include <luxplan/daylight/distribution.h>
 
 namespace luxplan {
@@ -149,22 +147,20 @@ void SkyMap::accumulate(const RowFunction& rowFunction, double weight, int s, in
             const double phi = 2 * kPi * (ix + (a + 0.5) * inv) / width_;
             columns[size_t(ix) * s + a] = {std::cos(phi), std::sin(phi)};
         }
-    tbb::parallel_for(tbb::blocked_range<int>(rowBegin, rowEnd), [&](const tbb::blocked_range<int>& rows) {
+    parallelFor(size_t(std::max(0, rowEnd - rowBegin)), [&](size_t row) {
+        const int iy = rowBegin + int(row);
         std::vector<Vec3> sums(static_cast<size_t>(width_));
-        for (int iy = rows.begin(); iy != rows.end(); ++iy) {
-            std::fill(sums.begin(), sums.end(), Vec3{});
-            for (int b = 0; b < s; ++b) {
-                const double z = direction(0, iy, 0, (b + 0.5) * inv).z;
-                const double r = std::sqrt(std::max(0.0, 1 - z * z));
-                const auto g = rowFunction(z);
-                for (int ix = 0; ix < width_; ++ix)
-                    for (int a = 0; a < s; ++a) {
-                        const Vec2 c = columns[size_t(ix) * s + a];
-                        sums[size_t(ix)] += g(Vec3(r * c.x, r * c.y, z));
-                    }
-            }
-            for (int ix = 0; ix < width_; ++ix) at(ix, iy) += sums[size_t(ix)] * norm;
+        for (int b = 0; b < s; ++b) {
+            const double z = direction(0, iy, 0, (b + 0.5) * inv).z;
+            const double r = std::sqrt(std::max(0.0, 1 - z * z));
+            const auto g = rowFunction(z);
+            for (int ix = 0; ix < width_; ++ix)
+                for (int a = 0; a < s; ++a) {
+                    const Vec2 c = columns[size_t(ix) * s + a];
+                    sums[size_t(ix)] += g(Vec3(r * c.x, r * c.y, z));
+                }
         }
+        for (int ix = 0; ix < width_; ++ix) at(ix, iy) += sums[size_t(ix)] * norm;
     });
 }
 

@@ -1,9 +1,7 @@
 #include <luxplan/lightsamplers/light_samplers.h>
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
-
+#include <luxplan/core/estimator.h>
+#include <luxplan/core/parallel.h>
 #include <luxplan/core/penalty.h>
 
 namespace luxplan {
@@ -42,30 +40,22 @@ MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& op
         for (int i = 0; i < placed.back()->items(); ++i) items.push_back({int(k), i});
     }
     std::vector<double> mean(items.size()), error(items.size());
+    std::vector<uint64_t> dropped(items.size());
     std::vector<RayStats> stats(items.size());
     const int paths = std::max(1, options.pathsPerPoint);
 
-    auto measureItem = [&](size_t index) {
+    parallelFor(items.size(), [&](size_t index) {
         const WorkItem& w = items[index];
         const PlacedSampler& sampler = *placed[size_t(w.sampler)];
-        double sum = 0, sumSq = 0;
+        MeanEstimator estimate;
         for (int path = 0; path < paths; ++path) {
             Rng rng(hashValues({options.seed, uint64_t(w.sampler), uint64_t(w.item), uint64_t(path)}));
-            double x = sampler.sample(tracer, w.item, rng, stats[index]);
-            sum += x;
-            sumSq += x * x;
+            estimate.add(sampler.sample(tracer, w.item, rng, stats[index]));
         }
-        mean[index] = sum / paths;
-        double variance = std::max(0.0, sumSq / paths - mean[index] * mean[index]) * paths / std::max(1, paths - 1);
-        error[index] = std::sqrt(variance / paths);
-    };
-    auto run = [&] {
-        tbb::parallel_for(tbb::blocked_range<size_t>(0, items.size(), 1), [&](const tbb::blocked_range<size_t>& r) {
-            for (size_t i = r.begin(); i != r.end(); ++i) measureItem(i);
-        });
-    };
-    if (options.threads > 0) tbb::task_arena(options.threads).execute(run);
-    else run();
+        mean[index] = estimate.mean();
+        error[index] = estimate.standardError();
+        dropped[index] = estimate.dropped();
+    });
 
     // Reduce per sampler, in a fixed order.
     result.samplers.resize(scene.samplers.size());
@@ -73,6 +63,8 @@ MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& op
         SamplerResult& r = result.samplers[size_t(items[i].sampler)];
         r.points.push_back(mean[i]);
         r.pointErrors.push_back(error[i]);
+        r.droppedNonFinite += dropped[i];
+        result.droppedNonFinite += dropped[i];
         result.rays += stats[i];
     }
     result.paths = uint64_t(items.size()) * paths;

@@ -22,22 +22,24 @@ struct SamplerResult {
     std::vector<double> points;    // per item: the type's points or strata, in its order
     std::vector<double> pointErrors;
     double penalty = 0;            // Eq. 2 with alpha = 1 and the sampler's tolerance
+    uint64_t droppedNonFinite = 0; // NaN/inf path samples left out (core/estimator.h)
 };
 
 struct MeasureOptions {
     int pathsPerPoint = 1000;
     uint64_t seed = 1;
-    int threads = 0;  // 0: all cores
 };
 
 struct MeasureResult {
     std::vector<SamplerResult> samplers;  // in Scene::samplers order
     RayStats rays;
     uint64_t paths = 0;
+    uint64_t droppedNonFinite = 0;  // over all samplers
 };
 
 // Measures every sampler of the scene for the path tracer's current layout. Each path is
-// seeded from (seed, sampler, point, path), so results do not depend on the thread count.
+// seeded from (seed, sampler, point, path), so results do not depend on the thread count
+// (set once by the caller, see core/parallel.h).
 MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& options);
 
 }  // namespace luxplan

@@ -68,10 +68,9 @@ RunOutputs writeRunOutputs(const std::filesystem::path& folder, const Scene& sce
     MeasureOptions measure;
     measure.pathsPerPoint = options.samplerPaths;
     measure.seed = options.seed;
-    measure.threads = options.threads;
     auto workPlane = [&] {
         return measureWorkPlane(tracer, room->box, options.workPlaneHeight, options.cellSize,
-                                options.cellPaths, options.seed, options.threads);
+                                options.cellPaths, options.seed);
     };
 
     // The final layout: samplers, work plane, view, glTF.
@@ -92,7 +91,6 @@ RunOutputs writeRunOutputs(const std::filesystem::path& folder, const Scene& sce
         ro.samplesPerPixel = options.renderSamplesPerPixel;
         ro.denoise = options.renderDenoise;
         ro.seed = options.seed;
-        ro.threads = options.threads;
         writePng(renderPerspective(tracer, defaultCamera(scene), ro), folder / "render.png");
         wrote(folder / "render.png");
         timed("render.png");

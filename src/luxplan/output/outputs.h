@@ -30,7 +30,6 @@ struct OutputOptions {
     int cellPaths = 32;             // illuminance samples per cell
     double workPlaneHeight = 0.8;   // m above the floor
     int samplerPaths = 256;         // per sampler point, where a layout's samplers must be measured
-    int threads = 0;                // 0: all cores; no output depends on it
     uint64_t seed = 1;
     std::string title;              // report.html's title; empty: "luxplan: <scene name>"
     std::string initialLabel = "initial", finalLabel = "optimized";

@@ -4,10 +4,8 @@
 
 #include <cstdio>
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
-
+#include <luxplan/core/estimator.h>
+#include <luxplan/core/parallel.h>
 #include <luxplan/core/rng.h>
 #include <luxplan/scene/room.h>
 #include <luxplan/emitters/emitter_shape.h>
@@ -180,7 +178,7 @@ void drawNorthArrow(Image& image, Vec2 center, double northDeg) {
 }  // namespace
 
 IlluminanceGrid measureWorkPlane(const PathTracer& tracer, const Bounds3& room, double height, double cellSize,
-                                 int paths, uint64_t seed, int threads) {
+                                 int paths, uint64_t seed) {
     IlluminanceGrid grid;
     grid.cellSize = cellSize > 0 ? cellSize : 0.25;
     grid.height = room.lo.z + height;
@@ -197,29 +195,17 @@ IlluminanceGrid measureWorkPlane(const PathTracer& tracer, const Bounds3& room, 
     paths = std::max(1, paths);
     const Vec3 up{0, 0, 1};
 
-    auto measureCell = [&](size_t cell) {
+    parallelFor(cells, [&](size_t cell) {
         Vec3 p = grid.cellCenter(int(cell % size_t(grid.nx)), int(cell / size_t(grid.nx)));
         RayStats stats;
-        double sum = 0, sumSq = 0;
+        MeanEstimator estimate;
         for (int path = 0; path < paths; ++path) {
             Rng rng(hashValues({seed, kWorkPlaneTag, uint64_t(cell), uint64_t(path)}));
-            double x = tracer.illuminanceSample(p, up, rng, stats);
-            if (!std::isfinite(x)) x = 0;
-            sum += x;
-            sumSq += x * x;
+            estimate.add(tracer.illuminanceSample(p, up, rng, stats));
         }
-        double mean = sum / paths;
-        double variance = std::max(0.0, sumSq / paths - mean * mean) * paths / std::max(1, paths - 1);
-        grid.values[cell] = mean;
-        grid.errors[cell] = std::sqrt(variance / paths);
-    };
-    auto run = [&] {
-        tbb::parallel_for(tbb::blocked_range<size_t>(0, cells, 4), [&](const tbb::blocked_range<size_t>& r) {
-            for (size_t i = r.begin(); i != r.end(); ++i) measureCell(i);
-        });
-    };
-    if (threads > 0) tbb::task_arena(threads).execute(run);
-    else run();
+        grid.values[cell] = estimate.mean();
+        grid.errors[cell] = estimate.standardError();
+    });
     return grid;
 }
 

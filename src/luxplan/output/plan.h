@@ -33,12 +33,12 @@ struct IlluminanceGrid {
 
 // Measures the grid at `height` metres above the room's floor (room.lo.z + height) with
 // `paths` illuminance samples per cell, each seeded from (seed, tag, cell, path): results
-// do not depend on `threads` (0: all cores). The nx = ceil(width / cellSize) by ny columns
+// do not depend on the thread count. The nx = ceil(width / cellSize) by ny columns
 // and rows of square cells are centred on the room, so the edge cells overhang the walls by
 // less than half a cell and every cell centre is inside. A centre inside furniture reads
 // whatever the tracer finds there (usually about 0).
 IlluminanceGrid measureWorkPlane(const PathTracer& tracer, const Bounds3& room, double height = 0.8,
-                                 double cellSize = 0.25, int paths = 64, uint64_t seed = 1, int threads = 0);
+                                 double cellSize = 0.25, int paths = 64, uint64_t seed = 1);
 
 struct PlanOptions {
     double pixelsPerMetre = 80;

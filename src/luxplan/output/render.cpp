@@ -2,10 +2,8 @@
 // pixel samples, automatic exposure and a Reinhard tone curve to grey sRGB.
 #include <luxplan/output/render.h>
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
-
+#include <luxplan/core/estimator.h>
+#include <luxplan/core/parallel.h>
 #include <luxplan/core/rng.h>
 #include <luxplan/scene/layout.h>
 #include <luxplan/scene/room.h>
@@ -87,13 +85,6 @@ struct CameraRays {
     int width, height;
 };
 
-template <typename Rows>
-void forRows(int height, int threads, const Rows& rows) {
-    auto run = [&] { tbb::parallel_for(tbb::blocked_range<int>(0, height, 1), rows); };
-    if (threads > 0) tbb::task_arena(threads).execute(run);
-    else run();
-}
-
 }  // namespace
 
 LuminanceImage renderLuminance(const PathTracer& tracer, const Camera& camera, const RenderOptions& options) {
@@ -106,26 +97,28 @@ LuminanceImage renderLuminance(const PathTracer& tracer, const Camera& camera, c
     const int spp = std::max(1, options.samplesPerPixel);
     const CameraRays rays(camera, out.width, out.height);
 
-    forRows(out.height, options.threads, [&](const tbb::blocked_range<int>& rows) {
+    parallelFor(size_t(out.height), [&](size_t row) {
+        const int y = int(row);
         RayStats stats;
-        for (int y = rows.begin(); y != rows.end(); ++y)
-            for (int x = 0; x < out.width; ++x) {
-                const uint64_t pixel = uint64_t(y) * uint64_t(out.width) + uint64_t(x);
-                double sum = 0, sumSquares = 0, emitters = 0;
-                for (int k = 0; k < spp; ++k) {
-                    Rng rng(hashValues({options.seed, kRenderTag, pixel, uint64_t(k)}));
-                    double u = rng.uniform(), v = rng.uniform();
-                    bool luminaire = false;
-                    double L = tracer.radianceSample(rays.at(x + u, y + v), rng, stats, luminaire);
-                    if (!std::isfinite(L) || L <= 0) continue;
-                    if (luminaire) emitters += L;
-                    else sum += L, sumSquares += L * L;
-                }
-                const double mean = sum / spp;
-                out.values[pixel] = mean + emitters / spp;
-                out.emitters[pixel] = emitters / spp;
-                out.variance[pixel] = spp > 1 ? std::max(0.0, sumSquares / spp - mean * mean) / (spp - 1) : mean * mean;
+        for (int x = 0; x < out.width; ++x) {
+            const uint64_t pixel = uint64_t(y) * uint64_t(out.width) + uint64_t(x);
+            // A luminaire sample counts as 0 in the surface estimate and the other way round,
+            // so both are over the same samples (a dropped one is left out of both).
+            MeanEstimator surfaces, emitters;
+            for (int k = 0; k < spp; ++k) {
+                Rng rng(hashValues({options.seed, kRenderTag, pixel, uint64_t(k)}));
+                double u = rng.uniform(), v = rng.uniform();
+                bool luminaire = false;
+                double L = tracer.radianceSample(rays.at(x + u, y + v), rng, stats, luminaire);
+                surfaces.add(luminaire ? 0.0 : L);
+                emitters.add(luminaire ? L : 0.0);
             }
+            const double mean = surfaces.mean();
+            out.values[pixel] = mean + emitters.mean();
+            out.emitters[pixel] = emitters.mean();
+            // One sample tells nothing of the spread: assume an error as large as the mean.
+            out.variance[pixel] = surfaces.count() > 1 ? surfaces.varianceOfMean() : mean * mean;
+        }
     });
     return out;
 }

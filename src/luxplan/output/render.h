@@ -29,7 +29,6 @@ struct RenderOptions {
     int width = 480, height = 360;
     int samplesPerPixel = 8;  // the demo office: ~6 s on 2 cores
     uint64_t seed = 1;
-    int threads = 0;        // 0: all cores; the image does not depend on it
     double exposure = 0;    // multiplies luminance before the tone curve; 0: automatic
     bool denoise = true;    // renderPerspective: edge-avoiding à-trous filter (denoise.h)
 };
