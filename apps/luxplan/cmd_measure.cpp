@@ -9,6 +9,7 @@
 
 #include "commands.h"
 #include <luxplan/lightsamplers/sampler_type.h>
+#include <luxplan/constraints/penalty.h>
 #include <luxplan/io/layout_io.h>
 #include <luxplan/io/scene_loader.h>
 #include <luxplan/lightsamplers/light_samplers.h>
@@ -52,7 +53,7 @@ void runMeasure(const MeasureArgs& args) {
                                       {"value", r.value},
                                       {"std_error", r.standardError},
                                       {"target", {bound(s.targetMin), bound(s.targetMax)}},
-                                      {"penalty", r.penalty},
+                                      {"penalty", lightingPenalty(s, r.value)},
                                       {"points", r.points}};
             // Only when it happened, so that the usual output stays as it was.
             if (r.droppedNonFinite > 0) sampler["dropped_nonfinite"] = r.droppedNonFinite;
@@ -71,12 +72,13 @@ void runMeasure(const MeasureArgs& args) {
     for (size_t k = 0; k < scene.samplers.size(); ++k) {
         const LightSamplerSpec& s = scene.samplers[k];
         const SamplerResult& r = result.samplers[k];
+        const double penalty = lightingPenalty(s, r.value);
         std::ostringstream target;
         target << "[" << s.targetMin << ", " << (std::isfinite(s.targetMax) ? std::to_string(int(s.targetMax)) : "inf") << "]";
         std::cout << std::left << std::setw(24) << s.name << std::setw(12) << s.type->name() << std::right << std::fixed
                   << std::setprecision(1) << std::setw(12) << r.value << std::setw(10) << r.standardError << std::setw(8)
-                  << s.type->unit() << std::setw(22) << target.str() << std::setprecision(3) << std::setw(10) << r.penalty
-                  << (r.penalty > 0 ? "  MISSED" : "  ok") << "\n";
+                  << s.type->unit() << std::setw(22) << target.str() << std::setprecision(3) << std::setw(10) << penalty
+                  << (penalty > 0 ? "  MISSED" : "  ok") << "\n";
     }
     std::cout << std::setprecision(2) << result.paths << " paths (" << options.pathsPerPoint << " per point), "
               << result.rays.closest + result.rays.shadow << " rays in " << seconds << " s\n";

@@ -21,7 +21,7 @@ public:
     explicit FunctionLighting(std::function<double(const std::vector<Transform>&)> f) : f_(std::move(f)) {}
     double evaluate(const Layout&, const std::vector<Transform>& world, LightingBreakdown* out) override {
         double v = f_(world);
-        if (out) out->samplers = {{0, v, v, {}}};
+        if (out) out->samplers = {{v, 0, {}, {}}};
         return v;
     }
 

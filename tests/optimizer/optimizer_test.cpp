@@ -67,7 +67,7 @@ public:
         ++calls;
         if (GeometryEvaluator(scene_).evaluate(world).rejected) ++rejectedCalls;
         double e = 600 - 100 * world[size_t(scene_.findEntity("workstation.desk"))].t.x;
-        if (out) out->samplers = {{0, e, lightingPenalty(scene_.samplers[0], e), {e, e}}};
+        if (out) out->samplers = {{e, 0, {e, e}, {0, 0}}};
         return lightingCost(scene_, {e});
     }
     int calls = 0, rejectedCalls = 0;

@@ -47,7 +47,6 @@ TEST(ReportHtml, SamplersConstraintsAndOnlyExistingLinks) {
     data.layoutLabel = "layout.json";
     data.samplers.resize(2);
     data.samplers[0].value = 620;  // above [300, 500]
-    data.samplers[0].penalty = 1.2;
     data.samplers[1].value = 150;  // in [100, inf)
     GeometryEvaluator geometry(scene);
     data.geometry = geometry.evaluate(worldTransforms(scene, initialLayout(scene)), true);

@@ -2,7 +2,6 @@
 
 #include <luxplan/core/estimator.h>
 #include <luxplan/core/parallel.h>
-#include <luxplan/core/penalty.h>
 
 namespace luxplan {
 namespace {
@@ -74,8 +73,6 @@ MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& op
         Estimate e = placed[k]->combine(r.points, r.pointErrors);
         r.value = e.value;
         r.standardError = e.standardError;
-        const LightSamplerSpec& spec = scene.samplers[k];
-        r.penalty = penalty(r.value, spec.targetMin, spec.targetMax, spec.tolerance, /*alpha=*/1.0);  // Eq. 3
     }
     return result;
 }

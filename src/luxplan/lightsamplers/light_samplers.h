@@ -8,6 +8,7 @@
 #include <memory>
 #include <vector>
 
+#include <luxplan/lightsamplers/sampler_result.h>
 #include <luxplan/lightsamplers/sampler_type.h>
 #include <luxplan/pathtracer/path_tracer.h>
 
@@ -15,15 +16,6 @@ namespace luxplan {
 
 // A sampler placed for the current layout of `rt`.
 std::unique_ptr<PlacedSampler> placeSampler(const LightSamplerSpec& sampler, const EmbreeScene& rt);
-
-struct SamplerResult {
-    double value = 0;              // in the type's unit (lx, cd/m2)
-    double standardError = 0;      // of `value`, from the per-item sample variances
-    std::vector<double> points;    // per item: the type's points or strata, in its order
-    std::vector<double> pointErrors;
-    double penalty = 0;            // Eq. 2 with alpha = 1 and the sampler's tolerance
-    uint64_t droppedNonFinite = 0; // NaN/inf path samples left out (core/estimator.h)
-};
 
 struct MeasureOptions {
     int pathsPerPoint = 1000;

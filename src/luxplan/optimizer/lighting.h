@@ -5,20 +5,15 @@
 
 #include <vector>
 
+#include <luxplan/lightsamplers/sampler_result.h>
 #include <luxplan/scene/layout.h>
 
 namespace luxplan {
 
-// One light sampler's measurement for a layout.
-struct SamplerMeasurement {
-    int sampler = -1;            // index into Scene::samplers
-    double value = 0;            // lx (planar) or cd/m2 (directional, volume)
-    double penalty = 0;          // P(value, target min, target max, tolerance, 1) (lightingPenalty)
-    std::vector<double> points;  // per point or per stratum, when the evaluator keeps them
-};
-
+// Every light sampler's measurement for a layout, in Scene::samplers order (points
+// and errors when the evaluator keeps them).
 struct LightingBreakdown {
-    std::vector<SamplerMeasurement> samplers;
+    std::vector<SamplerResult> samplers;
 };
 
 class LightingEvaluator {

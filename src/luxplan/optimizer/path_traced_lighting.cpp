@@ -17,11 +17,7 @@ double PathTracedLighting::evaluate(const Layout& /*layout*/, const std::vector<
     rays_ += last_.rays;
     std::vector<double> values;
     for (const SamplerResult& r : last_.samplers) values.push_back(r.value);
-    if (out) {
-        out->samplers.clear();
-        for (size_t k = 0; k < values.size(); ++k)
-            out->samplers.push_back({int(k), values[k], lightingPenalty(scene_.samplers[k], values[k]), last_.samplers[k].points});
-    }
+    if (out) out->samplers = last_.samplers;
     return scene_.samplers.empty() ? 0.0 : lightingCost(scene_, values);
 }
 

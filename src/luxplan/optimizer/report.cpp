@@ -8,6 +8,7 @@
 
 #include <luxplan/core/error.h>
 #include <luxplan/io/layout_io.h>
+#include <luxplan/constraints/penalty.h>
 #include <luxplan/lightsamplers/sampler_type.h>
 
 namespace luxplan {
@@ -100,12 +101,12 @@ std::string reportJson(const Scene& scene, const OptimizerResult& r) {
                     {"penalty", r.bestGeometry.overlapPenalty}, {"pairs", pairs}};
 
     Json samplers = Json::array();
-    for (const SamplerMeasurement& m : best.samplers.samplers) {
-        if (m.sampler < 0 || size_t(m.sampler) >= scene.samplers.size()) continue;
-        const LightSamplerSpec& s = scene.samplers[size_t(m.sampler)];
+    for (size_t k = 0; k < best.samplers.samplers.size() && k < scene.samplers.size(); ++k) {
+        const SamplerResult& m = best.samplers.samplers[k];
+        const LightSamplerSpec& s = scene.samplers[k];
         Json e = {{"name", s.name}, {"type", s.type->name()}, {"unit", s.type->unit()},
                   {"value", number(m.value)}, {"target", {number(s.targetMin), number(s.targetMax)}},
-                  {"tolerance", s.tolerance}, {"weight", s.weight}, {"penalty", number(m.penalty)}};
+                  {"tolerance", s.tolerance}, {"weight", s.weight}, {"penalty", number(lightingPenalty(s, m.value))}};
         if (!m.points.empty()) e["points"] = m.points;
         samplers.push_back(e);
     }

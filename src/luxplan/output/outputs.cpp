@@ -26,19 +26,6 @@ bool sameLayout(const Layout& a, const Layout& b) {
     return true;
 }
 
-// The optimizer's measurements of its best layout as SamplerResults (Scene::samplers order).
-std::vector<SamplerResult> fromBreakdown(const Scene& scene, const LightingBreakdown& breakdown) {
-    std::vector<SamplerResult> out(scene.samplers.size());
-    for (const SamplerMeasurement& m : breakdown.samplers) {
-        if (m.sampler < 0 || size_t(m.sampler) >= out.size()) continue;
-        SamplerResult& r = out[size_t(m.sampler)];
-        r.value = m.value;
-        r.penalty = m.penalty;
-        r.points = m.points;
-    }
-    return out;
-}
-
 }  // namespace
 
 RunOutputs writeRunOutputs(const std::filesystem::path& folder, const Scene& scene, const Layout& initialLayout,
@@ -75,7 +62,7 @@ RunOutputs writeRunOutputs(const std::filesystem::path& folder, const Scene& sce
 
     // The final layout: samplers, work plane, view, glTF.
     PlanData finalData, initialData;
-    if (fromResult) out.samplers = fromBreakdown(scene, result->bestEvaluation.samplers);
+    if (fromResult) out.samplers = result->bestEvaluation.samplers.samplers;
     else if (!scene.samplers.empty() && (options.plan || compare || options.html))
         out.samplers = measureSamplers(tracer, measure).samplers;
     if (!scene.samplers.empty()) finalData.samplers = out.samplers;

@@ -8,8 +8,9 @@
 #include <sstream>
 
 #include <luxplan/core/error.h>
-#include <luxplan/scene/layout.h>
+#include <luxplan/constraints/penalty.h>
 #include <luxplan/lightsamplers/sampler_type.h>
+#include <luxplan/scene/layout.h>
 
 namespace luxplan {
 namespace {
@@ -161,10 +162,12 @@ void samplerTable(std::ostringstream& out, const Scene& scene, const std::vector
     struct Row { double value = 0, penalty = 0; bool known = false; };
     std::vector<Row> rows(scene.samplers.size());
     if (!measured.empty()) {
-        for (size_t k = 0; k < rows.size() && k < measured.size(); ++k) rows[k] = {measured[k].value, measured[k].penalty, true};
+        for (size_t k = 0; k < rows.size() && k < measured.size(); ++k)
+            rows[k] = {measured[k].value, lightingPenalty(scene.samplers[k], measured[k].value), true};
     } else if (result && result->bestEvaluation.lightingEvaluated) {
-        for (const SamplerMeasurement& m : result->bestEvaluation.samplers.samplers)
-            if (m.sampler >= 0 && size_t(m.sampler) < rows.size()) rows[size_t(m.sampler)] = {m.value, m.penalty, true};
+        const auto& best = result->bestEvaluation.samplers.samplers;
+        for (size_t k = 0; k < rows.size() && k < best.size(); ++k)
+            rows[k] = {best[k].value, lightingPenalty(scene.samplers[k], best[k].value), true};
     }
     int met = 0, known = 0;
     for (size_t k = 0; k < rows.size(); ++k) {
