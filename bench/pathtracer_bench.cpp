@@ -4,6 +4,7 @@
 #include <benchmark/benchmark.h>
 #include <tbb/global_control.h>
 
+#include <luxplan/daylight/daylight.h>
 #include <luxplan/io/scene_loader.h>
 #include <luxplan/lightsamplers/light_samplers.h>
 

@@ -8,11 +8,12 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.h"
-#include <luxplan/lightsamplers/sampler_type.h>
 #include <luxplan/constraints/penalty.h>
+#include <luxplan/daylight/daylight.h>
 #include <luxplan/io/layout_io.h>
 #include <luxplan/io/scene_loader.h>
 #include <luxplan/lightsamplers/light_samplers.h>
+#include <luxplan/lightsamplers/sampler_type.h>
 #include <luxplan/optimizer/flatten.h>
 
 namespace luxplan::cli {

@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include "commands.h"
+#include <luxplan/daylight/daylight.h>
 #include <luxplan/io/layout_io.h>
 #include <luxplan/io/scene_loader.h>
 #include <luxplan/optimizer/flatten.h>

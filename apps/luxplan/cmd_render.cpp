@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "commands.h"
+#include <luxplan/daylight/daylight.h>
 #include <luxplan/io/layout_io.h>
 #include <luxplan/io/scene_loader.h>
 #include <luxplan/output/outputs.h>

@@ -4,9 +4,9 @@
 #include <iostream>
 
 #include "commands.h"
-#include <luxplan/lightsamplers/sampler_type.h>
 #include <luxplan/io/layout_io.h>
 #include <luxplan/io/scene_loader.h>
+#include <luxplan/lightsamplers/sampler_type.h>
 #include <luxplan/scene/layout.h>
 
 namespace luxplan::cli {

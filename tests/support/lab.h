@@ -5,6 +5,7 @@
 #include <memory>
 #include <optional>
 
+#include <luxplan/daylight/daylight.h>
 #include <luxplan/io/scene_loader.h>
 #include <luxplan/lightsamplers/light_samplers.h>
 #include "support/temp_files.h"

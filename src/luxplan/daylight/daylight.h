@@ -10,51 +10,11 @@
 #include <vector>
 
 #include <luxplan/core/error.h>
-#include <luxplan/core/names.h>
-#include <luxplan/daylight/datetime.h>
+#include <luxplan/daylight/daylight_params.h>
 #include <luxplan/daylight/environment.h>
 #include <luxplan/daylight/solar_position.h>
 
 namespace luxplan {
-
-// The scene's "site": where the building is and how it is turned.
-struct Site {
-    double latitudeDeg = 0;   // [-90, 90], north positive
-    double longitudeDeg = 0;  // [-180, 180], east positive
-    double northDeg = 0;      // clockwise angle from true north to scene +y
-};
-
-// "sky.model": preetham | cie_overcast | uniform | cie_general.
-enum class SkyModelType { Preetham, CieOvercast, Uniform, CieGeneral };
-// The scene file's names of the sky models ("preetham", "cie_overcast", ...).
-const EnumNames<SkyModelType>& skyModelNames();
-
-// "sun": {"altitude_deg", "azimuth_deg", "normal_illuminance_lx"?}: a fixed sun.
-struct SunOverride {
-    double altitudeDeg = 45;   // apparent altitude, [0, 90]
-    double azimuthDeg = 180;   // clockwise from true north, [0, 360]
-    std::optional<double> normalIlluminanceLx;  // unset: from the sky model (Preetham's sun)
-};
-
-// Mirror of the scene's "daylight" object; the scene loader fills it. Units in the names.
-struct DaylightParams {
-    SkyModelType model = SkyModelType::Preetham;         // sky.model
-    double turbidity = 3.0;                              // sky.turbidity, [1.7, 10] (Preetham; the
-                                                         // general skies use it for their sun)
-    std::optional<double> horizontalIlluminanceLx;       // sky.horizontal_illuminance_lx (> 0):
-                                                         // cie_overcast, cie_general (sky only)
-    std::optional<double> luminanceNits;                 // sky.luminance_nits (>= 0): uniform
-    int cieSkyType = 12;                                 // sky.type, [1, 15]: cie_general
-    // "sun": true/false; unset means true for preetham/cie_general and false otherwise.
-    std::optional<bool> sun;
-    std::optional<SunOverride> sunOverride;              // "sun": {...}; implies a sun
-    double groundReflectance = 0.2;                      // ground_reflectance, [0, 1]
-    std::optional<DateTime> from, to;                    // from, to (to unset: one instant)
-    double stepMinutes = 15;                             // step_minutes, > 0
-    double pressureMbar = 1010, temperatureC = 10;       // for refraction (standard atmosphere)
-
-    bool sunEnabled() const;
-};
 
 // How finely the sky is baked: an equirectangular width x height map (height even),
 // each pixel the average of supersample^2 directions. 512 x 256 gives 0.7 deg pixels.

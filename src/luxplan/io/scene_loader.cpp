@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include <luxplan/daylight/datetime.h>
+#include <luxplan/daylight/daylight.h>
 #include <luxplan/emitters/emitter_shape.h>
 #include <luxplan/json/fields.h>
 #include <luxplan/lightsamplers/sampler_type.h>

@@ -14,7 +14,7 @@
 
 #include <luxplan/core/math.h>
 #include <luxplan/core/names.h>
-#include <luxplan/daylight/daylight.h>
+#include <luxplan/daylight/daylight_params.h>
 #include <luxplan/materials/material.h>
 #include <luxplan/scene/mesh.h>
 #include <luxplan/scene/voxels.h>
