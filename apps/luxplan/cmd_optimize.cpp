@@ -122,6 +122,8 @@ bool runOptimize(const OptimizeArgs& args) {
         io::writeLayout(std::filesystem::path(args.out) / "layout_flat.json", scene, result.best);
         io::writeLayout(std::filesystem::path(args.out) / "layout.json", original,
                         hierarchicalLayoutOf(original, *flattened, result.best));
+    } else {
+        io::writeLayout(std::filesystem::path(args.out) / "layout.json", scene, result.best);
     }
     std::cout << "optimize: " << result.iterations << " iterations in " << duration(result.seconds) << " ("
               << stopReasonName(result.stop) << ")";

@@ -338,6 +338,7 @@ TEST_F(OptimizerTest, WritesLayoutReportAndTrace) {
     OptimizerResult r = Optimizer(scene, o, &light).run();
     auto out = dir.path() / "out";
     writeOptimizerOutputs(out, scene, r);
+    io::writeLayout(out / "layout.json", scene, r.best);
 
     auto report = nlohmann::json::parse(std::ifstream(out / "report.json"));
     EXPECT_EQ(report["scene"], "office");

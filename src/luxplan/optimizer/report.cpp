@@ -7,7 +7,6 @@
 #include <nlohmann/json.hpp>
 
 #include <luxplan/core/error.h>
-#include <luxplan/io/layout_io.h>
 #include <luxplan/constraints/penalty.h>
 #include <luxplan/lightsamplers/sampler_type.h>
 
@@ -169,7 +168,6 @@ void writeOptimizerOutputs(const std::filesystem::path& folder, const Scene& sce
     std::error_code ec;
     std::filesystem::create_directories(folder, ec);
     if (ec) throw IoError("cannot create " + folder.string() + ": " + ec.message());
-    io::writeLayout(folder / "layout.json", scene, result.best);
     writeReport(folder / "report.json", scene, result);
     writeTrace(folder / "trace.csv", result);
 }

@@ -17,7 +17,8 @@ void writeReport(const std::filesystem::path& file, const Scene& scene, const Op
 // layout has been found.
 void writeTrace(const std::filesystem::path& file, const OptimizerResult& result);
 
-// layout.json (io::writeLayout), report.json and trace.csv in `folder` (created).
+// report.json and trace.csv in `folder` (created); the layout itself is written by
+// the caller (io::writeLayout), in the scene file's hierarchy.
 void writeOptimizerOutputs(const std::filesystem::path& folder, const Scene& scene, const OptimizerResult& result);
 
 }  // namespace luxplan
