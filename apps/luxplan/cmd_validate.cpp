@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "commands.h"
+#include <luxplan/constraints/constraint_type.h>
 #include <luxplan/io/layout_io.h>
 #include <luxplan/io/scene_loader.h>
 #include <luxplan/lightsamplers/sampler_type.h>
@@ -76,12 +77,10 @@ void printSummary(const Scene& s, std::ostream& out) {
         out << "    " << sp.name << " (" << sp.type->name() << (sp.entity >= 0 ? ", on " + s.entities[sp.entity].path : "")
             << "): target [" << sp.targetMin << ", " << sp.targetMax << "] " << sp.type->unit() << "\n";
     out << "  constraints: " << s.constraints.size() << "\n";
-    for (const auto& c : s.constraints) {
-        out << "    " << constraintTypeNames().name(c.type);
-        if (c.type != ConstraintType::Overlap) out << " " << entityName(s, c.a) << " - " << entityName(s, c.b);
-        else out << " tolerance " << s.overlapTolerance;
-        out << "\n";
-    }
+    for (const auto& c : s.constraints)
+        out << "    " << c.kind->name() << " " << entityName(s, c.a) << " - " << entityName(s, c.b) << ": "
+            << c.kind->describe() << "\n";
+    out << "  overlap rule: tolerance " << s.overlap.tolerance << " of the smaller volume, weight " << s.overlap.weight << "\n";
     out << "  objective: lighting weight " << s.objective.lightingWeight << "; optimizer: " << s.optimizer.iterations
         << " iterations, seed " << s.optimizer.seed << ", " << s.optimizer.pathsPerPoint << " paths per point\n";
 }

@@ -60,7 +60,7 @@ protected:
         GeometryEvaluator g(scene);
         GeometryResult r = g.evaluate(worldTransforms(scene, layout), true);
         for (const auto& t : r.terms)
-            if (t.kind == TermKind::Overlap && t.target == target &&
+            if (t.overlap() && t.target == target &&
                 ((t.a == a && t.b == b) || (target == OverlapTarget::Entity && t.a == b && t.b == a)))
                 return t;
         return {};
@@ -156,7 +156,7 @@ TEST_F(Overlap, MembersOfAGroupButNotParentAndChild) {
     GeometryEvaluator g(scene);
     GeometryResult r = g.evaluate(worldTransforms(scene, layout), true);
     for (const auto& term : r.terms)
-        EXPECT_FALSE(term.kind == TermKind::Overlap && (term.a == id("set") || term.b == id("set")))
+        EXPECT_FALSE(term.overlap() && (term.a == id("set") || term.b == id("set")))
             << describe(scene, term);
 }
 

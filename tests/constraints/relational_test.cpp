@@ -116,19 +116,19 @@ TEST_F(Relational, DistanceBetweenCentres) {
 }
 
 TEST_F(Relational, DistanceElasticLimitFallbacks) {
-    ConstraintSpec c;
-    c.minDistance = 1, c.maxDistance = 3;
+    DistanceRange c;
+    c.min = 1, c.max = 3;
     EXPECT_NEAR(distanceElasticLimit(c), 0.1, 1e-12);
-    c.distanceTolerance = 0.3;
+    c.tolerance = 0.3;
     EXPECT_NEAR(distanceElasticLimit(c), 0.3, 1e-12);
-    c.distanceTolerance.reset();
-    c.minDistance = 2, c.maxDistance = kInf;  // at least 2 m apart: 5% of 2
+    c.tolerance.reset();
+    c.min = 2, c.max = kInf;  // at least 2 m apart: 5% of 2
     EXPECT_NEAR(distanceElasticLimit(c), 0.1, 1e-12);
-    c.minDistance = 0, c.maxDistance = 0.5;
+    c.min = 0, c.max = 0.5;
     EXPECT_NEAR(distanceElasticLimit(c), 0.025, 1e-12);
-    c.minDistance = 0.8, c.maxDistance = 0.8;  // a single value: 5% of it
+    c.min = 0.8, c.max = 0.8;  // a single value: 5% of it
     EXPECT_NEAR(distanceElasticLimit(c), 0.04, 1e-12);
-    c.minDistance = 0, c.maxDistance = 0;
+    c.min = 0, c.max = 0;
     EXPECT_EQ(distanceElasticLimit(c), kMinDistanceElasticLimit);
 }
 

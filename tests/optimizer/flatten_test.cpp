@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <luxplan/constraints/constraint_type.h>
 #include <luxplan/constraints/geometry_cost.h>
 #include <luxplan/io/layout_io.h>
 #include <luxplan/io/scene_loader.h>
@@ -135,10 +136,11 @@ TEST_F(FlattenTest, EveryObjectAtTheTopLevelWithWorldRegions) {
         EXPECT_EQ(c.b, flatEntity("workstation.desk"));
         bool isChair = c.a == flatEntity("workstation.chair");
         ASSERT_TRUE(isChair || c.a == flatEntity("workstation.desk.monitor"));
-        if (c.type == ConstraintType::Distance) {
+        if (auto range = c.kind->distanceRange()) {
             (isChair ? chairDistance : monitorDistance)++;
-            EXPECT_EQ(c.distanceTolerance, 0.25);
-            EXPECT_LT(c.minDistance, c.maxDistance);
+            EXPECT_STREQ(c.kind->name(), "distance");
+            EXPECT_EQ(range->tolerance, 0.25);
+            EXPECT_LT(range->min, range->max);
         } else {
             (isChair ? chairFocus : monitorTurn)++;
         }
@@ -150,9 +152,9 @@ TEST_F(FlattenTest, EveryObjectAtTheTopLevelWithWorldRegions) {
     EXPECT_EQ(flat.cohesionConstraints, 4);
     EXPECT_EQ(f.constraints.size(), scene.constraints.size() + 4);
     // The desk and its monitor were parent and child: they may still overlap.
-    EXPECT_NE(std::find(f.overlapExempt.begin(), f.overlapExempt.end(),
+    EXPECT_NE(std::find(f.overlap.exempt.begin(), f.overlap.exempt.end(),
                         std::make_pair(flatEntity("workstation.desk"), flatEntity("workstation.desk.monitor"))),
-              f.overlapExempt.end());
+              f.overlap.exempt.end());
 }
 
 TEST_F(FlattenTest, EveryHierarchicalLayoutCostsTheSameFlat) {

@@ -23,7 +23,7 @@ bool EntityInfo::related(int a, int b) const {
         if (e == b) return true;
     for (int e = b; e >= 0; e = scene_->entities[e].parent)
         if (e == a) return true;
-    for (auto [x, y] : scene_->overlapExempt)
+    for (auto [x, y] : scene_->overlap.exempt)
         if ((x == a && y == b) || (x == b && y == a)) return true;
     return false;
 }

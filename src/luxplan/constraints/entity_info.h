@@ -17,7 +17,7 @@ public:
     // The entity and all its descendants that have geometry.
     const std::vector<int>& geometrySubtree(int e) const { return subtree_[e]; }
     // Whether one of the two is an ancestor of the other (or they are the same), or
-    // the pair is in Scene::overlapExempt.
+    // the pair is in Scene::overlap.exempt.
     bool related(int a, int b) const;
     // Whether the entity or one of its ancestors is movable (so its world transform can change).
     bool canMove(int e) const { return canMove_[e]; }

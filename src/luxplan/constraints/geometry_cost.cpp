@@ -6,13 +6,7 @@
 
 namespace luxplan {
 
-GeometryEvaluator::GeometryEvaluator(const Scene& scene) : scene_(&scene), info_(scene), overlap_(scene, info_) {
-    for (size_t i = 0; i < scene.constraints.size(); ++i)
-        if (scene.constraints[i].type == ConstraintType::Overlap) {
-            overlapWeight_ = scene.constraints[i].weight;
-            overlapConstraint_ = int(i);
-        }
-}
+GeometryEvaluator::GeometryEvaluator(const Scene& scene) : scene_(&scene), info_(scene), overlap_(scene, info_) {}
 
 GeometryResult GeometryEvaluator::evaluate(const std::vector<Transform>& world, bool breakdown) {
     GeometryResult r;
@@ -23,14 +17,14 @@ GeometryResult GeometryEvaluator::evaluate(const std::vector<Transform>& world, 
     };
     for (size_t i = 0; i < scene_->constraints.size(); ++i) {
         const ConstraintSpec& c = scene_->constraints[i];
-        if (c.type == ConstraintType::Overlap || c.a < 0 || (c.b < 0 && c.b != kRoomEntity)) continue;
+        if (c.a < 0 || (c.b < 0 && c.b != kRoomEntity)) continue;
         PenaltyTerm t = evaluateRelational(*scene_, info_, world, int(i));
         sum += t.weight * t.penalty;
         if (!c.cohesion) weights += t.weight;
-        if (t.kind == TermKind::Conversation)
-            for (double p : t.parts) r.violation += std::max(0.0, p - 1.0);
-        else
+        if (t.parts.empty())
             r.violation += std::max(0.0, t.penalty - 1.0);
+        else
+            for (double p : t.parts) r.violation += std::max(0.0, p - 1.0);
         if (t.rejects) reject(t);
         if (breakdown) r.terms.push_back(t);
     }
@@ -39,21 +33,20 @@ GeometryResult GeometryEvaluator::evaluate(const std::vector<Transform>& world, 
     for (const auto& pair : overlap_.pairs()) {
         if (pair.volume <= 0) continue;
         PenaltyTerm t;
-        t.kind = TermKind::Overlap;  // Eq. 6: P(V_s n V_t, 0, 0, V_ref, 2)
-        t.constraint = overlapConstraint_;
+        // Eq. 6: P(V_s n V_t, 0, 0, V_ref, 2)
         t.a = pair.a, t.b = pair.b, t.target = pair.target;
         t.value = pair.volume;
         t.reference = pair.reference;
         t.penalty = penalty(pair.volume, 0.0, 0.0, pair.reference, kGeometricStiffness);
-        t.weight = overlapWeight_;
+        t.weight = scene_->overlap.weight;
         t.rejects = rejects(t.penalty);
         r.overlapPenalty += t.penalty;
         r.violation += std::max(0.0, t.penalty - 1.0);
         if (t.rejects) reject(t);
         if (breakdown) r.terms.push_back(t);
     }
-    sum += overlapWeight_ * r.overlapPenalty;
-    weights += overlapWeight_;
+    sum += scene_->overlap.weight * r.overlapPenalty;
+    weights += scene_->overlap.weight;
     r.cost = weights > 0 ? sum / weights : 0.0;
     return r;
 }

@@ -15,7 +15,7 @@ namespace luxplan {
 struct GeometryResult {
     // G = (sum_c w_c P_c + w_o sum_pairs P_pair) / (sum_c w_c + w_o): every relational
     // constraint c counts once with its weight, and the overlap rule counts once with
-    // weight w_o (the `overlap` constraint's weight, default 1) and penalty equal to
+    // weight w_o (Scene::overlap.weight, default 1) and penalty equal to
     // the sum of Eq. 6 over all candidate pairs. 0 when every weight is 0. Cohesion
     // constraints (flattenScene()) add to the sum but not to the normalizer.
     double cost = 0;
@@ -41,7 +41,6 @@ public:
     // Returns the overlap cache to the last committed state (after a rejected proposal).
     void revert() { overlap_.revert(); }
 
-    double overlapWeight() const { return overlapWeight_; }
     const EntityInfo& info() const { return info_; }
     const OverlapEvaluator& overlap() const { return overlap_; }
 
@@ -49,8 +48,6 @@ private:
     const Scene* scene_;
     EntityInfo info_;
     OverlapEvaluator overlap_;
-    double overlapWeight_ = 1;
-    int overlapConstraint_ = -1;
 };
 
 }  // namespace luxplan

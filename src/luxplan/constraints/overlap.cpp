@@ -110,7 +110,7 @@ OverlapEvaluator::OverlapEvaluator(const Scene& scene, const EntityInfo& info)
     std::vector<int> solid;
     for (size_t i = 0; i < scene.entities.size(); ++i)
         if (!scene.entities[i].voxels.empty()) solid.push_back(int(i));
-    const double tolerance = scene.overlapTolerance;
+    const double tolerance = scene.overlap.tolerance;
     auto add = [&](Pair p) {
         pairsOf_[p.a].push_back(int(pairs_.size()));
         if (p.target == OverlapTarget::Entity) pairsOf_[p.b].push_back(int(pairs_.size()));

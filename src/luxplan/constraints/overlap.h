@@ -24,7 +24,7 @@ double volumeOutside(const VoxelGrid& grid, const Transform& worldFromGrid, cons
 class OverlapEvaluator {
 public:
     // A candidate overlap: its reference V_ref (the paper's penetration tolerance:
-    // Scene::overlapTolerance times the smaller volume; for the walls, the entity's
+    // Scene::overlap.tolerance times the smaller volume; for the walls, the entity's
     // volume) and the current shared volume.
     struct Pair {
         OverlapTarget target = OverlapTarget::Entity;

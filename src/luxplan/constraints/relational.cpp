@@ -1,8 +1,11 @@
-// Alignment, distance, focus and conversation penalties (paper Eqs. 4, 5, 7, 8).
+// What the relational constraint types share: ends, angles, Eqs. 4 and 5 as
+// penalties, and the evaluation of a scene's constraint through its kind.
 #include <luxplan/constraints/relational.h>
 
 #include <cmath>
-#include <stdexcept>
+#include <cstdio>
+
+#include <nlohmann/json.hpp>
 
 #include <luxplan/constraints/penalty.h>
 
@@ -36,21 +39,70 @@ double facingAngle(const std::vector<Vec2>& fronts, const Vec3& from, const Vec3
     return best;
 }
 
+double facingAngle(const ConstraintEnd& from, const ConstraintEnd& to) {
+    return facingAngle(from.fronts, from.center, to.center);
+}
+
 std::vector<Vec2> worldFronts(const Scene& scene, const std::vector<Transform>& world, int e) {
     return frontsIn(scene.entities[e].fronts, world[e]);
 }
 
-namespace {
+double anglePenalty(double angleRad, double toleranceDeg) {
+    double theta = radians(toleranceDeg);
+    return penalty(angleRad, 0.0, theta, theta * kAlignmentRejectFraction, kGeometricStiffness);
+}
 
-// Where a constraint end is and which way it faces: the entity's centre and fronts,
-// or, for an end that stands for a former group, the group's.
-struct End {
-    Vec3 center;
-    std::vector<Vec2> fronts;
-};
+double distanceElasticLimit(const DistanceRange& range) {
+    if (range.tolerance) return *range.tolerance;
+    double width = range.max - range.min;
+    if (std::isfinite(width) && width > 0) return kDistanceRejectFraction * width;
+    double bound = std::isfinite(range.max) && range.max > 0 ? range.max : range.min;
+    if (std::isfinite(bound) && bound > 0) return kDistanceRejectFraction * bound;
+    return kMinDistanceElasticLimit;
+}
 
-End resolveEnd(const Scene& scene, const EntityInfo& info, const std::vector<Transform>& world, int e,
-               const std::optional<GroupEnd>& group) {
+double distancePenalty(double distance, const DistanceRange& range) {
+    return penalty(distance, range.min, range.max, distanceElasticLimit(range), kGeometricStiffness);
+}
+
+double readToleranceDeg(const json::Fields& f) {
+    return f.number("tolerance_deg", 10.0, json::Range{0, 180, true, false, "deg"});
+}
+
+DistanceRange readDistanceRange(const json::Fields& f) {
+    auto lo = f.number("min", json::Range::atLeast(0), true);
+    // "max": null leaves the range open above.
+    bool open = f.has("max") && f.get("max").is_null();
+    auto hi = open ? std::optional<double>(kInf) : f.number("max", json::Range::atLeast(0), true);
+    if (lo && hi && *hi < *lo)
+        f.error("max", "distance range is reversed: max " + json::formatNumber(*hi) + " < min " + json::formatNumber(*lo) + " m");
+    DistanceRange r;
+    r.min = lo.value_or(0), r.max = hi.value_or(kInf);
+    r.tolerance = f.number("tolerance", json::Range::positive("m"));
+    return r;
+}
+
+std::string AngleConstraint::describe() const { return describeTolerance(toleranceDeg_); }
+
+std::string AngleConstraint::describe(const PenaltyTerm& t) const {
+    return describeNumber(degrees(t.value)) + " deg, tolerance " + describeNumber(degrees(t.reference)) + " deg";
+}
+
+void AngleConstraint::report(const PenaltyTerm& t, nlohmann::ordered_json& j) const {
+    j["value"] = reportNumber(degrees(t.value));
+    j["unit"] = "deg";
+    j["tolerance"] = toleranceDeg_;
+}
+
+void AngleConstraint::hold(double angleRad, PenaltyTerm& t) const {
+    t.value = angleRad;
+    t.reference = radians(toleranceDeg_);
+    t.penalty = anglePenalty(t.value, toleranceDeg_);
+    t.rejects = rejects(t.penalty);
+}
+
+static ConstraintEnd resolveEnd(const Scene& scene, const EntityInfo& info, const std::vector<Transform>& world, int e,
+                                const std::optional<GroupEnd>& group) {
     if (!group) return {entityCenter(info, world, e), worldFronts(scene, world, e)};
     const Transform worldFromGroup = world[e] * group->entityFromGroup;
     const Transform groupFromWorld = worldFromGroup.inverse();
@@ -60,72 +112,35 @@ End resolveEnd(const Scene& scene, const EntityInfo& info, const std::vector<Tra
             frontsIn(group->fronts, worldFromGroup)};
 }
 
-double facingAngle(const End& s, const End& t) { return facingAngle(s.fronts, s.center, t.center); }
-
-}  // namespace
-
-double anglePenalty(double angleRad, double toleranceDeg) {
-    double theta = radians(toleranceDeg);
-    return penalty(angleRad, 0.0, theta, theta * kAlignmentRejectFraction, kGeometricStiffness);
-}
-
-double distanceElasticLimit(const ConstraintSpec& spec) {
-    if (spec.distanceTolerance) return *spec.distanceTolerance;
-    double width = spec.maxDistance - spec.minDistance;
-    if (std::isfinite(width) && width > 0) return kDistanceRejectFraction * width;
-    double bound = std::isfinite(spec.maxDistance) && spec.maxDistance > 0 ? spec.maxDistance : spec.minDistance;
-    if (std::isfinite(bound) && bound > 0) return kDistanceRejectFraction * bound;
-    return kMinDistanceElasticLimit;
-}
-
 PenaltyTerm evaluateRelational(const Scene& scene, const EntityInfo& info, const std::vector<Transform>& world,
                                int constraintIndex) {
     const ConstraintSpec& c = scene.constraints[constraintIndex];
     PenaltyTerm t;
+    t.kind = c.kind.get();
     t.constraint = constraintIndex;
     t.a = c.a, t.b = c.b;
     t.weight = c.weight;
-    const End a = resolveEnd(scene, info, world, c.a, c.groupA);
-    const End b = c.b == kRoomEntity ? End{Vec3(), {Vec2(1, 0), Vec2(0, 1)}} : resolveEnd(scene, info, world, c.b, c.groupB);
-    auto distancePenalty = [&](double d) {
-        return penalty(d, c.minDistance, c.maxDistance, distanceElasticLimit(c), kGeometricStiffness);
-    };
-    switch (c.type) {
-        case ConstraintType::Alignment:  // Eq. 4, best pair of fronts
-            t.kind = TermKind::Alignment;
-            t.value = axialAngle(a.fronts, b.fronts);
-            t.reference = radians(c.toleranceDeg);
-            t.penalty = anglePenalty(t.value, c.toleranceDeg);
-            t.rejects = rejects(t.penalty);
-            break;
-        case ConstraintType::Distance:  // Eq. 5
-            t.kind = TermKind::Distance;
-            t.value = length(a.center - b.center);
-            t.reference = c.maxDistance;
-            t.penalty = distancePenalty(t.value);
-            t.rejects = rejects(t.penalty);
-            break;
-        case ConstraintType::Focus:  // Eq. 7: G_A between a's front and the direction to b
-            t.kind = TermKind::Focus;
-            t.value = facingAngle(a, b);
-            t.reference = radians(c.toleranceDeg);
-            t.penalty = anglePenalty(t.value, c.toleranceDeg);
-            t.rejects = rejects(t.penalty);
-            break;
-        case ConstraintType::Conversation: {  // Eq. 8: mutual focus and a distance limiter
-            t.kind = TermKind::Conversation;
-            t.value = length(a.center - b.center);
-            t.reference = c.maxDistance;
-            t.parts = {anglePenalty(facingAngle(a, b), c.toleranceDeg), anglePenalty(facingAngle(b, a), c.toleranceDeg),
-                       distancePenalty(t.value)};
-            t.penalty = (t.parts[0] + t.parts[1] + t.parts[2]) / 3.0;
-            t.rejects = rejects(t.parts[0]) || rejects(t.parts[1]) || rejects(t.parts[2]);
-            break;
-        }
-        case ConstraintType::Overlap:
-            throw std::invalid_argument("evaluateRelational: overlap is not a relational constraint");
-    }
+    const ConstraintEnd a = resolveEnd(scene, info, world, c.a, c.groupA);
+    const ConstraintEnd b = c.b == kRoomEntity ? ConstraintEnd{Vec3(), {Vec2(1, 0), Vec2(0, 1)}}
+                                               : resolveEnd(scene, info, world, c.b, c.groupB);
+    c.kind->evaluate(a, b, t);
     return t;
 }
+
+std::string describeNumber(double v) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.4g", v);
+    return buffer;
+}
+
+nlohmann::ordered_json reportNumber(double v) {
+    return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json(nullptr);
+}
+
+std::string describeRange(const DistanceRange& range) {
+    return "range [" + describeNumber(range.min) + ", " + describeNumber(range.max) + "] m";
+}
+
+std::string describeTolerance(double toleranceDeg) { return "tolerance " + describeNumber(toleranceDeg) + " deg"; }
 
 }  // namespace luxplan

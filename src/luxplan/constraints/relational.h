@@ -1,9 +1,14 @@
-// The relational rules of Section 5.2 on world transforms: alignment (Eq. 4),
-// distance (Eq. 5), focus (Eq. 7) and conversation (Eq. 8).
+// What the relational constraint types (constraint_type.h) share: their ends in
+// world space, the angles and penalties of Section 5.2, and the evaluation of one
+// constraint of a scene on world transforms.
 #pragma once
 
+#include <string>
 #include <vector>
 
+#include <nlohmann/json_fwd.hpp>
+
+#include <luxplan/constraints/constraint_type.h>
 #include <luxplan/constraints/entity_info.h>
 #include <luxplan/constraints/terms.h>
 
@@ -18,6 +23,14 @@ inline constexpr double kDistanceRejectFraction = 0.05;
 // one centimetre, half the default voxel edge.
 inline constexpr double kMinDistanceElasticLimit = 0.01;
 
+// Where a constraint end is and which way it faces (world frame): an entity's centre
+// (entityCenter()) and fronts, a former group's (ConstraintSpec::groupA/B), or the
+// room's axes.
+struct ConstraintEnd {
+    Vec3 center;
+    std::vector<Vec2> fronts;  // unit vectors in the xy plane
+};
+
 // Front directions mapped by `frame` (entity frame -> another), as unit vectors in the
 // xy plane; fronts that map to vertical are dropped.
 std::vector<Vec2> frontsIn(const std::vector<Vec2>& fronts, const Transform& frame);
@@ -28,25 +41,55 @@ double axialAngle(const std::vector<Vec2>& a, const std::vector<Vec2>& b);
 // Eq. 7's measured value: the smallest angle ([0, pi]) between a front and the
 // horizontal direction from `from` to `to` (coincident: pi/2).
 double facingAngle(const std::vector<Vec2>& fronts, const Vec3& from, const Vec3& to);
+// The same from end `from`'s fronts towards end `to`'s centre.
+double facingAngle(const ConstraintEnd& from, const ConstraintEnd& to);
 
 // Fronts of an entity in world space, unit vectors in the xy plane.
 std::vector<Vec2> worldFronts(const Scene& scene, const std::vector<Transform>& world, int e);
-
-// evaluateRelational applies axialAngle (b = room: the room axes) and facingAngle to
-// the ends' fronts and centres, and Eq. 5 takes the distance between the centres: an
-// end's own (entityCenter()), or a former group's (ConstraintSpec::groupA/B).
 
 // Eq. 4 read in angle space: P(angle, 0, theta, theta/8, 2). Zero up to the
 // tolerance theta, quadratic beyond, 1 at theta + theta/8.
 double anglePenalty(double angleRad, double toleranceDeg);
 
-// l_rej of a distance or conversation constraint: its `tolerance`, else 5% of
-// max - min; with an infinite (or empty) range, 5% of the finite non-zero bound;
-// else kMinDistanceElasticLimit.
-double distanceElasticLimit(const ConstraintSpec& spec);
+// l_rej of a distance range: its `tolerance`, else 5% of max - min; with an infinite
+// (or empty) range, 5% of the finite non-zero bound; else kMinDistanceElasticLimit.
+double distanceElasticLimit(const DistanceRange& range);
+// Eq. 5: P(d, min, max, l_rej, 2).
+double distancePenalty(double distance, const DistanceRange& range);
 
-// Evaluates one alignment, distance, focus or conversation constraint.
+// The keys the types share, read from `f`: "tolerance_deg" (alignment, focus,
+// conversation; default 10) and "min", "max" (null: open above), "tolerance"
+// (distance, conversation).
+double readToleranceDeg(const json::Fields& f);
+DistanceRange readDistanceRange(const json::Fields& f);
+
+// What alignment (Eq. 4) and focus (Eq. 7) share: one angle held to a tolerance.
+class AngleConstraint : public ConstraintKind {
+public:
+    explicit AngleConstraint(double toleranceDeg) : toleranceDeg_(toleranceDeg) {}
+    bool measuresAngle() const override { return true; }
+    std::optional<double> toleranceDeg() const override { return toleranceDeg_; }
+    std::string describe() const override;
+    std::string describe(const PenaltyTerm& t) const override;
+    void report(const PenaltyTerm& t, nlohmann::ordered_json& j) const override;
+
+protected:
+    // The term of a measured angle: P = anglePenalty(angle, tolerance).
+    void hold(double angleRad, PenaltyTerm& t) const;
+    double toleranceDeg_;
+};
+
+// Evaluates constraint `constraintIndex` of the scene: resolves its ends, then its
+// kind's Eq.
 PenaltyTerm evaluateRelational(const Scene& scene, const EntityInfo& info, const std::vector<Transform>& world,
                                int constraintIndex);
+
+// How the kinds write numbers: "%.4g" in descriptions; in report.json infinite or
+// undefined as null.
+std::string describeNumber(double v);
+nlohmann::ordered_json reportNumber(double v);
+// "range [0.5, 3] m" and "tolerance 10 deg", as the kinds' describe() print them.
+std::string describeRange(const DistanceRange& range);
+std::string describeTolerance(double toleranceDeg);
 
 }  // namespace luxplan

@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <luxplan/constraints/constraint_type.h>
 #include <luxplan/daylight/datetime.h>
 #include <luxplan/daylight/daylight.h>
 #include <luxplan/emitters/emitter_shape.h>
@@ -824,12 +825,25 @@ private:
         return names;
     }
 
+    // "an alignment constraint": the types whose "b" may be the room.
+    static const std::string& roomConstraints() {
+        static const std::string names = [] {
+            std::vector<std::string> kinds;
+            DiagnosticSink discard;
+            const Json empty = Json::object();
+            for (const ConstraintKindEntry& k : constraintKinds())
+                if (k.read(Fields(discard, empty, ""))->acceptsRoom()) kinds.push_back(k.name);
+            return article(listNames(kinds) + " constraint");
+        }();
+        return names;
+    }
+
     int entityRef(const Fields& f, const char* key, bool allowRoom) {
         auto name = f.string(key, true);
         if (!name) return -1;
         if (*name == "room") {
             if (allowRoom) return kRoomEntity;
-            f.error(key, "\"room\" is only valid as \"b\" of an alignment constraint");
+            f.error(key, "\"room\" is only valid as \"b\" of " + roomConstraints());
             return -1;
         }
         int e = scene_.findEntity(*name);
@@ -848,55 +862,49 @@ private:
         return e;
     }
 
-    // The keys of one constraint type (all but "type" and "weight"). The overlap rule's
-    // tolerance is the scene's.
-    void readConstraintType(const Fields& f, ConstraintType type, ConstraintSpec& c, double& overlapTolerance) {
-        auto angle = [&] { c.toleranceDeg = f.number("tolerance_deg", 10.0, Range{0, 180, true, false, "deg"}); };
-        auto distances = [&] {
-            auto lo = f.number("min", kNonNegative, true);
-            // "max": null leaves the range open above.
-            bool open = f.has("max") && f.get("max").is_null();
-            auto hi = open ? std::optional<double>(kInf) : f.number("max", kNonNegative, true);
-            if (lo && hi && *hi < *lo)
-                f.error("max", "distance range is reversed: max " + formatNumber(*hi) + " < min " + formatNumber(*lo) + " m");
-            c.minDistance = lo.value_or(0), c.maxDistance = hi.value_or(kInf);
-            c.distanceTolerance = f.number("tolerance", Range::positive("m"));
-        };
-        switch (type) {
-            case ConstraintType::Overlap: overlapTolerance = f.number("tolerance", 0.05, Range{0, 1, true, false}); return;
-            case ConstraintType::Alignment:
-            case ConstraintType::Focus: angle(); break;
-            case ConstraintType::Distance: distances(); break;
-            case ConstraintType::Conversation: angle(), distances(); break;
-        }
+    // A relational constraint's keys besides "type" and "weight": its type's own,
+    // then the two ends every type has.
+    void readRelational(const Fields& f, const ConstraintKindEntry& entry, ConstraintSpec& c) {
+        c.kind = entry.read(f);
         c.a = entityRef(f, "a", false);
-        c.b = entityRef(f, "b", type == ConstraintType::Alignment);
+        c.b = entityRef(f, "b", c.kind->acceptsRoom());
         if (c.a >= 0 && c.a == c.b) f.error("b", "a constraint needs two different entities");
     }
+
+    // The overlap rule's key: a rule of the scene, set by a "constraints" entry.
+    static double readOverlapTolerance(const Fields& f) { return f.number("tolerance", 0.05, Range{0, 1, true, false}); }
 
     void readConstraint(const Json& j, const std::string& path) {
         Fields f(sink_, j, path);
         if (!f.valid()) return;
-        static const std::vector<std::string> family =
-            familyKeys(constraintTypeNames().entries, [this](const Fields& k, const auto& e) {
-                ConstraintSpec c;
-                double tolerance;
-                readConstraintType(k, e.first, c, tolerance);
-            });
+        static const std::vector<std::string> family = [this] {
+            std::vector<std::vector<std::string>> lists;
+            for (const ConstraintKindEntry& k : constraintKinds())
+                lists.push_back(json::probeKeys([&](const Fields& p) {
+                    ConstraintSpec c;
+                    readRelational(p, k, c);
+                }));
+            lists.push_back(json::probeKeys(readOverlapTolerance));
+            return json::unionKeys(lists);
+        }();
+        auto type = f.string("type", true);
+        double weight = f.number("weight", 1.0, kNonNegative);
+        const bool overlap = type && *type == kOverlapRuleName;
+        const ConstraintKindEntry* entry = type ? findConstraintKind(*type) : nullptr;
+        if (overlap) {
+            scene_.overlap.tolerance = readOverlapTolerance(f);
+            scene_.overlap.weight = weight;
+            scene_.overlap.jsonPath = path;
+        } else if (type && !entry) {
+            f.error("type", "unknown constraint type \"" + *type + "\"" + didYouMean(*type, constraintTypeNames()) + " (" +
+                                listNames(constraintTypeNames()) + ")");
+        }
         ConstraintSpec c;
         c.jsonPath = path;
-        auto type = f.string("type", true);
-        c.weight = f.number("weight", 1.0, kNonNegative);
-        auto parsed = type ? constraintTypeNames().parse(*type) : std::nullopt;
-        if (type && !parsed) f.error("type", constraintTypeNames().unknown("constraint type", *type));
-        if (!parsed) {
-            f.finish("", family);
-            return;
-        }
-        c.type = *parsed;
-        readConstraintType(f, c.type, c, scene_.overlapTolerance);
-        f.finish(article(*type + " constraint"), family);
-        scene_.constraints.push_back(c);
+        c.weight = weight;
+        if (entry) readRelational(f, *entry, c);
+        f.finish(entry || overlap ? article(*type + " constraint") : "", family);
+        if (entry) scene_.constraints.push_back(c);
     }
 
     void checkUniqueNames() {

@@ -239,7 +239,7 @@ FlatScene flattenScene(const Scene& scene) {
     for (size_t k = 0; k < n; ++k) {
         if (flat.flatOf[k] < 0) continue;
         for (int p = entities[k].parent; p >= 0; p = entities[size_t(p)].parent)
-            if (flat.flatOf[size_t(p)] >= 0) out.overlapExempt.emplace_back(flat.flatOf[size_t(p)], flat.flatOf[k]);
+            if (flat.flatOf[size_t(p)] >= 0) out.overlap.exempt.emplace_back(flat.flatOf[size_t(p)], flat.flatOf[k]);
     }
 
     // Cohesion: every member of a group towards the group's anchor.
@@ -269,21 +269,12 @@ FlatScene flattenScene(const Scene& scene) {
         c.jsonPath = member.jsonPath + " (cohesion with " + fb.path + ")";
         c.a = a, c.b = b;
         c.cohesion = true;
-        c.type = ConstraintType::Distance;
-        c.minDistance = std::max(0.0, dMin - kDistanceSlack);
-        c.maxDistance = dMax + kDistanceSlack;
-        c.distanceTolerance = kDistanceElasticLimit;
+        c.kind = distanceConstraint({std::max(0.0, dMin - kDistanceSlack), dMax + kDistanceSlack, kDistanceElasticLimit});
         out.constraints.push_back(c);
         ++flat.cohesionConstraints;
-        if (degrees(focusMax) <= kFocusAtMostDeg) {
-            c.type = ConstraintType::Focus;
-            c.toleranceDeg = degrees(focusMax) + kAngleSlackDeg;
-        } else if (degrees(alignMax) <= kAlignmentAtMostDeg) {
-            c.type = ConstraintType::Alignment;
-            c.toleranceDeg = degrees(alignMax) + kAngleSlackDeg;
-        } else {
-            continue;  // turns freely relative to the anchor: nothing to keep
-        }
+        if (degrees(focusMax) <= kFocusAtMostDeg) c.kind = focusConstraint(degrees(focusMax) + kAngleSlackDeg);
+        else if (degrees(alignMax) <= kAlignmentAtMostDeg) c.kind = alignmentConstraint(degrees(alignMax) + kAngleSlackDeg);
+        else continue;  // turns freely relative to the anchor: nothing to keep
         out.constraints.push_back(c);
         ++flat.cohesionConstraints;
     }

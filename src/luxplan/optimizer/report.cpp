@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <luxplan/constraints/constraint_type.h>
 #include <luxplan/core/error.h>
 #include <luxplan/constraints/penalty.h>
 #include <luxplan/lightsamplers/sampler_type.h>
@@ -34,32 +35,23 @@ Json moveJson(const MoveStats& s) {
 
 Json termJson(const Scene& scene, const PenaltyTerm& t) {
     Json j;
-    j["type"] = termName(t.kind);
-    if (t.constraint >= 0) j["json_path"] = scene.constraints[t.constraint].jsonPath;
-    j["a"] = scene.entities[t.a].path;
-    bool angle = t.kind == TermKind::Alignment || t.kind == TermKind::Focus;
-    if (t.kind == TermKind::Overlap) {
+    j["type"] = termName(t);
+    if (t.overlap()) {
+        if (!scene.overlap.jsonPath.empty()) j["json_path"] = scene.overlap.jsonPath;
+        j["a"] = scene.entities[t.a].path;
         j["target"] = targetName(t.target);
         if (t.target == OverlapTarget::Entity) j["b"] = scene.entities[t.b].path;
         else if (t.target == OverlapTarget::Static) j["b"] = scene.geometry[t.b].name;
         else j["b"] = "walls";
+        j["value"] = number(t.value);
+        j["unit"] = "m3";
+        j["reference"] = t.reference;
     } else {
+        j["json_path"] = scene.constraints[t.constraint].jsonPath;
+        j["a"] = scene.entities[t.a].path;
         j["b"] = t.b == kRoomEntity ? std::string("room") : scene.entities[t.b].path;
+        t.kind->report(t, j);
     }
-    j["value"] = number(angle ? degrees(t.value) : t.value);
-    j["unit"] = angle ? "deg" : (t.kind == TermKind::Overlap ? "m3" : "m");
-    if (angle) j["tolerance"] = t.constraint >= 0 ? scene.constraints[t.constraint].toleranceDeg : degrees(t.reference);
-    if (t.kind == TermKind::Distance || t.kind == TermKind::Conversation) {
-        const ConstraintSpec& c = scene.constraints[t.constraint];
-        j["range"] = {number(c.minDistance), number(c.maxDistance)};
-    }
-    if (t.kind == TermKind::Conversation) {
-        j["tolerance_deg"] = scene.constraints[t.constraint].toleranceDeg;
-        j["focus_ab"] = t.parts[0];
-        j["focus_ba"] = t.parts[1];
-        j["distance_penalty"] = t.parts[2];
-    }
-    if (t.kind == TermKind::Overlap) j["reference"] = t.reference;
     j["penalty"] = number(t.penalty);
     j["weight"] = t.weight;
     j["rejects"] = t.rejects;
@@ -91,12 +83,9 @@ std::string reportJson(const Scene& scene, const OptimizerResult& r) {
     Json constraints = Json::array();
     Json pairs = Json::array();
     for (const PenaltyTerm& t : r.bestGeometry.terms)
-        (t.kind == TermKind::Overlap ? pairs : constraints).push_back(termJson(scene, t));
+        (t.overlap() ? pairs : constraints).push_back(termJson(scene, t));
     j["constraints"] = constraints;
-    double overlapWeight = 1;
-    for (const ConstraintSpec& c : scene.constraints)
-        if (c.type == ConstraintType::Overlap) overlapWeight = c.weight;
-    j["overlap"] = {{"tolerance", scene.overlapTolerance}, {"weight", overlapWeight},
+    j["overlap"] = {{"tolerance", scene.overlap.tolerance}, {"weight", scene.overlap.weight},
                     {"penalty", r.bestGeometry.overlapPenalty}, {"pairs", pairs}};
 
     Json samplers = Json::array();

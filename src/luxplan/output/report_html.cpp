@@ -7,6 +7,7 @@
 #include <fstream>
 #include <sstream>
 
+#include <luxplan/constraints/constraint_type.h>
 #include <luxplan/core/error.h>
 #include <luxplan/constraints/penalty.h>
 #include <luxplan/lightsamplers/sampler_type.h>
@@ -203,10 +204,9 @@ void constraintTables(std::ostringstream& out, const Scene& scene, const Geometr
     std::ostringstream rel, pairs;
     int relCount = 0, pairCount = 0;
     for (const PenaltyTerm& t : g.terms) {
-        bool angle = t.kind == TermKind::Alignment || t.kind == TermKind::Focus;
         const char* cls = t.rejects ? "missed" : (t.penalty > 0 ? "warn" : "met");
         const char* status = t.rejects ? "rejects" : (t.penalty > 0 ? "penalized" : "met");
-        if (t.kind == TermKind::Overlap) {
+        if (t.overlap()) {
             ++pairCount;
             pairs << "<tr>" << cell(escapeHtml(entityName(scene, t.a))) << cell(escapeHtml(overlapTarget(scene, t)))
                   << "<td class=\"num\">" << number(t.value, 4) << "</td><td class=\"num\">" << number(t.reference, 4)
@@ -214,15 +214,13 @@ void constraintTables(std::ostringstream& out, const Scene& scene, const Geometr
             continue;
         }
         ++relCount;
+        // An angle is held to its tolerance, a distance to its range.
+        const bool angle = t.kind->measuresAngle();
         std::string value = angle ? number(degrees(t.value), 1) + " deg" : number(t.value, 2) + " m";
         std::string bound;
-        if (t.constraint >= 0 && size_t(t.constraint) < scene.constraints.size()) {
-            const ConstraintSpec& c = scene.constraints[size_t(t.constraint)];
-            if (angle) bound = "&le; " + number(c.toleranceDeg, 1) + " deg";
-            else if (t.kind == TermKind::Distance || t.kind == TermKind::Conversation)
-                bound = range(c.minDistance, c.maxDistance, 2) + " m";
-        }
-        rel << "<tr>" << cell(escapeHtml(termName(t.kind))) << cell(escapeHtml(entityName(scene, t.a)))
+        if (auto tolerance = t.kind->toleranceDeg(); angle && tolerance) bound = "&le; " + number(*tolerance, 1) + " deg";
+        else if (auto r = t.kind->distanceRange(); !angle && r) bound = range(r->min, r->max, 2) + " m";
+        rel << "<tr>" << cell(escapeHtml(termName(t))) << cell(escapeHtml(entityName(scene, t.a)))
             << cell(escapeHtml(entityName(scene, t.b))) << "<td class=\"num\">" << value << "</td>" << cell(bound)
             << "<td class=\"num\">" << number(t.weight, 2) << "</td><td class=\"num\">" << number(t.penalty, 3) << "</td>"
             << cell(status, cls) << "</tr>\n";
@@ -236,7 +234,7 @@ void constraintTables(std::ostringstream& out, const Scene& scene, const Geometr
     else
         out << "<p class=\"muted\">No relational constraints.</p>\n";
     out << "<h2>Overlaps</h2>\n<p>Overlap penalty " << number(g.overlapPenalty, 4) << " (tolerance "
-        << number(100 * scene.overlapTolerance, 1) << "% of the smaller volume).</p>\n";
+        << number(100 * scene.overlap.tolerance, 1) << "% of the smaller volume).</p>\n";
     if (pairCount)
         out << "<table>\n<tr><th>a</th><th>b</th><th>shared volume (m&sup3;)</th><th>reference (m&sup3;)</th>"
                "<th>penalty</th><th>status</th></tr>\n"

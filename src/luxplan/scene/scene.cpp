@@ -2,15 +2,6 @@
 
 namespace luxplan {
 
-const EnumNames<ConstraintType>& constraintTypeNames() {
-    static const EnumNames<ConstraintType> names{{{ConstraintType::Alignment, "alignment"},
-                                                  {ConstraintType::Distance, "distance"},
-                                                  {ConstraintType::Focus, "focus"},
-                                                  {ConstraintType::Conversation, "conversation"},
-                                                  {ConstraintType::Overlap, "overlap"}}};
-    return names;
-}
-
 const EnumNames<Wall>& wallNames() {
     static const EnumNames<Wall> names{
         {{Wall::North, "north"}, {Wall::South, "south"}, {Wall::East, "east"}, {Wall::West, "west"}, {Wall::Ceiling, "ceiling"}}};

@@ -113,7 +113,7 @@ struct Entity {
     bool hasGeometry() const { return !mesh.empty(); }
 };
 
-enum class ConstraintType { Alignment, Distance, Focus, Conversation, Overlap };
+class ConstraintKind;  // constraints/constraint_type.h
 
 inline constexpr int kRoomEntity = -2;  // constraint target "room"
 
@@ -127,18 +127,27 @@ struct GroupEnd {
     std::vector<Vec2> fronts;   // the group's fronts, group frame
 };
 
+// A relational constraint (Section 5.2) between two entities.
 struct ConstraintSpec {
     std::string jsonPath;
-    ConstraintType type = ConstraintType::Distance;
-    int a = -1, b = -1;           // entity indices (b may be kRoomEntity for alignment)
-    double toleranceDeg = 10;     // alignment, focus, conversation
-    double minDistance = 0, maxDistance = kInf;  // distance, conversation (metres)
-    std::optional<double> distanceTolerance;     // elastic limit (m); default 5% of the range
+    std::shared_ptr<const ConstraintKind> kind;  // alignment, distance, focus, conversation (constraints/)
+    int a = -1, b = -1;  // entity indices (b may be kRoomEntity where the kind accepts the room)
     double weight = 1;
     // Written by flattenScene() in place of a group's structure: counts in G's sum
     // but not in its normalizer, so a layout the hierarchy allows costs the same flat.
     bool cohesion = false;
     std::optional<GroupEnd> groupA, groupB;  // flattenScene(): a or b was a group
+};
+
+// The overlap rule (Eq. 6), which holds between every two solids of the scene. The
+// scene file sets it with a "constraints" entry of type "overlap".
+struct OverlapRule {
+    double tolerance = 0.05;  // fraction of the smaller volume (the paper's V_ref)
+    double weight = 1;        // w_o in G(x)
+    std::string jsonPath;     // the entry that set it; empty: the defaults
+    // Entity pairs the rule skips besides an ancestor and its descendants: in a
+    // flattened scene, the pairs that were so related before (flattenScene()).
+    std::vector<std::pair<int, int>> exempt;
 };
 
 // Eq. 1: C = w L + (1 - w) G, w the lighting weight.
@@ -160,9 +169,8 @@ struct OptimizerSettings {
     bool startFromScene = false;     // start from the scene's placement instead of uniform draws
 };
 
-// The scene file's names for these enums ("alignment", "south", "glossy"): one table
-// each parses, prints and lists them (core/names.h).
-const EnumNames<ConstraintType>& constraintTypeNames();
+// The scene file's names for these enums ("south", "glossy"): one table each
+// parses, prints and lists them (core/names.h).
 const EnumNames<Wall>& wallNames();
 const EnumNames<MaterialType>& materialTypeNames();
 
@@ -178,10 +186,7 @@ struct Scene {
     std::vector<Entity> entities;   // depth first: a parent before its children
     std::vector<LightSamplerSpec> samplers;
     std::vector<ConstraintSpec> constraints;
-    double overlapTolerance = 0.05;  // fraction of the smaller volume (the paper's V_ref)
-    // Entity pairs the overlap rule skips besides an ancestor and its descendants:
-    // in a flattened scene, the pairs that were so related before (flattenScene()).
-    std::vector<std::pair<int, int>> overlapExempt;
+    OverlapRule overlap;
     Objective objective;
     OptimizerSettings optimizer;
 
