@@ -16,6 +16,12 @@ inline constexpr double kInf = std::numeric_limits<double>::infinity();
 
 constexpr double radians(double deg) { return deg * (kPi / 180.0); }
 constexpr double degrees(double rad) { return rad * (180.0 / kPi); }
+// An angle in degrees brought into [0, 360).
+inline double wrapDegrees(double deg) {
+    double d = std::fmod(deg, 360.0);
+    if (d < 0) d += 360.0;
+    return d >= 360.0 ? 0.0 : d;
+}
 
 struct Vec2 {
     double x = 0, y = 0;

@@ -193,10 +193,6 @@ double earthSeries(std::initializer_list<std::span<const PeriodicTerm>> series, 
     return result / 1e8;
 }
 
-double wrapDegrees(double deg) {
-    double r = std::fmod(deg, 360.0);
-    return r < 0 ? r + 360.0 : r;
-}
 
 double sinDeg(double d) { return std::sin(radians(d)); }
 double cosDeg(double d) { return std::cos(radians(d)); }

@@ -78,12 +78,12 @@ Layout readLayout(const std::filesystem::path& file, const Scene& scene) {
                 auto region = f.integer("region", Range::closed(0, double(e.regions.size()) - 1));
                 if (region) {
                     p.region = *region;
-                    if (!regionContains(e.regions[*region], {p.position.x, p.position.y}, p.rotationDeg, 1e-6))
+                    if (!regionContains(e.regions[*region], {p.position.x, p.position.y}, p.rotationDeg, kRegionTolerance))
                         f.error("region", "position (" + formatNumber(p.position.x) + ", " + formatNumber(p.position.y) +
                                               ") with rotation " + formatNumber(p.rotationDeg) + " lies outside region " +
                                               std::to_string(*region));
                 } else if (!f.has("region")) {
-                    p.region = findRegion(e, {p.position.x, p.position.y}, p.rotationDeg);
+                    p.region = findRegion(e.regions, {p.position.x, p.position.y}, p.rotationDeg);
                 }
                 f.finish();
             }

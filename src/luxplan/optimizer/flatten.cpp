@@ -21,12 +21,6 @@ constexpr double kAngleSlackDeg = 10;
 constexpr double kFocusAtMostDeg = 60;      // facing the anchor: a focus rule
 constexpr double kAlignmentAtMostDeg = 35;  // else parallel fronts: an alignment rule
 
-double wrapDegrees(double deg) {
-    double d = std::fmod(deg, 360.0);
-    if (d < 0) d += 360.0;
-    return d >= 360.0 ? 0.0 : d;
-}
-
 double rotationDegrees(const Transform& t) { return wrapDegrees(degrees(std::atan2(t.m[3], t.m[0]))); }
 
 Region pointRegion(Vec2 xy, double rotationDeg) {
@@ -34,59 +28,6 @@ Region pointRegion(Vec2 xy, double rotationDeg) {
     r.lo = r.hi = xy;
     r.rotationsDeg = {rotationDeg};
     return r;
-}
-
-std::pair<double, double> rotationBounds(const Region& r) {
-    if (r.continuousRotation) return {r.rotationMinDeg, r.rotationMaxDeg};
-    auto [lo, hi] = std::minmax_element(r.rotationsDeg.begin(), r.rotationsDeg.end());
-    return {*lo, *hi};
-}
-
-// A rotation interval written with its start in [0, 360), at most a full turn.
-void setInterval(Region& r, double from, double to) {
-    r.continuousRotation = true;
-    r.rotationsDeg.clear();
-    if (to - from >= 360) {
-        r.rotationMinDeg = 0, r.rotationMaxDeg = 360;
-        return;
-    }
-    double shift = from - wrapDegrees(from);
-    r.rotationMinDeg = from - shift, r.rotationMaxDeg = to - shift;
-}
-
-// Where a child can be in the world when its parent is anywhere in `parent` and the
-// child anywhere in `child` (its parent's frame). A discrete parent rotation gives
-// one region per rotation (exact for quarter turns, the bounding box otherwise); an
-// interval gives one region bounded by the child's largest offset in any direction.
-std::vector<Region> compose(const Region& parent, const Region& child) {
-    std::vector<Region> out;
-    const Vec2 corners[4] = {child.lo, {child.hi.x, child.lo.y}, child.hi, {child.lo.x, child.hi.y}};
-    auto [childLo, childHi] = rotationBounds(child);
-    if (!parent.continuousRotation) {
-        for (double theta : distinctRotations(parent)) {
-            Transform rot = Transform::rotateZ(radians(theta));
-            Region r;
-            Vec2 lo(kInf, kInf), hi(-kInf, -kInf);
-            for (Vec2 c : corners) {
-                Vec3 w = rot.applyVector({c.x, c.y, 0});
-                lo = Vec2(std::min(lo.x, w.x), std::min(lo.y, w.y));
-                hi = Vec2(std::max(hi.x, w.x), std::max(hi.y, w.y));
-            }
-            r.lo = parent.lo + lo, r.hi = parent.hi + hi;
-            if (child.continuousRotation) setInterval(r, theta + childLo, theta + childHi);
-            else
-                for (double a : child.rotationsDeg) r.rotationsDeg.push_back(wrapDegrees(theta + a));
-            out.push_back(r);
-        }
-        return out;
-    }
-    double reach = 0;
-    for (Vec2 c : corners) reach = std::max(reach, length(c));
-    Region r;
-    r.lo = parent.lo - Vec2(reach, reach), r.hi = parent.hi + Vec2(reach, reach);
-    setInterval(r, parent.rotationMinDeg + childLo, parent.rotationMaxDeg + childHi);
-    out.push_back(r);
-    return out;
 }
 
 // Placements of an entity in its parent's frame that stand for its regions: a 5 x 5
@@ -119,18 +60,13 @@ std::vector<Transform> samplePlacements(const Entity& e) {
 Vec3 ownCenter(const Entity& e) { return e.hasGeometry() ? e.mesh.bounds().center() : Vec3(); }
 
 
-int firstRegionHolding(const Entity& e, Vec2 xy, double rotationDeg) {
-    for (size_t i = 0; i < e.regions.size(); ++i)
-        if (regionContains(e.regions[i], xy, rotationDeg, 1e-6)) return int(i);
-    return -1;
-}
 
 Placement placementOf(const Entity& e, const Transform& parentFromEntity) {
     Placement p;
     p.position = parentFromEntity.t;
     p.rotationDeg = rotationDegrees(parentFromEntity);
     if (!e.movable()) return p;
-    p.region = firstRegionHolding(e, {p.position.x, p.position.y}, p.rotationDeg);
+    p.region = findRegion(e.regions, {p.position.x, p.position.y}, p.rotationDeg);
     if (p.region >= 0) p.rotationDeg = normalizeRotation(e.regions[size_t(p.region)], p.rotationDeg);
     return p;
 }
@@ -183,7 +119,7 @@ FlatScene flattenScene(const Scene& scene) {
         }
         for (const Region& p : worldRegions[size_t(e.parent)])
             for (const Region& c : local)
-                for (Region& r : compose(p, c)) worldRegions[k].push_back(std::move(r));
+                for (Region& r : composeRegions(p, c)) worldRegions[k].push_back(std::move(r));
     }
 
     Scene& out = flat.scene;

@@ -60,9 +60,9 @@ bool rotateMove(const Entity& entity, Placement& p, double sigmaFraction, Rng& r
 
 // The region for a placement moved to `xy`: its own when that still holds it.
 static int regionFor(const Entity& e, const Placement& p, Vec2 xy) {
-    if (p.region >= 0 && regionContains(e.regions[size_t(p.region)], xy, p.rotationDeg, 0.0)) return p.region;
+    if (p.region >= 0 && regionContains(e.regions[size_t(p.region)], xy, p.rotationDeg)) return p.region;
     for (size_t i = 0; i < e.regions.size(); ++i)
-        if (regionContains(e.regions[i], xy, p.rotationDeg, 0.0)) return int(i);
+        if (regionContains(e.regions[i], xy, p.rotationDeg)) return int(i);
     return -1;
 }
 

@@ -22,11 +22,6 @@ struct Layout {
 // The placement the scene file gives (region: the first that holds it, else -1).
 Layout initialLayout(const Scene& scene);
 
-// Whether (x, y, rotation) lies in the region (rotation compared modulo 360).
-bool regionContains(const Region& region, Vec2 xy, double rotationDeg, double eps = 1e-9);
-// The first region of the entity holding the placement, or -1.
-int findRegion(const Entity& entity, Vec2 xy, double rotationDeg);
-
 // parentFromEntity for one entity: rotate about z by its rotation, then translate.
 Transform localTransform(const Placement& placement);
 

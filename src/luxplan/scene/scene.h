@@ -17,6 +17,7 @@
 #include <luxplan/daylight/daylight_params.h>
 #include <luxplan/materials/material.h>
 #include <luxplan/scene/mesh.h>
+#include <luxplan/scene/region.h>
 #include <luxplan/scene/voxels.h>
 
 namespace luxplan {
@@ -74,14 +75,6 @@ struct LightSamplerSpec {
     double tolerance = 1;  // the paper's L_rej (same unit as the target)
     double weight = 1;
     int entity = -1;       // -1: world frame; else the entity it moves with
-};
-
-// A valid parameter partition X_m: a box for the entity's origin and its rotations.
-struct Region {
-    Vec2 lo, hi;
-    std::vector<double> rotationsDeg;  // discrete set, or
-    bool continuousRotation = false;   // an interval [rotationMinDeg, rotationMaxDeg]
-    double rotationMinDeg = 0, rotationMaxDeg = 0;
 };
 
 // What a part was, kept for outputs (plans, glTF) and summaries.
