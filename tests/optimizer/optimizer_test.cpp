@@ -63,7 +63,7 @@ const char* kOffice = R"({
 class DeskLight : public LightingEvaluator {
 public:
     explicit DeskLight(const Scene& scene) : scene_(scene) {}
-    double evaluate(const Layout& layout, const std::vector<Transform>& world, LightingBreakdown* out) override {
+    double evaluate(const Layout&, const std::vector<Transform>& world, LightingBreakdown* out) override {
         ++calls;
         if (GeometryEvaluator(scene_).evaluate(world).rejected) ++rejectedCalls;
         double e = 600 - 100 * world[size_t(scene_.findEntity("workstation.desk"))].t.x;

@@ -52,17 +52,17 @@ TEST(Render, LitRoomIsVisibleAndDeterministic) {
 }
 
 TEST(Render, ExposureAndToneCurve) {
-    LuminanceImage flat{4, 2, std::vector<double>(8, 50.0)};
+    LuminanceImage flat{4, 2, std::vector<double>(8, 50.0), {}, {}};
     EXPECT_NEAR(autoExposure(flat), 0.18 / 50, 1e-6);
-    LuminanceImage black{2, 2, std::vector<double>(4, 0.0)};
+    LuminanceImage black{2, 2, std::vector<double>(4, 0.0), {}, {}};
     EXPECT_EQ(autoExposure(black), 1);
     EXPECT_EQ(toneMap(black, 1).at(1, 1), kBlack);
-    LuminanceImage ramp{5, 1, {0, 1, 10, 100, 1e6}};
+    LuminanceImage ramp{5, 1, {0, 1, 10, 100, 1e6}, {}, {}};
     Image t = toneMap(ramp, 0.01);
     for (int x = 1; x < 5; ++x) EXPECT_GT(t.at(x, 0).r, t.at(x - 1, 0).r);
     EXPECT_EQ(t.at(4, 0), kWhite);
     // Middle grey maps to the sRGB code of Reinhard's 0.18 -> ~0.16.
-    LuminanceImage grey{1, 1, {0.18}};
+    LuminanceImage grey{1, 1, {0.18}, {}, {}};
     EXPECT_NEAR(toneMap(grey, 1).at(0, 0).r, 112, 4);
 }
 

@@ -8,10 +8,15 @@ namespace {
 
 TEST(Layout, GroupTransformsCompose) {
     Scene s;
-    Entity group, child, grandchild;
-    group.name = group.path = "g";
-    child.name = "c", child.path = "g.c", child.parent = 0, child.position = {1, 0, 0.75}, child.rotationDeg = 90;
-    grandchild.name = "d", grandchild.path = "g.c.d", grandchild.parent = 1, grandchild.position = {0.5, 0, 0};
+    auto named = [](std::string name, std::string path) {
+        Entity e;
+        e.name = std::move(name);
+        e.path = std::move(path);
+        return e;
+    };
+    Entity group = named("g", "g"), child = named("c", "g.c"), grandchild = named("d", "g.c.d");
+    child.parent = 0, child.position = {1, 0, 0.75}, child.rotationDeg = 90;
+    grandchild.parent = 1, grandchild.position = {0.5, 0, 0};
     group.children = {1};
     child.children = {2};
     s.entities = {group, child, grandchild};

@@ -66,7 +66,7 @@ Chi2Result chi2Test(const std::vector<double>& observed, const std::vector<doubl
             }
             continue;
         }
-        if (e < minExpected || pooledExp > 0 && pooledExp < minExpected) {
+        if (e < minExpected || (pooledExp > 0 && pooledExp < minExpected)) {
             pooledObs += o;
             pooledExp += e;
             if (pooledExp >= minExpected) {

@@ -243,7 +243,7 @@ void constraintTables(std::ostringstream& out, const Scene& scene, const Geometr
         out << "<p class=\"muted\">No overlapping pairs.</p>\n";
 }
 
-void moveTable(std::ostringstream& out, const Scene& scene, const OptimizerResult& r) {
+void moveTable(std::ostringstream& out, const OptimizerResult& r) {
     if (r.levels.empty()) return;
     out << "<h2>Moves</h2>\n<table>\n<tr><th>level</th><th>move</th><th>proposed</th><th>accepted</th><th>outside</th>"
            "<th>rejected (geometry)</th><th>acceptance</th></tr>\n";
@@ -299,7 +299,7 @@ std::string reportHtml(const std::filesystem::path& folder, const Scene& scene, 
     samplerTable(out, scene, data.samplers, result);
     if (data.geometry) constraintTables(out, scene, *data.geometry);
     else if (result) constraintTables(out, scene, result->bestGeometry);
-    if (result) moveTable(out, scene, *result);
+    if (result) moveTable(out, *result);
     timingTable(out, data.timings);
     out << "<footer>Written by luxplan. Illuminance in lx, luminance in cd/m&sup2;.</footer>\n</body>\n</html>\n";
     return out.str();
