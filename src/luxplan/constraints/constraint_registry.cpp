@@ -1,4 +1,5 @@
 // The one table of relational constraint types: a new type is its file and one line here.
+#include <luxplan/core/names.h>
 #include <luxplan/constraints/constraint_type.h>
 
 namespace luxplan {
@@ -18,15 +19,10 @@ const std::vector<ConstraintKindEntry>& constraintKinds() {
     return kinds;
 }
 
-const ConstraintKindEntry* findConstraintKind(std::string_view name) {
-    for (const ConstraintKindEntry& k : constraintKinds())
-        if (name == k.name) return &k;
-    return nullptr;
-}
+const ConstraintKindEntry* findConstraintKind(std::string_view name) { return findByName(constraintKinds(), name); }
 
 std::vector<std::string> constraintTypeNames() {
-    std::vector<std::string> names;
-    for (const ConstraintKindEntry& k : constraintKinds()) names.push_back(k.name);
+    std::vector<std::string> names = namesOf(constraintKinds());
     names.push_back(kOverlapRuleName);
     return names;
 }

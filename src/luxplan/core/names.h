@@ -58,6 +58,21 @@ inline std::string listNames(const std::vector<std::string>& names, std::string_
     return s;
 }
 
+// A family's registration table (entries with a `name`): the entry of a name, or
+// null, and the names in the table's order.
+template <class Entry>
+const Entry* findByName(const std::vector<Entry>& table, std::string_view name) {
+    for (const Entry& e : table)
+        if (name == e.name) return &e;
+    return nullptr;
+}
+template <class Entry>
+std::vector<std::string> namesOf(const std::vector<Entry>& table) {
+    std::vector<std::string> names;
+    for (const Entry& e : table) names.push_back(e.name);
+    return names;
+}
+
 // The scene format's names of one enum, in the order the docs list them.
 template <class E>
 struct EnumNames {

@@ -1,4 +1,5 @@
 // The one table of emitter shapes: a new shape is its file and one line here.
+#include <luxplan/core/names.h>
 #include <luxplan/emitters/emitter_shape.h>
 
 namespace luxplan {
@@ -16,17 +17,8 @@ const std::vector<EmitterShapeEntry>& emitterShapes() {
     return shapes;
 }
 
-const EmitterShapeEntry* findEmitterShape(std::string_view name) {
-    for (const EmitterShapeEntry& s : emitterShapes())
-        if (name == s.name) return &s;
-    return nullptr;
-}
-
-std::vector<std::string> emitterShapeNames() {
-    std::vector<std::string> names;
-    for (const EmitterShapeEntry& s : emitterShapes()) names.push_back(s.name);
-    return names;
-}
+const EmitterShapeEntry* findEmitterShape(std::string_view name) { return findByName(emitterShapes(), name); }
+std::vector<std::string> emitterShapeNames() { return namesOf(emitterShapes()); }
 
 double emitterLuminance(const Emitter& e) { return e.fluxLm / (kPi * e.shape->area()); }
 

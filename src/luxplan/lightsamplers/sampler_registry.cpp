@@ -1,4 +1,5 @@
 // The one table of sampler types: a new type is its file and one line here.
+#include <luxplan/core/names.h>
 #include <luxplan/lightsamplers/sampler_type.h>
 
 namespace luxplan {
@@ -18,16 +19,7 @@ const std::vector<SamplerTypeEntry>& samplerTypes() {
     return types;
 }
 
-const SamplerTypeEntry* findSamplerType(std::string_view name) {
-    for (const SamplerTypeEntry& t : samplerTypes())
-        if (name == t.name) return &t;
-    return nullptr;
-}
-
-std::vector<std::string> samplerTypeNames() {
-    std::vector<std::string> names;
-    for (const SamplerTypeEntry& t : samplerTypes()) names.push_back(t.name);
-    return names;
-}
+const SamplerTypeEntry* findSamplerType(std::string_view name) { return findByName(samplerTypes(), name); }
+std::vector<std::string> samplerTypeNames() { return namesOf(samplerTypes()); }
 
 }  // namespace luxplan
