@@ -7,41 +7,33 @@
 #include <luxplan/constraints/geometry_cost.h>
 #include <luxplan/constraints/overlap.h>
 #include <luxplan/core/rng.h>
-#include <luxplan/io/scene_loader.h>
 #include <luxplan/scene/layout.h>
-#include "support/temp_files.h"
+#include "support/scene_builder.h"
 
 namespace luxplan {
 namespace {
 
-const char* kScene = R"({
-  "luxplan": 1,
-  "materials": {"m": {"type": "diffuse", "reflectance": 0.5}},
-  "geometry": [
-    {"name": "room", "room": {"min": [0, 0, 0], "max": [6, 6, 3]}, "materials": {"floor": "m", "walls": "m", "ceiling": "m"}},
-    {"name": "walkway", "box": {"min": [4, 4, 0], "max": [5, 5, 1]}, "invisible": true},
-    {"name": "pillar", "box": {"min": [0.2, 5.2, 0], "max": [0.8, 5.8, 3]}, "material": "m"}
-  ],
-  "entities": [
-    {"name": "a", "position": [1.5, 1.5], "placement": {"regions": [{"min": [0, 0], "max": [6, 6]}]},
-     "parts": [{"box": {"size": [1, 1, 1]}, "material": "m"}]},
-    {"name": "b", "position": [3.5, 1.5], "placement": {"regions": [{"min": [0, 0], "max": [6, 6]}]},
-     "parts": [{"box": {"size": [1, 1, 1]}, "material": "m"}]},
-    {"name": "set", "position": [1.5, 4.5], "placement": {"regions": [{"min": [0, 0], "max": [6, 6]}]},
-     "parts": [{"box": {"size": [0.5, 0.5, 0.5]}, "material": "m"}],
-     "children": [
-       {"name": "desk", "position": [1, 0], "placement": {"regions": [{"min": [-1, -1], "max": [1, 1]}]},
-        "parts": [{"box": {"size": [0.6, 0.4, 0.7]}, "material": "m"}]},
-       {"name": "chair", "position": [1, -0.5], "placement": {"regions": [{"min": [-1, -1], "max": [1, 1]}]},
-        "parts": [{"box": {"size": [0.4, 0.4, 0.9]}, "material": "m"}]}]},
-    {"name": "fixed1", "position": [5.5, 0.5], "parts": [{"box": {"size": [0.2, 0.2, 0.2]}, "material": "m"}]},
-    {"name": "fixed2", "position": [5.5, 0.5], "parts": [{"box": {"size": [0.2, 0.2, 0.2]}, "material": "m"}]}
-  ]})";
+Scene makeScene() {
+    return test::SceneBuilder()
+        .material("m", test::diffuse(0.5))
+        .room({0, 0, 0}, {6, 6, 3}, "m", "m", "m")
+        .blocker("walkway", {4, 4, 0}, {5, 5, 1})
+        .box("pillar", {0.2, 5.2, 0}, {0.8, 5.8, 3}, "m")
+        .entity("a", {1.5, 1.5, 0}).region({0, 0}, {6, 6}).part({1, 1, 1}, "m").end()
+        .entity("b", {3.5, 1.5, 0}).region({0, 0}, {6, 6}).part({1, 1, 1}, "m").end()
+        .entity("set", {1.5, 4.5, 0}).region({0, 0}, {6, 6}).part({0.5, 0.5, 0.5}, "m")
+        .entity("desk", {1, 0, 0}).region({-1, -1}, {1, 1}).part({0.6, 0.4, 0.7}, "m").end()
+        .entity("chair", {1, -0.5, 0}).region({-1, -1}, {1, 1}).part({0.4, 0.4, 0.9}, "m").end()
+        .end()
+        .entity("fixed1", {5.5, 0.5, 0}).part({0.2, 0.2, 0.2}, "m").end()
+        .entity("fixed2", {5.5, 0.5, 0}).part({0.2, 0.2, 0.2}, "m").end()
+        .build();
+}
 
 class Overlap : public ::testing::Test {
 protected:
     void SetUp() override {
-        scene = io::loadScene(dir.write("scene.json", kScene));
+        scene = makeScene();
         layout = initialLayout(scene);
     }
     int id(const char* name) { return scene.findEntity(name); }
@@ -65,7 +57,6 @@ protected:
                 return t;
         return {};
     }
-    test::TempDir dir;
     Scene scene;
     Layout layout;
 };

@@ -6,40 +6,38 @@
 
 #include <luxplan/constraints/geometry_cost.h>
 #include <luxplan/constraints/relational.h>
-#include <luxplan/io/scene_loader.h>
+#include <luxplan/constraints/constraint_type.h>
 #include <luxplan/scene/layout.h>
-#include "support/temp_files.h"
+#include "support/scene_builder.h"
 
 namespace luxplan {
 namespace {
 
 // desk and chair are the same height, so centre distances are horizontal.
-const char* kScene = R"({
-  "luxplan": 1,
-  "materials": {"m": {"type": "diffuse", "reflectance": 0.5}},
-  "entities": [
-    {"name": "desk", "position": [2, 2], "parts": [{"box": {"size": [1.0, 0.5, 0.75]}, "material": "m"}]},
-    {"name": "chair", "position": [2, 1], "parts": [{"box": {"size": [0.4, 0.4, 0.75]}, "material": "m"}]},
-    {"name": "shelf", "position": [0, 0], "fronts": [[1, 1], [0, -1]],
-     "parts": [{"box": {"size": [0.8, 0.3, 0.75], "center": [0.3, 0, 0.375]}, "material": "m"}]},
-    {"name": "set", "position": [5, 5], "rotation": 90, "children": [
-      {"name": "big", "position": [-1, 0], "parts": [{"box": {"size": [1, 1, 1]}, "material": "m"}]},
-      {"name": "small", "position": [1.5, 0], "parts": [{"box": {"size": [0.5, 0.5, 1]}, "material": "m"}]}]},
-    {"name": "marker", "position": [7, 1]}
-  ],
-  "constraints": [
-    {"type": "alignment", "a": "desk", "b": "room", "tolerance_deg": 10},
-    {"type": "alignment", "a": "desk", "b": "chair", "tolerance_deg": 10},
-    {"type": "distance", "a": "desk", "b": "chair", "min": 1, "max": 2},
-    {"type": "focus", "a": "chair", "b": "desk", "tolerance_deg": 16},
-    {"type": "conversation", "a": "desk", "b": "chair", "min": 0.5, "max": 1.5, "tolerance_deg": 16},
-    {"type": "alignment", "a": "shelf", "b": "room", "tolerance_deg": 10}
-  ]})";
+Scene makeScene() {
+    return test::SceneBuilder()
+        .material("m", test::diffuse(0.5))
+        .entity("desk", {2, 2, 0}).part({1.0, 0.5, 0.75}, "m").end()
+        .entity("chair", {2, 1, 0}).part({0.4, 0.4, 0.75}, "m").end()
+        .entity("shelf", {0, 0, 0}).fronts({{1, 1}, {0, -1}}).part({0.8, 0.3, 0.75}, "m", Vec3(0.3, 0, 0.375)).end()
+        .entity("set", {5, 5, 0}, 90)
+        .entity("big", {-1, 0, 0}).part({1, 1, 1}, "m").end()
+        .entity("small", {1.5, 0, 0}).part({0.5, 0.5, 1}, "m").end()
+        .end()
+        .entity("marker", {7, 1, 0}).end()
+        .constraint(alignmentConstraint(10), "desk", "room")
+        .constraint(alignmentConstraint(10), "desk", "chair")
+        .constraint(distanceConstraint({1, 2, std::nullopt}), "desk", "chair")
+        .constraint(focusConstraint(16), "chair", "desk")
+        .constraint(conversationConstraint({0.5, 1.5, std::nullopt}, 16), "desk", "chair")
+        .constraint(alignmentConstraint(10), "shelf", "room")
+        .build();
+}
 
 class Relational : public ::testing::Test {
 protected:
     void SetUp() override {
-        scene = io::loadScene(dir.write("scene.json", kScene));
+        scene = makeScene();
         layout = initialLayout(scene);
         desk = scene.findEntity("desk"), chair = scene.findEntity("chair");
     }
@@ -51,7 +49,6 @@ protected:
         layout.placements[e].position.x = x, layout.placements[e].position.y = y;
         layout.placements[e].rotationDeg = rotation;
     }
-    test::TempDir dir;
     Scene scene;
     Layout layout;
     int desk = -1, chair = -1;

@@ -2,17 +2,32 @@
 // standard error (4 sigma) plus, where a model is tabulated, its stated discretization.
 #include <gtest/gtest.h>
 
+#include <luxplan/emitters/emitter_shape.h>
 #include <luxplan/materials/thin_glass.h>
-#include "support/lab.h"
+#include "support/scene_builder.h"
+#include "support/scene_lab.h"
 #include "support/threads.h"
 
 namespace luxplan {
 namespace {
 
-std::string materials(double rho) {
-    return R"("materials": {"grey": {"type": "diffuse", "reflectance": )" + std::to_string(rho) +
-           R"(}, "black": {"type": "diffuse", "reflectance": 0}, "glass": {"type": "glass", "transmittance": 0.8}})";
+using test::SceneBuilder;
+using test::SceneLab;
+
+SceneBuilder withMaterials(double rho) {
+    SceneBuilder b;
+    b.material("grey", test::diffuse(rho)).material("black", test::diffuse(0)).material("glass", test::glass(0.8));
+    return b;
 }
+
+// A planar sampler of one point: the illuminance there on a plane facing `normal`.
+std::shared_ptr<const SamplerType> point(Vec3 center, Vec3 normal = {0, 0, 1}, Vec3 up = {0, 1, 0}) {
+    return planarSampler(center, normal, up, {0.001, 0.001}, {1, 1});
+}
+std::shared_ptr<const SamplerType> plane(Vec3 center, Vec3 normal, Vec3 up, Vec2 size, std::array<int, 2> grid) {
+    return planarSampler(center, normal, up, size, grid);
+}
+const Vec3 kUp(0, 1, 0), kZ(0, 0, 1);
 
 // Illuminance at a point at height h below one corner of an a x b Lambertian rectangle
 // of luminance L, parallel to the receiver: E = L/2 [X/sqrt(1+X^2) atan(Y/sqrt(1+X^2)) +
@@ -37,13 +52,12 @@ void expectWithin(const SamplerResult& r, double expected, double relativeSystem
 TEST(Analytic, RectEmitterIlluminanceInABlackVoid) {
     // A 0.6 x 0.6 m panel of 3000 lm at z = 3 facing down; planar samplers below it.
     const double flux = 3000, L = flux / (kPi * 0.36);
-    std::string json = R"({"luxplan": 1, )" + materials(0) + R"(,
-      "luminaires": [{"name": "panel", "shape": "rect", "center": [0,0,3], "normal": [0,0,-1], "size": [0.6,0.6], "flux_lm": 3000}],
-      "samplers": [
-        {"name": "below", "type": "planar", "center": [0,0,0.8], "size": [0.001,0.001], "grid": [1,1], "target": [0,1e9]},
-        {"name": "offset", "type": "planar", "center": [0.2,0.1,2.5], "size": [0.001,0.001], "grid": [1,1], "target": [0,1e9]},
-        {"name": "beside", "type": "planar", "center": [1.5,-0.7,1.0], "size": [0.001,0.001], "grid": [1,1], "target": [0,1e9]}]})";
-    test::Lab lab(json);
+    SceneLab lab(withMaterials(0)
+                     .emitter("panel", rectEmitter({0, 0, 3}, {0, 0, -1}, {0, 1, 0}, {0.6, 0.6}), 3000)
+                     .sampler("below", point({0, 0, 0.8}), 0, 1e9)
+                     .sampler("offset", point({0.2, 0.1, 2.5}), 0, 1e9)
+                     .sampler("beside", point({1.5, -0.7, 1.0}), 0, 1e9)
+                     .build());
     auto r = lab.measure(4000);
     expectWithin(r.samplers[0], rectIlluminance(L, -0.3, 0.3, -0.3, 0.3, 0, 0, 2.2), 0, "below");
     expectWithin(r.samplers[1], rectIlluminance(L, -0.3, 0.3, -0.3, 0.3, 0.2, 0.1, 0.5), 0, "offset");
@@ -61,18 +75,16 @@ TEST(Analytic, ClosedGreyRoomEnergyBalance) {
     // mean illuminance is flux / (A (1 - rho)). The 1 cm sphere absorbs 7e-6 of the area.
     const double rho = 0.6, flux = 2000;
     const double A = 2 * (4 * 3 + 4 * 2.5 + 3 * 2.5);
-    std::string json = R"({"luxplan": 1, )" + materials(rho) + R"(,
-      "geometry": [{"name": "room", "room": {"min": [0,0,0], "max": [4,3,2.5]},
-                    "materials": {"floor": "grey", "walls": "grey", "ceiling": "grey"}}],
-      "luminaires": [{"name": "bulb", "shape": "sphere", "center": [2.1,1.4,1.3], "radius": 0.01, "flux_lm": 2000}],
-      "samplers": [
-        {"name": "floor", "type": "planar", "center": [2,1.5,0.001], "normal": [0,0,1], "size": [4,3], "grid": [8,6], "target": [0,1e9]},
-        {"name": "ceiling", "type": "planar", "center": [2,1.5,2.499], "normal": [0,0,-1], "size": [4,3], "grid": [8,6], "target": [0,1e9]},
-        {"name": "south", "type": "planar", "center": [2,0.001,1.25], "normal": [0,1,0], "up": [0,0,1], "size": [4,2.5], "grid": [8,5], "target": [0,1e9]},
-        {"name": "north", "type": "planar", "center": [2,2.999,1.25], "normal": [0,-1,0], "up": [0,0,1], "size": [4,2.5], "grid": [8,5], "target": [0,1e9]},
-        {"name": "west", "type": "planar", "center": [0.001,1.5,1.25], "normal": [1,0,0], "up": [0,0,1], "size": [3,2.5], "grid": [6,5], "target": [0,1e9]},
-        {"name": "east", "type": "planar", "center": [3.999,1.5,1.25], "normal": [-1,0,0], "up": [0,0,1], "size": [3,2.5], "grid": [6,5], "target": [0,1e9]}]})";
-    test::Lab lab(json);
+    SceneLab lab(withMaterials(rho)
+                     .room({0, 0, 0}, {4, 3, 2.5}, "grey", "grey", "grey")
+                     .emitter("bulb", sphereEmitter({2.1, 1.4, 1.3}, 0.01), 2000)
+                     .sampler("floor", plane({2, 1.5, 0.001}, {0, 0, 1}, kUp, {4, 3}, {8, 6}), 0, 1e9)
+                     .sampler("ceiling", plane({2, 1.5, 2.499}, {0, 0, -1}, kUp, {4, 3}, {8, 6}), 0, 1e9)
+                     .sampler("south", plane({2, 0.001, 1.25}, {0, 1, 0}, kZ, {4, 2.5}, {8, 5}), 0, 1e9)
+                     .sampler("north", plane({2, 2.999, 1.25}, {0, -1, 0}, kZ, {4, 2.5}, {8, 5}), 0, 1e9)
+                     .sampler("west", plane({0.001, 1.5, 1.25}, {1, 0, 0}, kZ, {3, 2.5}, {6, 5}), 0, 1e9)
+                     .sampler("east", plane({3.999, 1.5, 1.25}, {-1, 0, 0}, kZ, {3, 2.5}, {6, 5}), 0, 1e9)
+                     .build());
     auto r = lab.measure(600);
     double areas[6] = {12, 12, 10, 10, 7.5, 7.5};
     double mean = 0, variance = 0;
@@ -86,9 +98,11 @@ TEST(Analytic, ClosedGreyRoomEnergyBalance) {
 }
 
 TEST(Analytic, UniformSkyGivesPiL) {
-    test::Lab lab(R"({"luxplan": 1, "daylight": {"sky": {"model": "uniform", "luminance_nits": 2000}, "sun": false, "ground_reflectance": 0},
-      "samplers": [{"name": "up", "type": "planar", "center": [0,0,0], "size": [1,1], "grid": [2,2], "target": [0, null]},
-                   {"name": "sphere", "type": "volume", "center": [0,0,1], "axes": [[1,0,0],[0,1,0],[0,0,1]], "points": 4, "target": [0, null]}]})");
+    SceneLab lab(SceneBuilder()
+                     .uniformSky(2000)
+                     .sampler("up", plane({0, 0, 0}, kZ, kUp, {1, 1}, {2, 2}), 0)
+                     .sampler("sphere", volumeSampler({0, 0, 1}, {Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)}, 4), 0)
+                     .build());
     auto r = lab.measure(2000);
     expectWithin(r.samplers[0], kPi * 2000, 1e-3, "planar");
     // Half the sphere sees the sky (2000), half the black ground.
@@ -96,9 +110,11 @@ TEST(Analytic, UniformSkyGivesPiL) {
 }
 
 TEST(Analytic, CieOvercastHorizontalAndVertical) {
-    test::Lab lab(R"({"luxplan": 1, "daylight": {"sky": {"model": "cie_overcast", "horizontal_illuminance_lx": 10000}, "ground_reflectance": 0},
-      "samplers": [{"name": "horizontal", "type": "planar", "center": [0,0,0], "size": [1,1], "grid": [1,1], "target": [0, null]},
-                   {"name": "vertical", "type": "planar", "center": [0,0,0], "normal": [1,0,0], "up": [0,0,1], "size": [1,1], "grid": [1,1], "target": [0, null]}]})");
+    SceneLab lab(SceneBuilder()
+                     .overcastSky(10000, 0)
+                     .sampler("horizontal", plane({0, 0, 0}, kZ, kUp, {1, 1}, {1, 1}), 0)
+                     .sampler("vertical", plane({0, 0, 0}, {1, 0, 0}, kZ, {1, 1}, {1, 1}), 0)
+                     .build());
     auto r = lab.measure(20000);
     expectWithin(r.samplers[0], 10000, 2e-3, "horizontal");
     expectWithin(r.samplers[1], 0.396 * 10000, 3e-3, "vertical");
@@ -108,13 +124,12 @@ TEST(Analytic, GlazedOpeningScalesByThePanesTransmittance) {
     // Black room, uniform sky over a black ground, one window: E = L * integral over the
     // part of the window above the horizon of T(cos) cos dw.
     auto room = [](const std::string& pane) {
-        return R"({"luxplan": 1, )" + materials(0) + R"(,
-          "daylight": {"sky": {"model": "uniform", "luminance_nits": 1000}, "sun": false, "ground_reflectance": 0},
-          "geometry": [{"name": "room", "room": {"min": [0,0,0], "max": [4,4,3]},
-                        "materials": {"floor": "black", "walls": "black", "ceiling": "black"},
-                        "openings": [{"wall": "south", "offset": 1, "width": 2, "sill": 1, "height": 1.5)" + pane + R"(}]}],
-          "samplers": [{"name": "p", "type": "planar", "center": [2,1.5,1.2], "normal": [0,-1,0], "up": [0,0,1],
-                        "size": [0.001,0.001], "grid": [1,1], "target": [0, null]}]})";
+        return withMaterials(0)
+            .uniformSky(1000)
+            .room({0, 0, 0}, {4, 4, 3}, "black", "black", "black")
+            .window(Wall::South, 1, 2, 1, 1.5, pane)
+            .sampler("p", point({2, 1.5, 1.2}, {0, -1, 0}, kZ), 0)
+            .build();
     };
     // Quadrature over the window (x in [1,3], z in [1,2.5] at y = 0) seen from (2, 1.5, 1.2).
     auto expected = [](double normalTransmittance) {
@@ -131,8 +146,8 @@ TEST(Analytic, GlazedOpeningScalesByThePanesTransmittance) {
             }
         return sum;
     };
-    test::Lab open(room(""));
-    test::Lab glazed(room(R"(, "material": "glass")"));
+    SceneLab open(room(""));
+    SceneLab glazed(room("glass"));
     auto ro = open.measure(4000), rg = glazed.measure(4000);
     expectWithin(ro.samplers[0], expected(1.0), 1e-3, "open");
     expectWithin(rg.samplers[0], expected(0.8), 1e-3, "glazed");
@@ -143,15 +158,15 @@ TEST(Analytic, SeveralPortalsSumTheirProjectedSolidAngles) {
     // door and a skylight: an upward sensor gets L times the projected solid angle of
     // the openings above its horizon. Portal sampling (one opening by weight, then its
     // spherical rectangle) and plain sky-map sampling must both give it.
-    const std::string json = R"({"luxplan": 1, )" + materials(0) + R"(,
-      "daylight": {"sky": {"model": "uniform", "luminance_nits": 1000}, "sun": false, "ground_reflectance": 0},
-      "geometry": [{"name": "room", "room": {"min": [0,0,0], "max": [4,4,3]},
-                    "materials": {"floor": "black", "walls": "black", "ceiling": "black"},
-                    "openings": [{"wall": "south", "offset": 1, "width": 2, "sill": 1, "height": 1.5},
-                                 {"wall": "east", "offset": 0.5, "width": 1, "sill": 1.2, "height": 1},
-                                 {"wall": "north", "offset": 2.5, "width": 1, "sill": 0, "height": 2.1},
-                                 {"wall": "ceiling", "center": [1.5, 2.5], "size": [0.8, 0.6]}]}],
-      "samplers": [{"name": "p", "type": "planar", "center": [2,1.6,1.0], "size": [0.001,0.001], "grid": [1,1], "target": [0, null]}]})";
+    const Scene scene = withMaterials(0)
+                            .uniformSky(1000)
+                            .room({0, 0, 0}, {4, 4, 3}, "black", "black", "black")
+                            .window(Wall::South, 1, 2, 1, 1.5)
+                            .window(Wall::East, 0.5, 1, 1.2, 1)
+                            .window(Wall::North, 2.5, 1, 0, 2.1)
+                            .skylight({1.5, 2.5}, {0.8, 0.6})
+                            .sampler("p", point({2, 1.6, 1.0}), 0)
+                            .build();
     // Quadrature of L cos(receiver) cos(opening) dA / d^2 over each opening.
     const Vec3 p(2, 1.6, 1.0);
     auto opening = [&](Vec3 corner, Vec3 u, Vec3 v, Vec3 normal) {
@@ -172,7 +187,7 @@ TEST(Analytic, SeveralPortalsSumTheirProjectedSolidAngles) {
                       opening({1.1, 2.2, 3}, {0.8, 0, 0}, {0, 0.6, 0}, {0, 0, 1});  // skylight
     PathTracerOptions noPortals;
     noPortals.portals = false;
-    test::Lab portals(json), skyMap(json, noPortals);
+    SceneLab portals(scene), skyMap(scene, noPortals);
     SamplerResult a = portals.measure(20000).samplers[0], b = skyMap.measure(20000).samplers[0];
     expectWithin(a, expected, 2e-3, "portals");
     expectWithin(b, expected, 5e-3, "sky map");  // the map's pixels cut the opening edges
@@ -182,15 +197,19 @@ TEST(Analytic, SeveralPortalsSumTheirProjectedSolidAngles) {
 TEST(Analytic, SunPatchFallsWhereGeometryPutsIt) {
     // Sun from the south at 45 degrees through a 2 x 1 m opening with sill 1 m: the patch
     // on the floor spans x in [2, 4], y in [1, 2] (up to the disk's half-degree blur).
-    test::Lab lab(R"({"luxplan": 1, )" + materials(0) + R"(,
-      "daylight": {"sky": {"model": "uniform", "luminance_nits": 0}, "sun": {"altitude_deg": 45, "azimuth_deg": 180, "normal_illuminance_lx": 50000},
-                   "ground_reflectance": 0},
-      "geometry": [{"name": "room", "room": {"min": [0,0,0], "max": [6,4,3]},
-                    "materials": {"floor": "black", "walls": "black", "ceiling": "black"},
-                    "openings": [{"wall": "south", "offset": 2, "width": 2, "sill": 1, "height": 1}]}],
-      "samplers": [{"name": "in", "type": "planar", "center": [3,1.5,0.001], "size": [0.6,0.3], "grid": [3,2], "target": [0, null]},
-                   {"name": "out", "type": "planar", "center": [3,3,0.001], "size": [1,0.5], "grid": [2,2], "target": [0, null]},
-                   {"name": "side", "type": "planar", "center": [1,1.5,0.001], "size": [0.5,0.5], "grid": [2,2], "target": [0, null]}]})");
+    DaylightParams sun;
+    sun.model = SkyModelType::Uniform;
+    sun.luminanceNits = 0;
+    sun.sunOverride = SunOverride{45, 180, 50000};
+    sun.groundReflectance = 0;
+    SceneLab lab(withMaterials(0)
+                     .daylight(sun)
+                     .room({0, 0, 0}, {6, 4, 3}, "black", "black", "black")
+                     .window(Wall::South, 2, 2, 1, 1)
+                     .sampler("in", plane({3, 1.5, 0.001}, kZ, kUp, {0.6, 0.3}, {3, 2}), 0)
+                     .sampler("out", plane({3, 3, 0.001}, kZ, kUp, {1, 0.5}, {2, 2}), 0)
+                     .sampler("side", plane({1, 1.5, 0.001}, kZ, kUp, {0.5, 0.5}, {2, 2}), 0)
+                     .build());
     auto r = lab.measure(200);
     expectWithin(r.samplers[0], 50000 * std::sin(radians(45)), 2e-3, "in the patch");
     EXPECT_EQ(r.samplers[1].value, 0.0);
@@ -199,35 +218,36 @@ TEST(Analytic, SunPatchFallsWhereGeometryPutsIt) {
 
 TEST(Analytic, GlossyScreenFacingAWindowGlaresMoreThanAMatteOne) {
     auto screen = [](const char* material) {
-        return std::string(R"({"luxplan": 1, "materials": {"wall": {"type": "diffuse", "reflectance": 0.5},
-            "glossy": {"type": "glossy", "reflectance": 0.05, "roughness": 0.05, "base": 0.02},
-            "matte": {"type": "diffuse", "reflectance": 0.07}},
-          "daylight": {"sky": {"model": "cie_overcast", "horizontal_illuminance_lx": 20000}, "ground_reflectance": 0.2},
-          "geometry": [{"name": "room", "room": {"min": [0,0,0], "max": [5,5,3]},
-                        "materials": {"floor": "wall", "walls": "wall", "ceiling": "wall"},
-                        "openings": [{"wall": "south", "offset": 1.5, "width": 2, "sill": 0.8, "height": 1.8}]}],
-          "entities": [{"name": "monitor", "position": [2.5, 2.5], "rotation": 0,
-                        "parts": [{"box": {"size": [0.6, 0.02, 0.4], "center": [0, 0, 1.1]}, "material": ")") + material + R"("}],
-                        "samplers": [{"name": "glare", "type": "directional", "origin": [0, -0.7, 1.2], "direction": [0, 1, -0.05],
-                                      "fov_deg": 20, "strata": 4, "target": [0, 100]}]}]})";
+        return SceneBuilder()
+            .material("wall", test::diffuse(0.5))
+            .material("glossy", test::glossy(0.05, 0.05, 0.02))
+            .material("matte", test::diffuse(0.07))
+            .overcastSky(20000, 0.2)
+            .room({0, 0, 0}, {5, 5, 3}, "wall", "wall", "wall")
+            .window(Wall::South, 1.5, 2, 0.8, 1.8)
+            .entity("monitor", {2.5, 2.5, 0}, 0)
+            .part({0.6, 0.02, 0.4}, material, Vec3(0, 0, 1.1))
+            .sampler("glare", directionalSampler({0, -0.7, 1.2}, {0, 1, -0.05}, kZ, 20, 4), 0, 100)
+            .end()
+            .build();
     };
     // The screen's front (-y) faces the window; the viewer stands between them and sees
     // the window mirrored in the screen.
-    test::Lab glossy(screen("glossy")), matte(screen("matte"));
+    SceneLab glossy(screen("glossy")), matte(screen("matte"));
     double g = glossy.measure(400).samplers[0].value, m = matte.measure(400).samplers[0].value;
     EXPECT_GT(g, 2 * m) << "glossy " << g << " matte " << m;
 }
 
 TEST(Determinism, SameResultWithOneAndTwoThreads) {
-    test::Lab lab(R"({"luxplan": 1, )" + materials(0.5) + R"(,
-      "daylight": {"sky": {"model": "cie_overcast", "horizontal_illuminance_lx": 10000}},
-      "geometry": [{"name": "room", "room": {"min": [0,0,0], "max": [4,3,2.5]},
-                    "materials": {"floor": "grey", "walls": "grey", "ceiling": "grey"},
-                    "openings": [{"wall": "south", "offset": 1, "width": 2, "sill": 0.8, "height": 1.2, "material": "glass"}]}],
-      "luminaires": [{"name": "l", "shape": "disk", "center": [2,1.5,2.49], "normal": [0,0,-1], "radius": 0.2, "flux_lm": 2000}],
-      "samplers": [{"name": "p", "type": "planar", "center": [2,1.5,0.75], "size": [1,1], "grid": [3,3], "target": [300, 500]},
-                   {"name": "v", "type": "volume", "center": [2,1.5,1.2], "axes": [[1,0,0],[0,1,0],[0,0,1]], "points": 5, "target": [0, null]},
-                   {"name": "d", "type": "directional", "origin": [2,2.5,1.2], "direction": [0,-1,0], "strata": 3, "target": [0, 100]}]})");
+    SceneLab lab(withMaterials(0.5)
+                     .overcastSky(10000)
+                     .room({0, 0, 0}, {4, 3, 2.5}, "grey", "grey", "grey")
+                     .window(Wall::South, 1, 2, 0.8, 1.2, "glass")
+                     .emitter("l", diskEmitter({2, 1.5, 2.49}, {0, 0, -1}, 0.2), 2000)
+                     .sampler("p", plane({2, 1.5, 0.75}, kZ, kUp, {1, 1}, {3, 3}), 300, 500)
+                     .sampler("v", volumeSampler({2, 1.5, 1.2}, {Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)}, 5), 0)
+                     .sampler("d", directionalSampler({2, 2.5, 1.2}, {0, -1, 0}, kZ, 60, 3), 0, 100)
+                     .build());
     auto one = test::withThreads(1, [&] { return lab.measure(64, 7); });
     auto two = test::withThreads(2, [&] { return lab.measure(64, 7); });
     for (size_t k = 0; k < one.samplers.size(); ++k) {
@@ -246,15 +266,13 @@ namespace {
 // Twelve panels along a corridor; the point sits under the first. Choosing emitters by
 // flux / distance^2 must give the same illuminance as a uniform choice, with less noise.
 TEST(EmitterSelection, PowerDistanceAgreesWithUniformAndHasLessVariance) {
-    std::string luminaires;
+    SceneBuilder corridor;
     for (int i = 0; i < 12; ++i)
-        luminaires += std::string(i ? "," : "") + R"({"name": "l)" + std::to_string(i) + R"(", "shape": "rect", "center": [)" +
-                      std::to_string(1 + 2 * i) + R"(,1,2.9], "normal": [0,0,-1], "size": [0.5,0.5], "flux_lm": 2000})";
-    std::string json = R"({"luxplan": 1, "luminaires": [)" + luminaires + R"(],
-      "samplers": [{"name": "p", "type": "planar", "center": [1,1,0.8], "size": [0.001,0.001], "grid": [1,1], "target": [0, null]}]})";
+        corridor.emitter(std::string(1, 'l').append(std::to_string(i)), rectEmitter({double(1 + 2 * i), 1, 2.9}, {0, 0, -1}, {0, 1, 0}, {0.5, 0.5}), 2000);
+    const Scene scene = corridor.sampler("p", point({1, 1, 0.8}), 0).build();
     PathTracerOptions uniform;
     uniform.emitterSelection = EmitterSelection::Uniform;
-    test::Lab byPower(json), byUniform(json, uniform);
+    SceneLab byPower(scene), byUniform(scene, uniform);
     SamplerResult a = byPower.measure(20000).samplers[0], b = byUniform.measure(20000).samplers[0];
     EXPECT_NEAR(a.value, b.value, 4 * std::hypot(a.standardError, b.standardError));
     EXPECT_LT(a.standardError, 0.5 * b.standardError);
@@ -262,11 +280,13 @@ TEST(EmitterSelection, PowerDistanceAgreesWithUniformAndHasLessVariance) {
 
 // A stand lamp carried by a movable entity lights the table it is moved to.
 TEST(CarriedEmitters, FollowTheLayout) {
-    test::Lab lab(R"({"luxplan": 1,
-      "entities": [{"name": "lamp", "position": [0, 0],
-                    "placement": {"regions": [{"min": [0,0], "max": [10,0]}]},
-                    "emitters": [{"name": "bulb", "shape": "sphere", "center": [0,0,1.5], "radius": 0.05, "flux_lm": 1000}]}],
-      "samplers": [{"name": "p", "type": "planar", "center": [5,0,0.75], "size": [0.001,0.001], "grid": [1,1], "target": [0, null]}]})");
+    SceneLab lab(SceneBuilder()
+                     .entity("lamp", {0, 0, 0})
+                     .region({0, 0}, {10, 0})
+                     .emitter("bulb", sphereEmitter({0, 0, 1.5}, 0.05), 1000)
+                     .end()
+                     .sampler("p", point({5, 0, 0.75}), 0)
+                     .build());
     double far = lab.measure(2000).samplers[0].value;
     Layout layout = initialLayout(lab.scene);
     layout.placements[0].position = {5, 0, 0};

@@ -1,31 +1,36 @@
 // Rays against the Embree scene: openings let rays out, instances move with the layout.
 #include <gtest/gtest.h>
 
-#include <luxplan/io/scene_loader.h>
+#include <luxplan/emitters/emitter_shape.h>
 #include <luxplan/rt/embree_scene.h>
-#include "support/temp_files.h"
+#include <luxplan/scene/layout.h>
+#include "support/scene_builder.h"
 
 namespace luxplan {
 namespace {
 
-const char* kScene = R"({
-  "luxplan": 1,
-  "materials": {"floor": {"type": "diffuse", "reflectance": 0.3}, "wall": {"type": "diffuse", "reflectance": 0.7},
-                "glass": {"type": "glass", "transmittance": 0.8}, "wood": {"type": "diffuse", "reflectance": 0.5}},
-  "geometry": [{"name": "room", "room": {"min": [0,0,0], "max": [6,4,3]},
-                "materials": {"floor": "floor", "walls": "wall", "ceiling": "wall"},
-                "openings": [{"wall": "south", "offset": 1.0, "width": 1.0, "sill": 1.0, "height": 1.0},
-                             {"wall": "south", "offset": 4.0, "width": 1.0, "sill": 1.0, "height": 1.0, "material": "glass"}]},
-               {"name": "walkway", "box": {"min": [2,2,0], "max": [3,3,2]}, "invisible": true}],
-  "luminaires": [{"name": "disk", "shape": "disk", "center": [5,3,2.9], "normal": [0,0,-1], "radius": 0.2, "flux_lm": 1000}],
-  "entities": [{"name": "table", "position": [3, 2],
-                "placement": {"regions": [{"min": [1,1], "max": [5,3], "rotations": [0, 90]}]},
-                "parts": [{"box": {"size": [1, 0.6, 0.75]}, "material": "wood"}]}]
-})";
+using test::diffuse;
+
+Scene makeScene() {
+    return test::SceneBuilder()
+        .material("floor", diffuse(0.3))
+        .material("wall", diffuse(0.7))
+        .material("glass", test::glass(0.8))
+        .material("wood", diffuse(0.5))
+        .room({0, 0, 0}, {6, 4, 3}, "floor", "wall", "wall")
+        .window(Wall::South, 1.0, 1.0, 1.0, 1.0)
+        .window(Wall::South, 4.0, 1.0, 1.0, 1.0, "glass")
+        .blocker("walkway", {2, 2, 0}, {3, 3, 2})
+        .emitter("disk", diskEmitter({5, 3, 2.9}, {0, 0, -1}, 0.2), 1000)
+        .entity("table", {3, 2, 0})
+        .region({1, 1}, {5, 3}, {0, 90})
+        .part({1, 0.6, 0.75}, "wood")
+        .end()
+        .build();
+}
 
 struct Fixture : ::testing::Test {
-    test::TempDir dir;
-    Scene scene = io::loadScene(dir.write("scene.json", kScene));
+    Scene scene = makeScene();
 };
 
 TEST_F(Fixture, RayThroughAnOpenOpeningEscapes) {

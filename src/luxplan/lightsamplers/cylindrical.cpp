@@ -72,6 +72,12 @@ public:
 
 }  // namespace
 
+std::shared_ptr<const SamplerType> cylindricalSampler(Vec3 center) {
+    auto s = std::make_shared<Cylindrical>();
+    s->center = center;
+    return s;
+}
+
 std::shared_ptr<const SamplerType> readCylindricalSampler(const json::Fields& f) {
     auto s = std::make_shared<Cylindrical>();
     s->center = f.vec3("center", true).value_or(Vec3());

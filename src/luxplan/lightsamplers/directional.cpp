@@ -2,6 +2,7 @@
 // cell of a strata x strata grid over a pyramidal frustum; its value is the
 // brightest cell's (glare on a screen, a presenter seen by the audience).
 #include <cmath>
+#include <stdexcept>
 
 #include <luxplan/lightsamplers/sampler_type.h>
 #include <luxplan/pathtracer/path_tracer.h>
@@ -92,6 +93,21 @@ public:
 };
 
 }  // namespace
+
+std::shared_ptr<const SamplerType> directionalSampler(Vec3 origin, Vec3 direction, Vec3 up, double fovDeg, int strata) {
+    if (length(direction) < 1e-12 || length(up) < 1e-12) throw std::invalid_argument("directional sampler: zero direction");
+    if (!(fovDeg > 0 && fovDeg < 180)) throw std::invalid_argument("directional sampler: fov_deg must lie in (0, 180)");
+    if (strata < 1 || strata > 256) throw std::invalid_argument("directional sampler: strata must lie in [1, 256]");
+    auto s = std::make_shared<Directional>();
+    s->origin = origin;
+    s->direction = normalize(direction);
+    s->up = normalize(up);
+    if (length(cross(s->up, s->direction)) < 1e-6)
+        throw std::invalid_argument("directional sampler: \"up\" is parallel to \"direction\"");
+    s->fovDeg = fovDeg;
+    s->strata = strata;
+    return s;
+}
 
 std::shared_ptr<const SamplerType> readDirectionalSampler(const json::Fields& f) {
     auto s = std::make_shared<Directional>();

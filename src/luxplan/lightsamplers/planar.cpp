@@ -1,6 +1,7 @@
 // Planar sampler: illuminance (lx) at the centres of the cells of a grid on a
 // rectangle, e.g. a desk's work plane; its value is the mean over the points.
 #include <cmath>
+#include <stdexcept>
 
 #include <luxplan/lightsamplers/sampler_type.h>
 #include <luxplan/pathtracer/path_tracer.h>
@@ -71,6 +72,21 @@ public:
 };
 
 }  // namespace
+
+std::shared_ptr<const SamplerType> planarSampler(Vec3 center, Vec3 normal, Vec3 up, Vec2 size, std::array<int, 2> grid) {
+    if (length(normal) < 1e-12 || length(up) < 1e-12) throw std::invalid_argument("planar sampler: zero direction");
+    auto s = std::make_shared<Planar>();
+    s->center = center;
+    s->normal = normalize(normal);
+    s->up = normalize(up);
+    if (length(cross(s->up, s->normal)) < 1e-6) throw std::invalid_argument("planar sampler: \"up\" is parallel to \"normal\"");
+    if (size.x <= 0 || size.y <= 0) throw std::invalid_argument("planar sampler has zero area");
+    if (grid[0] < 1 || grid[1] < 1 || grid[0] > 1024 || grid[1] > 1024)
+        throw std::invalid_argument("planar sampler: grid counts must lie in [1, 1024]");
+    s->size = size;
+    s->grid = grid;
+    return s;
+}
 
 std::shared_ptr<const SamplerType> readPlanarSampler(const json::Fields& f) {
     auto s = std::make_shared<Planar>();

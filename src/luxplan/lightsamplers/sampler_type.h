@@ -5,6 +5,7 @@
 // docs/architecture.md walks through adding one.
 #pragma once
 
+#include <array>
 #include <memory>
 #include <optional>
 #include <string>
@@ -73,6 +74,14 @@ struct SamplerTypeEntry {
     const char* name;
     std::shared_ptr<const SamplerType> (*read)(const json::Fields& f);
 };
+
+// Constructed in C++ (tests, tools), each built as its reader builds it: directions
+// are normalized, and what the reader reports as an error throws
+// std::invalid_argument. Defined in the type's own file.
+std::shared_ptr<const SamplerType> planarSampler(Vec3 center, Vec3 normal, Vec3 up, Vec2 size, std::array<int, 2> grid);
+std::shared_ptr<const SamplerType> directionalSampler(Vec3 origin, Vec3 direction, Vec3 up, double fovDeg, int strata);
+std::shared_ptr<const SamplerType> volumeSampler(Vec3 center, std::array<Vec3, 3> axes, int points);
+std::shared_ptr<const SamplerType> cylindricalSampler(Vec3 center);
 
 // Every sampler type, in the order the docs list them (sampler_registry.cpp).
 const std::vector<SamplerTypeEntry>& samplerTypes();

@@ -1,6 +1,7 @@
 // Volume sampler: the mean spherical luminance (cd/m2) at Halton points in an
 // oriented box, e.g. the space a presenter stands in; its value is their mean.
 #include <cmath>
+#include <stdexcept>
 
 #include <luxplan/lightsamplers/sampler_type.h>
 #include <nlohmann/json.hpp>
@@ -74,6 +75,17 @@ public:
 };
 
 }  // namespace
+
+std::shared_ptr<const SamplerType> volumeSampler(Vec3 center, std::array<Vec3, 3> axes, int points) {
+    if (std::abs(dot(cross(axes[0], axes[1]), axes[2])) < 1e-12)
+        throw std::invalid_argument("volume sampler: the box has zero volume (side vectors are degenerate)");
+    if (points < 1 || points > 1000000) throw std::invalid_argument("volume sampler: points must lie in [1, 1000000]");
+    auto s = std::make_shared<Volume>();
+    s->center = center;
+    s->axes = axes;
+    s->points = points;
+    return s;
+}
 
 std::shared_ptr<const SamplerType> readVolumeSampler(const json::Fields& f) {
     auto s = std::make_shared<Volume>();
