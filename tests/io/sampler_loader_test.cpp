@@ -2,6 +2,7 @@
 // tests/lightsamplers/cylindrical_test.cpp, which builds its scenes in C++).
 #include <gtest/gtest.h>
 
+#include <luxplan/core/error.h>
 #include <luxplan/io/scene_loader.h>
 #include "support/temp_files.h"
 
