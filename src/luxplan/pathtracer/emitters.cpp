@@ -6,7 +6,8 @@ EmitterSet::EmitterSet(const Scene& scene, const std::vector<Transform>& world, 
     : selection_(selection) {
     for (const Emitter& e : scene.emitters) {
         Transform t = e.entity >= 0 ? world[e.entity] : Transform();
-        emitters_.push_back({e.shape->transformed(t), emitterLuminance(e), e.fluxLm});
+        auto shape = e.shape->transformed(t);
+        emitters_.push_back({shape, emitterLuminance(e), e.fluxLm, shape->center(), shape->reach(), shape->normal()});
     }
 }
 
@@ -14,11 +15,10 @@ double EmitterSet::importance(size_t i, const Vec3& p) const {
     const WorldEmitter& e = emitters_[i];
     if (e.flux <= 0) return 0;
     if (selection_ == EmitterSelection::Uniform) return 1;
-    Vec3 d = e.shape->center() - p;
-    double reach = e.shape->reach();
+    Vec3 d = e.center - p;
     // A one-sided emitter lights nothing behind its plane.
-    if (auto n = e.shape->normal(); n && dot(-d, *n) <= 0) return 0;
-    return e.flux / std::max(lengthSquared(d), reach * reach);
+    if (e.normal && dot(-d, *e.normal) <= 0) return 0;
+    return e.flux / std::max(lengthSquared(d), e.reach * e.reach);
 }
 
 double EmitterSet::selectionProbability(size_t i, const Vec3& p) const {
@@ -34,8 +34,7 @@ double EmitterSet::pdf(size_t i, const Vec3& p, const Vec3& onEmitter) const {
 
 double EmitterSet::emitted(size_t i, const Vec3& w) const {
     const WorldEmitter& e = emitters_[i];
-    auto n = e.shape->normal();
-    return !n || dot(w, *n) < 0 ? e.luminance : 0.0;
+    return !e.normal || dot(w, *e.normal) < 0 ? e.luminance : 0.0;
 }
 
 EmitterSample EmitterSet::sample(const Vec3& p, double uSelect, Vec2 u) const {

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include <luxplan/emitters/emitter_shape.h>
@@ -16,6 +17,11 @@ struct WorldEmitter {
     std::shared_ptr<const EmitterShape> shape;  // world frame
     double luminance = 0;  // cd/m^2 (flux / (pi A))
     double flux = 0;       // lm
+    // What the emitter choice reads for every emitter at every vertex, copied out of
+    // the shape once per layout so the hot loop makes no virtual calls.
+    Vec3 center;
+    double reach = 0;
+    std::optional<Vec3> normal;  // one-sided emitters
 };
 
 // A sampled point on an emitter as seen from a shading point.
