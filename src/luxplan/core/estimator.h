@@ -24,6 +24,13 @@ public:
         ++count_;
     }
 
+    // n samples that are exactly 0 (a path that added nothing to this estimate).
+    void addZeros(uint64_t n) { count_ += n; }
+    // The estimator of both sample sets together.
+    void merge(const MeanEstimator& o) {
+        sum_ += o.sum_, sumSquares_ += o.sumSquares_, count_ += o.count_, dropped_ += o.dropped_;
+    }
+
     uint64_t count() const { return count_; }
     uint64_t dropped() const { return dropped_; }
 

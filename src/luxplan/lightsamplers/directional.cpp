@@ -1,6 +1,29 @@
 // Directional sampler: the mean luminance (cd/m2) seen from an eye through each
 // cell of a strata x strata grid over a pyramidal frustum; its value is the
 // brightest cell's (glare on a screen, a presenter seen by the audience).
+//
+// A cell's mean is over its area on the image plane at unit distance, as a pinhole
+// camera's pixel averages: response 1 / (A_cell cos^3) in every cell. A stratum's
+// primary rays are uniform in its cell, with that density, so light sampling at the
+// eye works: a sun, a window's sky or a lamp in view is sampled directly and
+// combined with the primary ray by MIS, and each light sample counts in the cell its
+// direction falls in. Every stratum's estimate is then the mean over all the
+// sampler's paths (sharesPaths): a path adds its primary ray's value, times the
+// number of strata, to its own stratum (so that those paths keep their weight) and
+// each light sample's to the stratum it falls in. The MIS weights compare a light's
+// density with one stratum's (not the whole frustum's), which keeps primary rays in
+// charge of what they see well (a window's sky) and light sampling of what they
+// miss (the sun, a small lamp); any such split is unbiased.
+//
+// The max over noisy strata would read high, the more so the fewer the paths. So
+// the value is cross-fitted: for each fold of paths (ItemEstimates), the brightest
+// stratum is chosen with the other folds and measured with that fold alone, and the
+// value is the mean over the folds. Each fold's value is then that of a real stratum,
+// unbiased for it: the estimate can only fall short of the true max, by what a wrong
+// choice among near-equal strata costs (measured in docs/light-transport.md), and
+// does not grow as paths shrink. Its standard error is the spread of the fold
+// values, so it includes how the choice varies.
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -10,39 +33,147 @@
 namespace luxplan {
 namespace {
 
-class PlacedDirectional final : public PlacedSampler {
-public:
+struct Frustum {
     Vec3 eye, forward, right, up;
     double tanHalfFov = 0;
     int strata = 0;
 
-    int items() const override { return strata * strata; }
+    double planeArea() const { return 4 * tanHalfFov * tanHalfFov; }
+    // The stratum whose cell the unit direction w passes through, or -1 outside.
+    int cellOf(const Vec3& w) const {
+        double z = dot(w, forward);
+        if (z <= 0) return -1;
+        double a = dot(w, right) / z / tanHalfFov, b = dot(w, up) / z / tanHalfFov;
+        if (!(std::abs(a) <= 1 && std::abs(b) <= 1)) return -1;
+        int i = std::clamp(int((a + 1) / 2 * strata), 0, strata - 1);
+        int j = std::clamp(int((b + 1) / 2 * strata), 0, strata - 1);
+        return j * strata + i;
+    }
+    // A stratum's density per unit solid angle at the unit direction w, 1 / (A_cell
+    // cos^3 theta): its primary rays' pdf and the cells' response; 0 outside.
+    double density(const Vec3& w) const {
+        if (cellOf(w) < 0) return 0;
+        double c = dot(w, forward);
+        return double(strata) * strata / (planeArea() * c * c * c);
+    }
+};
 
-    // A direction spread uniformly over the stratum's cell of the image plane; the
-    // strata are row-major, right fastest, bottom row first.
-    double sample(const PathTracer& tracer, int item, Rng& rng, RayStats& stats) const override {
-        int i = item % strata, j = item / strata;
-        double a = (-1 + 2 * (i + rng.uniform()) / strata) * tanHalfFov;
-        double b = (-1 + 2 * (j + rng.uniform()) / strata) * tanHalfFov;
-        Vec3 d = normalize(forward + right * a + up * b);
-        return tracer.sample(RaySensor({eye, d}), rng, stats);
+// The frustum as a sensor whose primary rays fall in one stratum's cell.
+class FrustumSensor final : public Sensor {
+public:
+    FrustumSensor(const Frustum& f, int stratum) : f_(f), i_(stratum % f.strata), j_(stratum / f.strata) {}
+    Vec3 position() const override { return f_.eye; }
+    bool isDelta() const override { return false; }
+    double response(const Vec3& wi) const override { return f_.density(wi); }
+    double pdf(const Vec3& wi) const override { return f_.density(wi); }
+    SensorSample sample(Vec2 u) const override {
+        double a = (-1 + 2 * (i_ + u.x) / f_.strata) * f_.tanHalfFov;
+        double b = (-1 + 2 * (j_ + u.y) / f_.strata) * f_.tanHalfFov;
+        Vec3 d = normalize(f_.forward + f_.right * a + f_.up * b);
+        return {d, 1, f_.density(d), false};  // response / pdf = 1
     }
 
-    // The brightest stratum, with that stratum's own error (the selection among
-    // noisy strata is not part of it).
-    Estimate combine(const std::vector<double>& means, const std::vector<double>& errors) const override {
-        Estimate e;
-        if (means.empty()) return e;
+private:
+    const Frustum& f_;
+    int i_, j_;
+};
+
+class PlacedDirectional final : public PlacedSampler {
+public:
+    Frustum frustum;
+
+    int items() const override { return frustum.strata * frustum.strata; }
+    bool sharesPaths() const override { return true; }
+
+    // The strata are row-major, right fastest, bottom row first.
+    void sample(const PathTracer& tracer, int item, Rng& rng, RayStats& stats, PathContributions& out) const override {
+        SensorLight light;
+        out.add(item, items() * tracer.sample(FrustumSensor(frustum, item), rng, stats, nullptr, &light));
+        for (int k = 0; k < light.count; ++k) {
+            int cell = frustum.cellOf(light.wi[k]);
+            if (cell >= 0) out.add(cell, light.value[k]);
+        }
+    }
+
+    // The stratum to measure, chosen from other paths' means and their standard
+    // errors: the best of the means shrunk towards their neighbours' (empirical
+    // Bayes). Each mean m_i, of variance s_i^2, is blended with the mean of its
+    // eight neighbours, n_i (sides weigh 2, corners 1), as (t^2 m_i + s_i^2 n_i) /
+    // (t^2 + s_i^2), where t^2 is how much strata truly differ from their
+    // neighbours, estimated over the frustum. Near-equal noisy strata of a smooth
+    // field (a lit wall) are judged by their neighbourhood, a precise one (a window's
+    // sky, the sun) by itself, and with many paths the choice is the plain max.
+    // Whatever the rule, the chosen stratum is measured with paths it did not see.
+    size_t brightest(const std::vector<double>& mean, const std::vector<double>& error) const {
+        const int s = frustum.strata;
+        const size_t n = mean.size();
+        std::vector<double> nbr(n), nbrVar(n);
+        double spread = 0;
+        for (int j = 0; j < s; ++j)
+            for (int i = 0; i < s; ++i) {
+                double sum = 0, weight = 0, var = 0;
+                for (int dj = -1; dj <= 1; ++dj)
+                    for (int di = -1; di <= 1; ++di) {
+                        int x = i + di, y = j + dj;
+                        if ((di == 0 && dj == 0) || x < 0 || y < 0 || x >= s || y >= s) continue;
+                        double w = (di == 0 || dj == 0) ? 2 : 1;
+                        size_t k = size_t(y * s + x);
+                        sum += w * mean[k], var += w * w * error[k] * error[k], weight += w;
+                    }
+                size_t k = size_t(j * s + i);
+                nbr[k] = sum / weight, nbrVar[k] = var / (weight * weight);
+                double d = mean[k] - nbr[k];
+                spread += d * d - error[k] * error[k] - nbrVar[k];
+            }
+        const double t2 = std::max(0.0, spread / double(n));
         size_t best = 0;
-        for (size_t i = 1; i < means.size(); ++i)
-            if (means[i] > means[best]) best = i;
-        e.value = means[best];
-        e.standardError = errors[best];
-        return e;
+        double bestScore = -kInf;
+        for (size_t k = 0; k < n; ++k) {
+            double s2 = error[k] * error[k];
+            double score = (t2 + s2) > 0 ? (t2 * mean[k] + s2 * nbr[k]) / (t2 + s2) : mean[k];
+            if (score > bestScore) bestScore = score, best = k;
+        }
+        return best;
+    }
+
+    Estimate combine(const ItemEstimates& e) const override {
+        const int n = e.items();
+        std::vector<double> value, weight;  // per fold with paths
+        std::vector<double> mean(static_cast<size_t>(n)), error(static_cast<size_t>(n));
+        for (int g = 0; g < ItemEstimates::kFolds && n > 1; ++g) {
+            const unsigned fold = 1u << g;
+            const double paths = double(e.paths(0, fold));  // the same for every stratum
+            if (paths == 0) continue;
+            for (int i = 0; i < n; ++i) {
+                Estimate x = e.of(i, ItemEstimates::kAllFolds & ~fold);
+                mean[size_t(i)] = x.value, error[size_t(i)] = x.standardError;
+            }
+            value.push_back(e.of(int(brightest(mean, error)), fold).value);
+            weight.push_back(paths);
+        }
+        Estimate r;
+        if (value.size() < 2) {
+            // One stratum, or too few paths to hold one fold out: the best stratum.
+            for (int i = 0; i < n; ++i) {
+                Estimate x = e.of(i);
+                mean[size_t(i)] = x.value, error[size_t(i)] = x.standardError;
+            }
+            if (n > 0) r = e.of(int(brightest(mean, error)));
+            return r;
+        }
+        double total = 0;
+        for (double w : weight) total += w;
+        for (size_t g = 0; g < value.size(); ++g) r.value += weight[g] / total * value[g];
+        double var = 0;
+        for (size_t g = 0; g < value.size(); ++g) var += std::pow(weight[g] / total * (value[g] - r.value), 2);
+        r.standardError = std::sqrt(var * double(value.size()) / double(value.size() - 1));
+        return r;
     }
 
     // The apex and the frustum's four edge rays, 1 m long.
     SamplerDrawing drawing() const override {
+        const Vec3 &eye = frustum.eye, &forward = frustum.forward, &right = frustum.right, &up = frustum.up;
+        const double tanHalfFov = frustum.tanHalfFov;
         const double reach = 1.0;
         SamplerDrawing d;
         d.outline.push_back(eye);
@@ -70,12 +201,13 @@ public:
 
     std::unique_ptr<PlacedSampler> place(const Transform& world) const override {
         auto p = std::make_unique<PlacedDirectional>();
-        p->eye = world.applyPoint(origin);
-        p->forward = normalize(world.applyVector(direction));
-        p->right = normalize(cross(p->forward, world.applyVector(up)));
-        p->up = cross(p->right, p->forward);
-        p->tanHalfFov = std::tan(radians(fovDeg) / 2);
-        p->strata = strata;
+        Frustum& f = p->frustum;
+        f.eye = world.applyPoint(origin);
+        f.forward = normalize(world.applyVector(direction));
+        f.right = normalize(cross(f.forward, world.applyVector(up)));
+        f.up = cross(f.right, f.forward);
+        f.tanHalfFov = std::tan(radians(fovDeg) / 2);
+        f.strata = strata;
         return p;
     }
 

@@ -1,17 +1,20 @@
 // The interface every light sampler type implements (the paper's Section 4): how it
 // is read from the scene file, placed in the world, measured by the path tracer,
 // combined into one value, described and drawn. Each type is one file of this folder
-// (planar.cpp, directional.cpp, volume.cpp) and one line of sampler_registry.cpp;
+// (planar.cpp, directional.cpp, volume.cpp, cylindrical.cpp) and one line of sampler_registry.cpp;
 // docs/architecture.md walks through adding one.
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include <luxplan/core/estimator.h>
 #include <luxplan/core/math.h>
 #include <luxplan/json/fields.h>
 
@@ -25,6 +28,69 @@ struct RayStats;
 struct Estimate {
     double value = 0;
     double standardError = 0;
+};
+
+// What one path adds to a sampler's items: to the item it was traced for and, for a
+// type whose paths reach other items too (sharesPaths()), to those. At most
+// kCapacity distinct items per path; adding to an item already there sums.
+class PathContributions {
+public:
+    static constexpr int kCapacity = 8;
+    explicit PathContributions(int item) : item_(item) {}
+    int item() const { return item_; }
+    void add(double value) { add(item_, value); }  // to the path's own item
+    void add(int item, double value) {
+        for (int k = 0; k < count_; ++k)
+            if (items_[k] == item) {
+                values_[k] += value;
+                return;
+            }
+        if (count_ == kCapacity) throw std::logic_error("PathContributions: more than kCapacity items in one path");
+        items_[count_] = item, values_[count_] = value, ++count_;
+    }
+    int size() const { return count_; }
+    int itemAt(int k) const { return items_[k]; }
+    double valueAt(int k) const { return values_[k]; }
+    bool finite() const {
+        for (int k = 0; k < count_; ++k)
+            if (!std::isfinite(values_[k])) return false;
+        return true;
+    }
+
+private:
+    int item_;
+    int count_ = 0;
+    std::array<int, kCapacity> items_{};
+    std::array<double, kCapacity> values_{};
+};
+
+// The estimates of a sampler's items, from all paths or from some folds: a path
+// goes to fold (path index mod kFolds), so folds are independent and a type can
+// choose among its items with some folds and measure the choice with another (the
+// directional sampler's brightest stratum). Paths traced for different items are
+// strata of one stratified estimate: an item's standard error sums the variances
+// within each item's paths, not across them (a sampler sharing paths draws a fixed
+// number of paths per item).
+class ItemEstimates {
+public:
+    static constexpr int kFolds = 8;
+    static constexpr unsigned kAllFolds = (1u << kFolds) - 1;
+
+    // `sources`: how many items' paths reach each item (1 unless the sampler shares
+    // paths, then all of them).
+    ItemEstimates(int items, int sources);
+    int items() const { return items_; }
+    // What the paths traced for item `source` added to `item` in fold `fold`.
+    MeanEstimator& cell(int item, int source, int fold) { return cells_[index(item, source, fold)]; }
+    // Item `item` estimated from the folds whose bits are set in `folds`.
+    Estimate of(int item, unsigned folds = kAllFolds) const;
+    // How many paths of those folds reach `item`.
+    uint64_t paths(int item, unsigned folds = kAllFolds) const;
+
+private:
+    size_t index(int item, int source, int fold) const { return (size_t(item) * sources_ + source) * kFolds + fold; }
+    int items_, sources_;
+    std::vector<MeanEstimator> cells_;
 };
 
 // How the floor plan shows a sampler (output/plan.cpp), in world space.
@@ -41,13 +107,19 @@ struct SamplerDrawing {
 class PlacedSampler {
 public:
     virtual ~PlacedSampler() = default;
-    // How many independent estimates it is made of: its points, or its strata.
+    // How many estimates it is made of: its points, or its strata.
     virtual int items() const = 0;
-    // One path's contribution to estimate `item`, in the type's unit.
-    virtual double sample(const PathTracer& tracer, int item, Rng& rng, RayStats& stats) const = 0;
-    // The sampler's value from its items' means and standard errors. Default: the
-    // mean of the items, whose error is the root sum of squares over their count.
-    virtual Estimate combine(const std::vector<double>& means, const std::vector<double>& errors) const;
+    // Traces one path for `item` and adds what it contributes, in the type's unit.
+    virtual void sample(const PathTracer& tracer, int item, Rng& rng, RayStats& stats, PathContributions& out) const = 0;
+    // Whether a path traced for one item may add to others. If so, every item's
+    // estimate is the mean over all the sampler's paths (each path then adds its
+    // contribution times items(), so that an item's own paths keep their weight).
+    // Otherwise an item's estimate is the mean over its own paths, and sample()
+    // adds to that item only.
+    virtual bool sharesPaths() const { return false; }
+    // The sampler's value from its items' estimates. Default: the mean of the items,
+    // whose error is the root sum of squares over their count.
+    virtual Estimate combine(const ItemEstimates& items) const;
     virtual SamplerDrawing drawing() const = 0;
 };
 

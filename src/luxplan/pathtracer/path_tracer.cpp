@@ -60,7 +60,9 @@ double PathTracer::transmittance(const Vec3& origin, const Vec3& w, double tMax,
     return 0;
 }
 
-double PathTracer::sample(const Sensor& sensor, Rng& rng, RayStats& stats, bool* hitEmitterFirst) const {
+double PathTracer::sample(const Sensor& sensor, Rng& rng, RayStats& stats, bool* hitEmitterFirst,
+                          SensorLight* sensorLight) const {
+    if (sensorLight) sensorLight->count = 0;
     const Vec3 origin = sensor.position();
     Vec3 L, throughput(1, 1, 1);
     Vertex v;
@@ -103,7 +105,13 @@ double PathTracer::sample(const Sensor& sensor, Rng& rng, RayStats& stats, bool*
                 double T = transmittance(spawn(v, wi), wi, maxT, target, stats);
                 if (T <= 0) return;
                 double w = powerHeuristic(1, lightPdf, 1, pdfOf(v, wi));
-                L += throughput * f * Le * (T * w / lightPdf);
+                Vec3 contribution = throughput * f * Le * (T * w / lightPdf);
+                if (depth == 0 && sensorLight) {
+                    sensorLight->wi[sensorLight->count] = wi;
+                    sensorLight->value[sensorLight->count++] = luminance(contribution);
+                } else {
+                    L += contribution;
+                }
             };
             if (!emitters_.empty()) {
                 EmitterSample s = emitters_.sample(v.p, rng.uniform(), {rng.uniform(), rng.uniform()});

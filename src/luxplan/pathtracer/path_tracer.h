@@ -33,6 +33,16 @@ struct RayStats {
     RayStats& operator+=(const RayStats& o) { closest += o.closest, shadow += o.shadow; return *this; }
 };
 
+// The light a path's next-event estimation found at the sensor itself, reported apart
+// from the path's value with its direction: a sensor made of cells (the directional
+// sampler's strata) counts each sample in the cell its direction falls in.
+struct SensorLight {
+    static constexpr int kCapacity = 3;  // one sample per light kind: emitters, sun, sky
+    int count = 0;
+    Vec3 wi[kCapacity];
+    double value[kCapacity] = {};  // response * Le * T * MIS weight / pdf, luminance
+};
+
 class PathTracer {
 public:
     // `daylight` may be null (night). The scene's current layout places carried emitters.
@@ -44,7 +54,10 @@ public:
     // One path's estimate of what `sensor` measures (average many for the value).
     // `hitEmitterFirst`, when given, tells whether the first ray from a delta sensor
     // hit a luminaire (the value is then its luminance alone: emitters end paths).
-    double sample(const Sensor& sensor, Rng& rng, RayStats& stats, bool* hitEmitterFirst = nullptr) const;
+    // `sensorLight`, when given, receives the light sampled at the sensor instead of
+    // the returned value (which then holds the rest of the path's).
+    double sample(const Sensor& sensor, Rng& rng, RayStats& stats, bool* hitEmitterFirst = nullptr,
+                  SensorLight* sensorLight = nullptr) const;
     // The same for the usual sensors: illuminance (lx) at p over the hemisphere around
     // unit n, and the luminance arriving along a ray (cd/m^2).
     double illuminanceSample(const Vec3& p, const Vec3& n, Rng& rng, RayStats& stats) const {
