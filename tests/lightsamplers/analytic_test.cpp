@@ -278,6 +278,24 @@ TEST(EmitterSelection, PowerDistanceAgreesWithUniformAndHasLessVariance) {
     EXPECT_LT(a.standardError, 0.5 * b.standardError);
 }
 
+// Luminaires shadow one another as a path sees them: a point under a panel that
+// faces away (its dark back) and another panel above it that faces the point gets no
+// light at all; with the first panel moved aside, the second one's analytic value.
+TEST(EmitterShadows, ALuminaireBlocksTheLightOfAnotherBehindIt) {
+    const double flux = 4000, side = 0.6, h = 2.5 - 0.8;
+    auto scene = [&](double lowerX) {
+        return SceneBuilder()
+            .emitter("facing_up", rectEmitter({lowerX, 0, 2}, {0, 0, 1}, {0, 1, 0}, {1, 1}), flux)
+            .emitter("facing_down", rectEmitter({0, 0, 2.5}, {0, 0, -1}, {0, 1, 0}, {side, side}), flux)
+            .sampler("p", point({0, 0, 0.8}), 0)
+            .build();
+    };
+    EXPECT_EQ(SceneLab(scene(0)).measure(2000).samplers[0].value, 0.0);
+    SamplerResult aside = SceneLab(scene(5)).measure(2000).samplers[0];
+    const double L = flux / (kPi * side * side);
+    expectWithin(aside, rectIlluminance(L, -side / 2, side / 2, -side / 2, side / 2, 0, 0, h), 2e-3, "unblocked");
+}
+
 // A stand lamp carried by a movable entity lights the table it is moved to.
 TEST(CarriedEmitters, FollowTheLayout) {
     SceneLab lab(SceneBuilder()

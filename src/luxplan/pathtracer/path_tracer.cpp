@@ -37,13 +37,25 @@ void PathTracer::updateLayout() {
 }
 
 double PathTracer::transmittance(const Vec3& origin, const Vec3& w, double tMax, int target, RayStats& stats) const {
-    // Opaque surfaces first, by an any-hit query. Towards an emitter, other luminaires
-    // are not counted as blockers (and the target itself cannot shadow itself); towards
-    // the sky and sun, luminaire bodies block.
+    // Opaque surfaces first, by an any-hit query. Luminaires block as a path sees
+    // them (they absorb what reaches them): towards the sky and sun all of them do,
+    // towards an emitter every other one, found by closest-hit queries that step past
+    // the target itself (float error in Embree's hit of the target, a grazing ray to
+    // a small sphere, must not shadow it).
     ++stats.shadow;
     unsigned blockers = kOpaqueMask | (target < 0 ? kEmitterMask : 0u);
     double opaqueEnd = target < 0 ? tMax : tMax * (1 - 1e-4);
     if (rt_.occluded({origin, w, 0, opaqueEnd, blockers})) return 0;
+    if (target >= 0 && emitters_.size() > 1) {
+        double tStart = 0;
+        for (int steps = 0; steps < 4; ++steps) {
+            ++stats.shadow;
+            auto hit = rt_.intersect({origin, w, tStart, opaqueEnd, kEmitterMask});
+            if (!hit) break;
+            if (hit->index != target) return 0;
+            tStart = hit->t + kRayEpsilon;
+        }
+    }
     if (!rt_.hasGlass()) return 1;
     // Then the panes in the way, one closest-hit query each.
     double T = 1, travelled = 0;

@@ -74,9 +74,8 @@ public:
 private:
     // Transmittance along p + t w up to tMax (the distance to the sampled point on
     // emitter `target`, or infinity for sun and sky): products of pane transmittances, 0
-    // when anything opaque is in the way. Emitters do not block shadow rays towards
-    // emitters, so that float error in Embree's intersection of the target itself (a
-    // grazing ray to a small sphere) cannot shadow a light.
+    // when anything opaque or another luminaire is in the way (the target itself never
+    // shadows itself).
     double transmittance(const Vec3& p, const Vec3& w, double tMax, int target, RayStats& stats) const;
 
     const EmbreeScene& rt_;
