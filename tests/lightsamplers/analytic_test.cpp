@@ -194,6 +194,26 @@ TEST(Analytic, SeveralPortalsSumTheirProjectedSolidAngles) {
     EXPECT_LT(a.standardError, 0.5 * b.standardError);
 }
 
+// An opening closed by an opaque panel (a door) is not a portal: the sky is sampled
+// through the open window alone, exactly as if the door were wall.
+TEST(Portals, AnOpeningClosedByAnOpaquePanelIsNotOne) {
+    auto scene = [](bool door) {
+        SceneBuilder b = withMaterials(0.5);
+        b.uniformSky(1000).room({0, 0, 0}, {4, 4, 3}, "grey", "grey", "grey").window(Wall::South, 1, 2, 1, 1.5);
+        if (door) b.window(Wall::North, 1, 1.5, 0, 2.1, "grey");
+        return b.sampler("p", point({2, 2, 0.8}), 0).build();
+    };
+    SceneLab closed(scene(true));
+    SkyLight sky(closed.scene, &*closed.daylight, true);
+    SkyLight::View view;
+    sky.view({2, 2, 0.8}, view);
+    EXPECT_TRUE(view.active);
+    EXPECT_EQ(view.count, 1);
+    SamplerResult withDoor = closed.measure(2000).samplers[0];
+    SamplerResult without = SceneLab(scene(false)).measure(2000).samplers[0];
+    EXPECT_NEAR(withDoor.value, without.value, 4 * std::hypot(withDoor.standardError, without.standardError));
+}
+
 TEST(Analytic, SunPatchFallsWhereGeometryPutsIt) {
     // Sun from the south at 45 degrees through a 2 x 1 m opening with sill 1 m: the patch
     // on the floor spans x in [2, 4], y in [1, 2] (up to the disk's half-degree blur).

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 
+#include <luxplan/materials/bsdf.h>
 #include <luxplan/scene/room.h>
 
 namespace luxplan {
@@ -17,6 +18,8 @@ SkyLight::SkyLight(const Scene& scene, const DaylightEnvironment* daylight, bool
         // outside: a millimetre of slack keeps them on the portal side.
         room_ = Bounds3(room->box.lo - Vec3(1e-3, 1e-3, 1e-3), room->box.hi + Vec3(1e-3, 1e-3, 1e-3));
         for (const Opening& o : room->openings) {
+            // An opening closed by an opaque panel (a door, a shutter) lets no sky in.
+            if (o.material && !makeBsdf(scene.materials[*o.material]).hasTransmission()) continue;
             WallFrame f = wallFrame(room->box, o.wall);
             auto r = openingRect(room->box, o);
             openings_.push_back({f.origin + f.u * r[0] + f.v * r[1], f.u * (r[2] - r[0]), f.v * (r[3] - r[1])});
