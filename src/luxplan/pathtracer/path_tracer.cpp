@@ -57,17 +57,20 @@ double PathTracer::transmittance(const Vec3& origin, const Vec3& w, double tMax,
         }
     }
     if (!rt_.hasGlass()) return 1;
-    // Then the panes in the way, one closest-hit query each.
-    double T = 1, travelled = 0;
+    // Then the panes in the way, one closest-hit query each, continuing from just
+    // beyond each pane along its normal (a step along a grazing ray could stay on the
+    // pane and cross it twice).
+    double T = 1;
     Vec3 p = origin;
     for (int crossings = 0; crossings < 16; ++crossings) {
         ++stats.shadow;
-        auto hit = rt_.intersect({p, w, 0, opaqueEnd - travelled, kGlassMask});
+        const double left = opaqueEnd - dot(p - origin, w);
+        if (left <= 0) return T;
+        auto hit = rt_.intersect({p, w, 0, left, kGlassMask});
         if (!hit) return T;
         T *= bsdfs_[hit->material].straightTransmittance(std::abs(dot(w, hit->geometricNormal)));
         if (T <= 0) return 0;
-        travelled += hit->t + kRayEpsilon;
-        p = hit->point + w * kRayEpsilon;
+        p = offsetAlong(hit->point, hit->geometricNormal, w);
     }
     return 0;
 }
@@ -210,7 +213,7 @@ double PathTracer::sample(const Sensor& sensor, Rng& rng, RayStats& stats, bool*
                 if (scatter <= 0) return luminance(L);
                 throughput = throughput * scatter;
                 if (rng.uniform() * scatter < r.transmittance) {
-                    o = hit->point + d * kRayEpsilon;
+                    o = offsetAlong(hit->point, hit->geometricNormal, d);
                 } else {
                     d = reflect(-d, hit->geometricNormal);
                     o = offsetAlong(hit->point, hit->geometricNormal, d);

@@ -27,6 +27,17 @@ EmbreeDevice::EmbreeDevice() {
     device_ = rtcNewDevice(nullptr);
     if (!device_) throw EmbreeError("cannot create the Embree device: " + std::string(errorName(rtcGetDeviceError(nullptr))));
     rtcSetDeviceErrorFunction(device_, &EmbreeDevice::onError, this);
+    // The tracer needs ray masks (shadow rays see opaque surfaces, panes and
+    // luminaires apart) and two-sided triangles; an Embree built otherwise would give
+    // wrong light silently.
+    const char* missing = nullptr;
+    if (rtcGetDeviceProperty(device_, RTC_DEVICE_PROPERTY_RAY_MASK_SUPPORTED) == 0) missing = "ray masks (EMBREE_RAY_MASK=ON)";
+    else if (rtcGetDeviceProperty(device_, RTC_DEVICE_PROPERTY_BACKFACE_CULLING_ENABLED) != 0)
+        missing = "two-sided triangles (EMBREE_BACKFACE_CULLING=OFF)";
+    if (missing) {
+        rtcReleaseDevice(device_);
+        throw EmbreeError(std::string("this Embree library was built without ") + missing + ", which luxplan needs");
+    }
 }
 
 EmbreeDevice::~EmbreeDevice() { rtcReleaseDevice(device_); }
