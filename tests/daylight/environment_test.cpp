@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <luxplan/core/rng.h>
+#include <luxplan/core/warp.h>
 #include <luxplan/daylight/daylight.h>
 #include <luxplan/daylight/preetham.h>
 #include "support/chi2.h"
@@ -281,6 +282,66 @@ TEST(SkyMap, PixelLookupAgreesWithPixelDirections) {
     double total = 0;
     for (int r = 0; r < 16; ++r) total += map.pixelSolidAngle(r) * 32;
     EXPECT_NEAR(total, 4 * kPi, 1e-12);
+}
+
+}  // namespace
+}  // namespace luxplan
+
+namespace luxplan {
+namespace {
+
+// sunLe and sunPdf look disks up by direction; they must find exactly the disks a scan
+// of all of them finds: near every disk's centre and rim, near the zenith, and at
+// random, for disks spread over the sky and crowded round the zenith.
+TEST(SunDiskIndex, FindsWhatAScanOfEveryDiskFinds) {
+    DaylightParams p;
+    p.model = SkyModelType::Uniform;
+    p.luminanceNits = 0;
+    p.sun = false;
+    DaylightEnvironment sky = buildDaylight(p, Site{}, {16, 8, 1});
+    std::vector<SunDisk> disks;
+    Rng rng(7);
+    for (int k = 0; k < 600; ++k) {
+        SunDisk s;
+        s.altitudeDeg = k < 500 ? 90 * rng.uniform() : 89 + rng.uniform();  // the last 100 at the zenith
+        s.azimuthDeg = 360 * rng.uniform();
+        s.direction = horizonToScene(s.altitudeDeg, s.azimuthDeg, 0);
+        s.weight = 1.0 / 600;
+        s.normalIlluminanceLx = 50000 + 100 * k;
+        s.luminance = s.weight * s.normalIlluminanceLx / kSunDiskProjectedSolidAngle;
+        disks.push_back(s);
+    }
+    DaylightEnvironment env(sky.skyMap(), disks, 0.0);
+    const double cosHalf = std::cos(radians(kSunAngularDiameterDeg / 2));
+    double total = 0;
+    for (const SunDisk& s : disks) total += s.luminance;
+    auto scan = [&](const Vec3& w, double& Lv, double& pdf) {
+        Lv = 0, pdf = 0;
+        for (const SunDisk& s : disks)
+            if (dot(w, s.direction) >= cosHalf - 1e-12) Lv += s.luminance, pdf += s.luminance / total;
+        pdf /= 2 * kPi * (1 - cosHalf);
+    };
+    std::vector<Vec3> probes;
+    for (const SunDisk& s : disks) {
+        Frame f = Frame::fromNormal(s.direction);
+        probes.push_back(s.direction);
+        for (double r : {0.5, 0.99, 1.0, 1.01})
+            for (int a = 0; a < 8; ++a) {
+                double phi = 2 * kPi * a / 8, t = r * radians(kSunAngularDiameterDeg / 2);
+                probes.push_back(f.toWorld(Vec3(std::sin(t) * std::cos(phi), std::sin(t) * std::sin(phi), std::cos(t))));
+            }
+    }
+    for (int k = 0; k < 20000; ++k) probes.push_back(sampleUniformSphere({rng.uniform(), rng.uniform()}));
+    probes.push_back({0, 0, 1});
+    int hits = 0;
+    for (const Vec3& w : probes) {
+        double Lv, pdf;
+        scan(w, Lv, pdf);
+        hits += Lv > 0;
+        ASSERT_NEAR(env.sunLv(w), Lv, 1e-9 * Lv) << w.x << " " << w.y << " " << w.z;
+        ASSERT_NEAR(env.sunPdf(w), pdf, 1e-9 * pdf);
+    }
+    EXPECT_GT(hits, 600 * 20);
 }
 
 }  // namespace

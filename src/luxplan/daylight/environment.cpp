@@ -1,6 +1,8 @@
 // SkyMap geometry and DaylightEnvironment: ground, illuminance integrals, lookups, sampling.
 #include <luxplan/daylight/environment.h>
 
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include <luxplan/core/warp.h>
@@ -95,6 +97,61 @@ DaylightEnvironment::DaylightEnvironment(SkyMap sky, std::vector<SunDisk> suns, 
         for (const SunDisk& s : suns_) weights.push_back(std::max(0.0, s.luminance));
         sunDistribution_ = Distribution1D(weights);
         sunIntegral_ = sunDistribution_.integral() * double(suns_.size()) * kSunSolidAngle;
+        indexSunDisks();
+    }
+}
+
+namespace {
+
+constexpr int kThetaCells = 180, kPhiCells = 360;  // 1-degree cells
+constexpr double kCell = kPi / kThetaCells;  // radians, both ways
+
+int thetaCell(double theta) { return std::clamp(int(theta / kCell), 0, kThetaCells - 1); }
+int phiCell(double phi) { return std::clamp(int((phi + kPi) / kCell), 0, kPhiCells - 1); }
+
+}  // namespace
+
+void DaylightEnvironment::indexSunDisks() {
+    // Each disk goes into every cell its cone (widened a little for the rim
+    // tolerance and rounding) may reach.
+    const double reach = kSunHalfAngle * 1.01 + 1e-6;
+    std::vector<std::vector<uint32_t>> cells(size_t(kThetaCells) * kPhiCells);
+    for (size_t k = 0; k < suns_.size(); ++k) {
+        const Vec3& d = suns_[k].direction;
+        const double theta = std::acos(std::clamp(d.z, -1.0, 1.0)), phi = std::atan2(d.y, d.x);
+        const double lo = theta - reach, hi = theta + reach;
+        const int t0 = thetaCell(std::max(0.0, lo)), t1 = thetaCell(std::min(kPi, hi));
+        int halfSpan = kPhiCells;  // near a pole: every phi
+        if (lo > 0 && hi < kPi) {
+            double s = std::sin(reach) / std::min(std::sin(lo), std::sin(hi));
+            if (s < 1) halfSpan = int(std::asin(s) / kCell) + 2;
+        }
+        const int p = phiCell(phi);
+        for (int t = t0; t <= t1; ++t) {
+            if (2 * halfSpan + 1 >= kPhiCells) {
+                for (int q = 0; q < kPhiCells; ++q) cells[size_t(t) * kPhiCells + q].push_back(uint32_t(k));
+            } else {
+                for (int q = p - halfSpan; q <= p + halfSpan; ++q)
+                    cells[size_t(t) * kPhiCells + size_t((q + kPhiCells) % kPhiCells)].push_back(uint32_t(k));
+            }
+        }
+    }
+    sunCellStart_.assign(1, 0);
+    sunCellDisks_.clear();
+    for (const auto& c : cells) {
+        sunCellDisks_.insert(sunCellDisks_.end(), c.begin(), c.end());
+        sunCellStart_.push_back(uint32_t(sunCellDisks_.size()));
+    }
+}
+
+template <class F>
+void DaylightEnvironment::forEachSunDiskAt(const Vec3& w, F&& f) const {
+    if (sunCellStart_.empty()) return;
+    const double theta = std::acos(std::clamp(w.z, -1.0, 1.0)), phi = std::atan2(w.y, w.x);
+    const size_t c = size_t(thetaCell(theta)) * kPhiCells + size_t(phiCell(phi));
+    for (uint32_t i = sunCellStart_[c]; i < sunCellStart_[c + 1]; ++i) {
+        const uint32_t k = sunCellDisks_[i];
+        if (dot(w, suns_[k].direction) >= kSunCosHalfAngle - kDiskRimTolerance) f(k);
     }
 }
 
@@ -129,16 +186,14 @@ EnvironmentSample DaylightEnvironment::sampleSky(Vec2 u) const {
 
 Vec3 DaylightEnvironment::sunLe(const Vec3& w) const {
     Vec3 sum;
-    for (const SunDisk& s : suns_)
-        if (dot(w, s.direction) >= kSunCosHalfAngle - kDiskRimTolerance) sum += s.radiance();
+    forEachSunDiskAt(w, [&](uint32_t k) { sum += suns_[k].radiance(); });
     return sum;
 }
 
 double DaylightEnvironment::sunPdf(const Vec3& w) const {
     if (suns_.empty()) return 0;
     double pmfSum = 0;
-    for (size_t k = 0; k < suns_.size(); ++k)
-        if (dot(w, suns_[k].direction) >= kSunCosHalfAngle - kDiskRimTolerance) pmfSum += sunDistribution_.pmf(k);
+    forEachSunDiskAt(w, [&](uint32_t k) { pmfSum += sunDistribution_.pmf(k); });
     return pmfSum / kSunSolidAngle;
 }
 

@@ -132,6 +132,13 @@ private:
     Vec3 ground_;
     Distribution2D skyDistribution_;  // over (phi, -cos theta): area there = solid angle
     Distribution1D sunDistribution_;
+    // The disks by direction, so sunLe and sunPdf cost O(1) however many time steps
+    // there are: a grid of 1-degree cells over (theta, phi), each listing the disks
+    // that may reach into it (compressed rows: disks of cell c are
+    // sunCellDisks_[sunCellStart_[c] .. sunCellStart_[c + 1])).
+    std::vector<uint32_t> sunCellStart_, sunCellDisks_;
+    void indexSunDisks();
+    template <class F> void forEachSunDiskAt(const Vec3& w, F&& f) const;
     double skyIntegral_ = 0, sunIntegral_ = 0, skyHorizontal_ = 0, sunHorizontal_ = 0;
 };
 
