@@ -25,7 +25,7 @@ struct MeasureArgs {
     std::string scene, layout;
     int paths = 0;
     int64_t seed = -1;
-    bool json = false, flat = false;
+    bool json = false, flat = false, adaptive = false;
 };
 
 void runMeasure(const MeasureArgs& args) {
@@ -40,6 +40,7 @@ void runMeasure(const MeasureArgs& args) {
     MeasureOptions options;
     options.pathsPerPoint = args.paths > 0 ? args.paths : scene.optimizer.pathsPerPoint;
     options.seed = args.seed >= 0 ? uint64_t(args.seed) : scene.optimizer.seed;
+    options.adaptive = args.adaptive;
     MeasureResult result = measureSamplers(tracer, options);
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
@@ -58,10 +59,12 @@ void runMeasure(const MeasureArgs& args) {
                                       {"points", r.points}};
             // Only when it happened, so that the usual output stays as it was.
             if (r.droppedNonFinite > 0) sampler["dropped_nonfinite"] = r.droppedNonFinite;
+            if (options.adaptive) sampler["paths_per_point"] = r.pathsPerPoint;
             samplers.push_back(sampler);
         }
         nlohmann::json out = {{"samplers", samplers},
                               {"paths_per_point", options.pathsPerPoint},
+                              {"adaptive", options.adaptive},
                               {"seed", options.seed},
                               {"seconds", seconds}};
         std::cout << out.dump(2) << "\n";
@@ -81,7 +84,8 @@ void runMeasure(const MeasureArgs& args) {
                   << s.type->unit() << std::setw(22) << target.str() << std::setprecision(3) << std::setw(10) << penalty
                   << (penalty > 0 ? "  MISSED" : "  ok") << "\n";
     }
-    std::cout << std::setprecision(2) << result.paths << " paths (" << options.pathsPerPoint << " per point), "
+    std::cout << std::setprecision(2) << result.paths << " paths (" << (options.adaptive ? "adaptive, at most " : "")
+              << options.pathsPerPoint << " per point), "
               << result.rays.closest + result.rays.shadow << " rays in " << seconds << " s\n";
 }
 
@@ -97,6 +101,9 @@ void registerMeasureCommand(CLI::App& app, int& threads) {
     cmd->add_option("--seed", args->seed, "Random seed (default: optimizer.seed)")->check(CLI::NonNegativeNumber);
     cmd->add_option("--threads", threads, "Worker threads (default: all cores)")->check(CLI::NonNegativeNumber);
     cmd->add_flag("--json", args->json, "Print JSON with per-point values");
+    cmd->add_flag("--adaptive", args->adaptive,
+                  "Stop each sampler once value +- 3 standard errors lies inside one linear piece of its penalty "
+                  "(--paths is then the most per point)");
     cmd->add_flag("--flat", args->flat, "Measure in the flattened scene (read the layout_flat.json of optimize --flat)");
     cmd->callback([args] { runMeasure(*args); });
 }

@@ -30,7 +30,7 @@ struct OptimizeArgs {
     std::string scene, out;
     int iterations = -1, paths = 0, spp = 0;
     int64_t seed = -1;
-    bool flat = false, quiet = false, noPictures = false;
+    bool flat = false, quiet = false, noPictures = false, fixedPaths = false;
 };
 
 std::string duration(double seconds) {
@@ -84,6 +84,7 @@ bool runOptimize(const OptimizeArgs& args) {
     MeasureOptions measure;
     measure.pathsPerPoint = args.paths > 0 ? args.paths : scene.optimizer.searchPathsPerPoint;
     measure.seed = options.seed;
+    measure.adaptive = !args.fixedPaths;
     std::unique_ptr<PathTracedLighting> lighting;
     const int reportPaths = std::max(scene.optimizer.reportPathsPerPoint, measure.pathsPerPoint);
     if (!scene.samplers.empty()) {
@@ -109,6 +110,7 @@ bool runOptimize(const OptimizeArgs& args) {
     if (lighting && result.feasible) {
         MeasureOptions report = measure;
         report.pathsPerPoint = reportPaths;
+        report.adaptive = false;
         lighting->setOptions(report);
         Evaluation& best = result.bestEvaluation;
         best.lighting = lighting->evaluate(result.best, worldTransforms(scene, result.best), &best.samplers);
@@ -163,6 +165,9 @@ void registerOptimizeCommand(CLI::App& app, int& threads) {
         ->check(CLI::NonNegativeNumber);
     cmd->add_option("--paths", args->paths, "Paths per sampler point during the search (default: optimizer.paths_per_point, or 64 if the scene does not give it)")
         ->check(CLI::PositiveNumber);
+    cmd->add_flag("--fixed-paths", args->fixedPaths,
+                  "Trace exactly --paths per point for every sampler (default: a sampler stops early once its "
+                  "penalty is settled, --paths being the most)");
     cmd->add_flag("--flat", args->flat,
                   "Flat baseline (the paper's Figure 6): no groups, every object on its own, groups kept by cohesion constraints");
     cmd->add_flag("-q,--quiet", args->quiet, "No progress line");

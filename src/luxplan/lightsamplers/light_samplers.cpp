@@ -21,6 +21,7 @@ constexpr int kFolds = ItemEstimates::kFolds;
 // (the own item only, or all of a sampler that shares paths).
 struct WorkResult {
     std::array<std::vector<MeanEstimator>, kFolds> folds;
+    uint64_t finite[kFolds] = {};  // paths kept, per fold
     uint64_t dropped = 0;
     RayStats stats;
 };
@@ -70,27 +71,39 @@ std::unique_ptr<PlacedSampler> placeSampler(const LightSamplerSpec& s, const Emb
     return s.type->place(s.entity >= 0 ? rt.worldFromEntity(s.entity) : Transform());
 }
 
+bool settled(const LightSamplerSpec& spec, const Estimate& e, double z) {
+    const double lo = e.value - z * e.standardError, hi = e.value + z * e.standardError;
+    return hi <= spec.targetMin || (lo >= spec.targetMin && hi <= spec.targetMax) || lo >= spec.targetMax;
+}
+
 MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& options) {
     const EmbreeScene& rt = tracer.rayTracer();
     const Scene& scene = rt.scene();
-    MeasureResult result;
+    const size_t samplers = scene.samplers.size();
     std::vector<std::unique_ptr<PlacedSampler>> placed;
     std::vector<WorkItem> work;
-    for (size_t k = 0; k < scene.samplers.size(); ++k) {
+    std::vector<size_t> firstWork;  // per sampler
+    for (size_t k = 0; k < samplers; ++k) {
         placed.push_back(placeSampler(scene.samplers[k], rt));
+        firstWork.push_back(work.size());
         for (int i = 0; i < placed.back()->items(); ++i) work.push_back({int(k), i});
     }
+    firstWork.push_back(work.size());
     std::vector<WorkResult> done(work.size());
+    for (size_t index = 0; index < work.size(); ++index) {
+        const PlacedSampler& sampler = *placed[size_t(work[index].sampler)];
+        for (auto& f : done[index].folds) f.resize(sampler.sharesPaths() ? size_t(sampler.items()) : 1);
+    }
     const int paths = std::max(1, options.pathsPerPoint);
 
-    parallelFor(work.size(), [&](size_t index) {
+    // Paths [from, to) of one work item, appended to what its earlier rounds traced:
+    // the same sums in the same order as one round of all paths.
+    auto trace = [&](size_t index, int from, int to) {
         const WorkItem& w = work[index];
         const PlacedSampler& sampler = *placed[size_t(w.sampler)];
         const bool shares = sampler.sharesPaths();
         WorkResult& r = done[index];
-        for (auto& f : r.folds) f.resize(shares ? size_t(sampler.items()) : 1);
-        uint64_t finite[kFolds] = {};
-        for (int path = 0; path < paths; ++path) {
+        for (int path = from; path < to; ++path) {
             Rng rng(hashValues({options.seed, uint64_t(w.sampler), uint64_t(w.item), uint64_t(path)}));
             PathContributions c(w.item);
             sampler.sample(tracer, w.item, rng, r.stats, c);
@@ -99,50 +112,78 @@ MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& op
                 continue;
             }
             auto& fold = r.folds[size_t(path % kFolds)];
-            ++finite[path % kFolds];
+            ++r.finite[path % kFolds];
             for (int k = 0; k < c.size(); ++k) {
                 if (!shares && c.itemAt(k) != w.item)
                     throw std::logic_error("a light sampler that does not share paths added to another item");
                 fold[shares ? size_t(c.itemAt(k)) : 0].add(c.valueAt(k));
             }
         }
-        // Paths that added nothing to an item count as zeros there.
-        for (int g = 0; g < kFolds; ++g)
-            for (MeanEstimator& e : r.folds[g]) e.addZeros(finite[g] - e.count());
-    });
+    };
+    // Sampler k's item estimates from what its work items traced so far.
+    auto estimates = [&](size_t k) {
+        const PlacedSampler& sampler = *placed[k];
+        const int n = sampler.items();
+        const bool shares = sampler.sharesPaths();
+        ItemEstimates e(n, shares ? n : 1);
+        for (int source = 0; source < n; ++source) {
+            const WorkResult& w = done[firstWork[k] + size_t(source)];
+            for (int g = 0; g < kFolds; ++g)
+                for (int i = shares ? 0 : source; i < (shares ? n : source + 1); ++i) {
+                    // Paths that added nothing to an item count as zeros there.
+                    MeanEstimator& cell = e.cell(i, shares ? source : 0, g);
+                    cell = w.folds[g][shares ? size_t(i) : 0];
+                    cell.addZeros(w.finite[g] - cell.count());
+                }
+        }
+        return e;
+    };
+
+    // Rounds of options.batchPaths paths per point (one round of all when not
+    // adaptive); a sampler leaves once its value is settled.
+    std::vector<int> traced(samplers, 0);
+    std::vector<char> active(samplers, 1);
+    for (int from = 0; from < paths;) {
+        const int to = options.adaptive ? std::min(paths, from + std::max(1, options.batchPaths)) : paths;
+        std::vector<size_t> round;
+        for (size_t k = 0; k < samplers; ++k)
+            if (active[k])
+                for (size_t index = firstWork[k]; index < firstWork[k + 1]; ++index) round.push_back(index);
+        if (round.empty()) break;
+        parallelFor(round.size(), [&](size_t i) { trace(round[i], from, to); });
+        for (size_t k = 0; k < samplers; ++k) {
+            if (!active[k]) continue;
+            traced[k] = to;
+            if (options.adaptive && to < paths && firstWork[k + 1] > firstWork[k] &&
+                settled(scene.samplers[k], placed[k]->combine(estimates(k)), options.confidenceZ))
+                active[k] = 0;
+        }
+        from = to;
+    }
 
     // Reduce per sampler, in a fixed order.
-    result.samplers.resize(scene.samplers.size());
-    size_t next = 0;
-    for (size_t k = 0; k < scene.samplers.size(); ++k) {
-        const PlacedSampler& sampler = *placed[k];
-        const size_t n = size_t(sampler.items());
-        const bool shares = sampler.sharesPaths();
-        ItemEstimates e(int(n), shares ? int(n) : 1);
+    MeasureResult result;
+    result.samplers.resize(samplers);
+    for (size_t k = 0; k < samplers; ++k) {
         SamplerResult& r = result.samplers[k];
-        for (size_t source = 0; source < n; ++source, ++next) {
-            const WorkResult& w = done[next];
-            for (int g = 0; g < kFolds; ++g) {
-                if (shares)
-                    for (size_t i = 0; i < n; ++i) e.cell(int(i), int(source), g) = w.folds[g][i];
-                else
-                    e.cell(int(source), 0, g) = w.folds[g][0];
-            }
-            r.droppedNonFinite += w.dropped;
-            result.droppedNonFinite += w.dropped;
-            result.rays += w.stats;
+        r.pathsPerPoint = traced[k];
+        for (size_t index = firstWork[k]; index < firstWork[k + 1]; ++index) {
+            r.droppedNonFinite += done[index].dropped;
+            result.rays += done[index].stats;
         }
-        for (size_t i = 0; i < n; ++i) {
-            Estimate x = e.of(int(i));
+        result.droppedNonFinite += r.droppedNonFinite;
+        result.paths += uint64_t(firstWork[k + 1] - firstWork[k]) * uint64_t(traced[k]);
+        if (firstWork[k + 1] == firstWork[k]) continue;
+        const ItemEstimates e = estimates(k);
+        for (int i = 0; i < e.items(); ++i) {
+            Estimate x = e.of(i);
             r.points.push_back(x.value);
             r.pointErrors.push_back(x.standardError);
         }
-        if (n == 0) continue;
-        Estimate value = sampler.combine(e);
+        Estimate value = placed[k]->combine(e);
         r.value = value.value;
         r.standardError = value.standardError;
     }
-    result.paths = uint64_t(work.size()) * paths;
     return result;
 }
 

@@ -18,14 +18,22 @@ namespace luxplan {
 std::unique_ptr<PlacedSampler> placeSampler(const LightSamplerSpec& sampler, const EmbreeScene& rt);
 
 struct MeasureOptions {
-    int pathsPerPoint = 1000;
+    int pathsPerPoint = 1000;  // exactly, or at most when adaptive
     uint64_t seed = 1;
+    // Adaptive: paths are traced in rounds of batchPaths per point, and a sampler
+    // stops after a round once value +- confidenceZ standard errors lies inside one
+    // linear piece of its penalty (below, inside or above its target band): more
+    // paths would then only refine a penalty that is linear in the value. A stopped
+    // sampler reads exactly as a fixed run of the paths it traced.
+    bool adaptive = false;
+    int batchPaths = 16;
+    double confidenceZ = 3;
 };
 
 struct MeasureResult {
     std::vector<SamplerResult> samplers;  // in Scene::samplers order
     RayStats rays;
-    uint64_t paths = 0;
+    uint64_t paths = 0;             // traced, over all samplers
     uint64_t droppedNonFinite = 0;  // over all samplers
 };
 

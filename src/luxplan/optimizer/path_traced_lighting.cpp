@@ -24,6 +24,7 @@ double PathTracedLighting::evaluate(const Layout& /*layout*/, const std::vector<
 double PathTracedLighting::confirm(const Layout& layout, const std::vector<Transform>& world, LightingBreakdown* out) {
     const MeasureOptions search = options_;
     if (confirmPaths_ > 0) options_.pathsPerPoint = confirmPaths_;
+    options_.adaptive = false;
     double cost = evaluate(layout, world, out);
     options_ = search;
     return cost;
