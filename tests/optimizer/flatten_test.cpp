@@ -25,6 +25,12 @@ Vec3 pointsCenter(const std::vector<Vec3>& points) {
     return sum * (1.0 / double(points.size()));
 }
 
+// Whether a flat constraint is one of the cohesion rules flattening added.
+bool isCohesion(const FlatScene& flat, int constraint) {
+    const auto* kind = dynamic_cast<const FlatConstraint*>(flat.scene.constraints[size_t(constraint)].kind.get());
+    return kind && kind->cohesion();
+}
+
 void expectSameTransform(const Transform& a, const Transform& b, const std::string& what) {
     for (int i = 0; i < 9; ++i) EXPECT_NEAR(a.m[size_t(i)], b.m[size_t(i)], 1e-9) << what;
     EXPECT_NEAR(length(a.t - b.t), 0.0, 1e-9) << what;
@@ -76,15 +82,28 @@ TEST_F(FlattenTest, EveryObjectAtTheTopLevelWithWorldRegions) {
     // A constraint on the workstation keeps the group's centre and fronts.
     const ConstraintSpec& onGroup = f.constraints[3];
     EXPECT_EQ(onGroup.a, flatEntity("workstation.desk"));
-    ASSERT_TRUE(onGroup.groupA.has_value());
-    EXPECT_EQ(onGroup.groupA->members.size(), 3u);
-    EXPECT_FALSE(onGroup.groupB.has_value());
+    const auto* groupKind = dynamic_cast<const FlatConstraint*>(onGroup.kind.get());
+    ASSERT_NE(groupKind, nullptr);
+    EXPECT_STREQ(groupKind->name(), "focus");
+    ASSERT_TRUE(groupKind->groupA().has_value());
+    EXPECT_EQ(groupKind->groupA()->members.size(), 3u);
+    EXPECT_FALSE(groupKind->groupB().has_value());
+    EXPECT_FALSE(groupKind->cohesion());
+    EXPECT_TRUE(groupKind->countsInNormalizer());
+    const auto* onGroupB = dynamic_cast<const FlatConstraint*>(f.constraints[4].kind.get());
+    ASSERT_NE(onGroupB, nullptr);  // the conversation with the workstation
+    EXPECT_FALSE(onGroupB->groupA().has_value());
+    ASSERT_TRUE(onGroupB->groupB().has_value());
+    EXPECT_EQ(onGroupB->groupB()->members.size(), 3u);
+    EXPECT_EQ(f.constraints[1].kind, scene.constraints[1].kind);  // monitor and chair: no group, kind kept
 
     // Cohesion: the chair and the monitor towards the desk (the anchor), not counted
     // in G's normalizer; the constraints on objects are kept.
     int chairDistance = 0, chairFocus = 0, monitorDistance = 0, monitorTurn = 0;
-    for (const ConstraintSpec& c : f.constraints) {
-        if (!c.cohesion) continue;
+    for (size_t i = 0; i < f.constraints.size(); ++i) {
+        const ConstraintSpec& c = f.constraints[i];
+        EXPECT_EQ(c.kind->countsInNormalizer(), !isCohesion(flat, int(i))) << c.jsonPath;
+        if (!isCohesion(flat, int(i))) continue;
         EXPECT_EQ(c.b, flatEntity("workstation.desk"));
         bool isChair = c.a == flatEntity("workstation.chair");
         ASSERT_TRUE(isChair || c.a == flatEntity("workstation.desk.monitor"));
@@ -142,7 +161,7 @@ TEST_F(FlattenTest, EveryHierarchicalLayoutCostsTheSameFlat) {
         EXPECT_EQ(gf.rejected, g.rejected);
         rejected += g.rejected;
         for (const PenaltyTerm& t : gf.terms)
-            if (t.constraint >= 0 && flat.scene.constraints[size_t(t.constraint)].cohesion) {
+            if (t.constraint >= 0 && isCohesion(flat, t.constraint)) {
                 EXPECT_EQ(t.penalty, 0.0) << describe(flat.scene, t);
             }
     }
@@ -173,7 +192,7 @@ TEST_F(FlattenTest, BreakingAGroupCostsAndLeavesTheMemberOutsideItsRegion) {
     GeometryResult r = g.evaluate(worldTransforms(flat.scene, flatLayout), true);
     double cohesion = 0;
     for (const PenaltyTerm& t : r.terms)
-        if (t.constraint >= 0 && flat.scene.constraints[size_t(t.constraint)].cohesion) cohesion += t.penalty;
+        if (t.constraint >= 0 && isCohesion(flat, t.constraint)) cohesion += t.penalty;
     EXPECT_GT(cohesion, 0);
     EXPECT_TRUE(r.rejected);  // beyond the range by more than the 0.25 m elastic limit
 
@@ -195,7 +214,7 @@ TEST_F(FlattenTest, TheOptimizerSearchesTheFlatSceneOnOneLevel) {
     EXPECT_TRUE(r.feasible);
     // The best layout keeps the group together (every cohesion rule within its elastic limit).
     for (const PenaltyTerm& t : r.bestGeometry.terms)
-        if (t.constraint >= 0 && flat.scene.constraints[size_t(t.constraint)].cohesion) {
+        if (t.constraint >= 0 && isCohesion(flat, t.constraint)) {
             EXPECT_LE(t.penalty, 1.0);
         }
 }
