@@ -7,10 +7,10 @@
 #include <cmath>
 #include <functional>
 
-#include <luxplan/io/scene_loader.h>
+#include <luxplan/lightsamplers/sampler_type.h>
 #include <luxplan/optimizer/optimizer.h>
 #include "support/chi2.h"
-#include "support/temp_files.h"
+#include "support/scene_builder.h"
 
 namespace luxplan {
 namespace {
@@ -29,10 +29,12 @@ private:
     std::function<double(const std::vector<Transform>&)> f_;
 };
 
-std::string sceneWith(const std::string& entities) {
-    return R"({"luxplan": 1, "objective": {"lighting_weight": 1},
-      "samplers": [{"name": "s", "type": "planar", "center": [0, 0, 1], "size": [1, 1], "target": [0, 100]}],
-      "entities": )" + entities + "}";
+// C = L (lighting weight 1), with a sampler so that L is measured at all; the
+// entities are the test's.
+test::SceneBuilder chainScene() {
+    test::SceneBuilder b;
+    b.lightingWeight(1).sampler("s", planarSampler({0, 0, 1}, {0, 0, 1}, {0, 1, 0}, {1, 1}, {4, 4}), 0, 100);
+    return b;
 }
 
 struct ChainSetup {
@@ -77,12 +79,13 @@ test::Chi2Result sampleChain(const Scene& scene, LightingEvaluator& lighting, co
 // Discrete target: three point regions holding 2, 1 and 3 rotations (rotate + jump,
 // where the jump needs its Hastings factor: the regions differ in size).
 TEST(Chain, DiscreteStatesFollowTheBoltzmannLaw) {
-    test::TempDir dir;
-    Scene s = io::loadScene(dir.write("scene.json", sceneWith(R"([
-      {"name": "e", "position": [0, 0], "placement": {"regions": [
-        {"min": [0, 0], "max": [0, 0], "rotations": [0, 90]},
-        {"min": [5, 0], "max": [5, 0], "rotations": [0]},
-        {"min": [10, 0], "max": [10, 0], "rotations": [0, 90, 180, 270]}]}}])")));
+    Scene s = chainScene()
+                  .entity("e")
+                  .region({0, 0}, {0, 0}, {0, 90})
+                  .region({5, 0}, {5, 0}, {0})
+                  .region({10, 0}, {10, 0}, {0, 90, 180, 270})
+                  .end()
+                  .build();
     auto state = [](const Layout& l, const std::vector<Transform>&) {
         const Placement& p = l.placements[0];
         int r = int(std::lround(p.rotationDeg / 90)) % 4;
@@ -109,9 +112,7 @@ TEST(Chain, DiscreteStatesFollowTheBoltzmannLaw) {
 class ContinuousChain : public ::testing::Test {
 protected:
     void SetUp() override {
-        scene = io::loadScene(dir.write("scene.json", sceneWith(R"([
-          {"name": "e", "position": [0.5, 0], "placement": {"regions": [
-            {"min": [0, 0], "max": [1, 0]}, {"min": [3, 0], "max": [5, 0]}]}}])")));
+        scene = chainScene().entity("e", {0.5, 0, 0}).region({0, 0}, {1, 0}).region({3, 0}, {5, 0}).end().build();
         for (int i = 0; i < 5; ++i) edges.push_back({0.2 * i, 0.2 * (i + 1)});
         for (int i = 0; i < 10; ++i) edges.push_back({3 + 0.2 * i, 3 + 0.2 * (i + 1)});
         for (auto [a, b] : edges) weights.push_back(std::exp(-a / 2) - std::exp(-b / 2));
@@ -129,7 +130,6 @@ protected:
         };
         return sampleChain(scene, lighting, setup, bin, weights);
     }
-    test::TempDir dir;
     Scene scene;
     std::vector<std::pair<double, double>> edges;
     std::vector<double> weights;
@@ -147,12 +147,10 @@ TEST_F(ContinuousChain, WithoutTheHastingsFactorJumpsAreBiased) {
 
 // Two siblings on three shared point slots (swap + jump).
 TEST(Chain, SwapsAndJumpsBetweenSlots) {
-    test::TempDir dir;
-    const char* regions = R"({"regions": [{"min": [0, 0], "max": [0, 0]}, {"min": [5, 0], "max": [5, 0]},
-                                          {"min": [10, 0], "max": [10, 0]}]})";
-    Scene s = io::loadScene(dir.write("scene.json", sceneWith(std::string(R"([
-      {"name": "p", "position": [0, 0], "placement": )") + regions + R"(},
-      {"name": "q", "position": [5, 0], "placement": )" + regions + "}]")));
+    Scene s = chainScene()
+                  .entity("p").region({0, 0}, {0, 0}).region({5, 0}, {5, 0}).region({10, 0}, {10, 0}).end()
+                  .entity("q", {5, 0, 0}).region({0, 0}, {0, 0}).region({5, 0}, {5, 0}).region({10, 0}, {10, 0}).end()
+                  .build();
     auto slot = [](double x) { return int(std::lround(x / 5)); };
     auto cost = [](int sp, int sq) { return 0.1 + 0.05 * sp + 0.12 * sq; };
     FunctionLighting lighting([&](const std::vector<Transform>& w) { return cost(slot(w[0].t.x), slot(w[1].t.x)); });
@@ -173,11 +171,11 @@ TEST(Chain, SwapsAndJumpsBetweenSlots) {
 class TwoLevelChain : public ::testing::TestWithParam<Hierarchy> {};
 
 TEST_P(TwoLevelChain, FollowsTheBoltzmannLaw) {
-    test::TempDir dir;
-    Scene s = io::loadScene(dir.write("scene.json", sceneWith(R"([
-      {"name": "g", "position": [0, 0], "placement": {"regions": [{"min": [0, 0], "max": [0, 0]}, {"min": [5, 0], "max": [5, 0]}]},
-       "children": [{"name": "c", "position": [0, 0], "placement": {"regions": [
-         {"min": [0, 0], "max": [0, 0]}, {"min": [1, 0], "max": [1, 0]}, {"min": [2, 0], "max": [2, 0]}]}}]}])")));
+    Scene s = chainScene()
+                  .entity("g").region({0, 0}, {0, 0}).region({5, 0}, {5, 0})
+                  .entity("c").region({0, 0}, {0, 0}).region({1, 0}, {1, 0}).region({2, 0}, {2, 0}).end()
+                  .end()
+                  .build();
     // World x of the child: 0, 1, 2, 5, 6, 7.
     auto state = [](double x) { return x < 3 ? int(std::lround(x)) : 3 + int(std::lround(x - 5)); };
     auto cost = [](int st) { return 0.1 + 0.06 * st; };

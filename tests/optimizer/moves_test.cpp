@@ -4,46 +4,41 @@
 
 #include <cmath>
 
-#include <luxplan/io/scene_loader.h>
 #include <luxplan/optimizer/moves.h>
 #include <luxplan/optimizer/placement.h>
 #include "support/chi2.h"
-#include "support/temp_files.h"
+#include "support/scene_builder.h"
 
 namespace luxplan {
 namespace {
 
-const char* kRoomScene = R"({
-  "luxplan": 1,
-  "materials": {"m": {"type": "diffuse", "reflectance": 0.5}},
-  "entities": [
-    {"name": "table", "position": [1, 1],
-     "placement": {"regions": [{"min": [0.5, 0.5], "max": [2.5, 2.5], "rotations": [0, 90, 180, 270]},
-                               {"min": [4, 1], "max": [5, 1.5], "rotation_range": [0, 360]},
-                               {"min": [3, 3], "max": [3, 4], "rotation_range": [-30, 30]}]},
-     "children": [
-       {"name": "c1", "position": [0.5, 0], "rotation": 90,
-        "placement": {"regions": [{"min": [0.4, -0.2], "max": [0.6, 0.2], "rotations": [90, 270]},
-                                  {"min": [-0.6, -0.2], "max": [-0.4, 0.2], "rotations": [270]}]}},
-       {"name": "c2", "position": [-0.5, 0], "rotation": 270,
-        "placement": {"regions": [{"min": [-0.6, -0.2], "max": [-0.4, 0.2], "rotations": [270, 90]},
-                                  {"min": [0.4, -0.2], "max": [0.6, 0.2], "rotation_range": [80, 100]}]}},
-       {"name": "top", "parts": [{"box": {"size": [1, 0.6, 0.05], "center": [0, 0, 0.7]}, "material": "m"}]}]},
-    {"name": "shelf", "position": [0, 2], "rotation": 90,
-     "placement": {"regions": [{"min": [0, 1], "max": [0, 3], "rotations": [90]},
-                               {"min": [6, 1], "max": [6, 3], "rotations": [270]}]}},
-    {"name": "lamp", "position": [3, 0.5], "placement": {"regions": [{"min": [2, 0.2], "max": [4, 0.8]}]}}
-  ]})";
+// A table group on three regions (quarter turns, a full turn, an interval) with two
+// chairs on two local regions each and a fixed top, a shelf on two walls, a lamp
+// on a strip (no rotations).
+Scene roomScene() {
+    return test::SceneBuilder()
+        .material("m", test::diffuse(0.5))
+        .entity("table", {1, 1, 0})
+        .region({0.5, 0.5}, {2.5, 2.5}, {0, 90, 180, 270})
+        .rangeRegion({4, 1}, {5, 1.5}, 0, 360)
+        .rangeRegion({3, 3}, {3, 4}, -30, 30)
+        .entity("c1", {0.5, 0, 0}, 90).region({0.4, -0.2}, {0.6, 0.2}, {90, 270}).region({-0.6, -0.2}, {-0.4, 0.2}, {270}).end()
+        .entity("c2", {-0.5, 0, 0}, 270).region({-0.6, -0.2}, {-0.4, 0.2}, {270, 90}).rangeRegion({0.4, -0.2}, {0.6, 0.2}, 80, 100).end()
+        .entity("top").part({1, 0.6, 0.05}, "m", Vec3(0, 0, 0.7)).end()
+        .end()
+        .entity("shelf", {0, 2, 0}, 90).region({0, 1}, {0, 3}, {90}).region({6, 1}, {6, 3}, {270}).end()
+        .entity("lamp", {3, 0.5, 0}).region({2, 0.2}, {4, 0.8}).end()
+        .build();
+}
 
-const char* kSwapScene = R"({
-  "luxplan": 1,
-  "entities": [
-    {"name": "p", "position": [0.5, 0.5], "rotation": 90, "placement": {"regions": [
-       {"min": [0, 0], "max": [1, 1], "rotations": [0, 90]}, {"min": [3, 0], "max": [4, 1], "rotations": [0, 90]}]}},
-    {"name": "q", "position": [3.5, 0.5], "placement": {"regions": [
-       {"min": [3, 0], "max": [4, 1], "rotations": [0, 90]}, {"min": [0, 0], "max": [1, 1], "rotations": [0, 90]}]}},
-    {"name": "r", "position": [0.2, 0.2], "placement": {"regions": [{"min": [0, 0], "max": [1, 1], "rotations": [0, 90]}]}}
-  ]})";
+// p and q on each other's regions, r on p's first only.
+Scene swapScene() {
+    return test::SceneBuilder()
+        .entity("p", {0.5, 0.5, 0}, 90).region({0, 0}, {1, 1}, {0, 90}).region({3, 0}, {4, 1}, {0, 90}).end()
+        .entity("q", {3.5, 0.5, 0}).region({3, 0}, {4, 1}, {0, 90}).region({0, 0}, {1, 1}, {0, 90}).end()
+        .entity("r", {0.2, 0.2, 0}).region({0, 0}, {1, 1}, {0, 90}).end()
+        .build();
+}
 
 std::vector<int> movable(const Scene& s) {
     std::vector<int> out;
@@ -63,8 +58,7 @@ void expectInside(const Scene& s, const Layout& l) {
 }
 
 TEST(Moves, EveryMoveKeepsTheLayoutInsideItsRegions) {
-    test::TempDir dir;
-    Scene s = io::loadScene(dir.write("scene.json", kRoomScene));
+    Scene s = roomScene();
     Layout layout = initialLayout(s);
     expectInside(s, layout);
     MoveSet moves(s, movable(s));
@@ -90,8 +84,7 @@ TEST(Moves, EveryMoveKeepsTheLayoutInsideItsRegions) {
 }
 
 TEST(Moves, ApplicabilityDependsOnRegionsOnly) {
-    test::TempDir dir;
-    Scene s = io::loadScene(dir.write("scene.json", kRoomScene));
+    Scene s = roomScene();
     MoveSet moves(s, movable(s));
     int table = s.findEntity("table"), shelf = s.findEntity("shelf"), lamp = s.findEntity("lamp");
     int c1 = s.findEntity("table.c1"), c2 = s.findEntity("table.c2");
@@ -193,8 +186,7 @@ TEST(Moves, RotationContinuous) {
 }
 
 TEST(Moves, SwapExchangesPositionsOnly) {
-    test::TempDir dir;
-    Scene s = io::loadScene(dir.write("scene.json", kSwapScene));
+    Scene s = swapScene();
     Layout l = initialLayout(s);
     Placement p = l.placements[0], q = l.placements[1];
     ASSERT_TRUE(swapMove(s.entities[0], p, s.entities[1], q));
@@ -219,8 +211,7 @@ TEST(Moves, SwapExchangesPositionsOnly) {
 }
 
 TEST(Moves, JumpGoesToAnotherRegionUniformly) {
-    test::TempDir dir;
-    Scene s = io::loadScene(dir.write("scene.json", kRoomScene));
+    Scene s = roomScene();
     const Entity& table = s.entities[s.findEntity("table")];
     Rng rng(hashValues({8}));
     std::vector<double> counts(3, 0), xCounts(4, 0);
@@ -250,8 +241,7 @@ TEST(Moves, JumpGoesToAnotherRegionUniformly) {
 }
 
 TEST(Moves, GroupMovesKeepTheGroupTogether) {
-    test::TempDir dir;
-    Scene s = io::loadScene(dir.write("scene.json", kRoomScene));
+    Scene s = roomScene();
     Layout layout = initialLayout(s);
     int table = s.findEntity("table"), c1 = s.findEntity("table.c1"), top = s.findEntity("table.top");
     MoveSet groupLevel(s, {table, s.findEntity("shelf"), s.findEntity("lamp")});

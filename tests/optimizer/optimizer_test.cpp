@@ -1,6 +1,7 @@
 // The optimizer loop on a small office: feasible results, the geometric gate in
 // front of the lighting hook, determinism, cancellation, early stop at C = 0,
-// progress, levels, and the report/trace/layout outputs.
+// progress, levels, and the report and trace outputs (tests/roundtrip reads the
+// layout back from layout.json).
 #include <gtest/gtest.h>
 
 #include <atomic>
@@ -10,81 +11,26 @@
 
 #include <nlohmann/json.hpp>
 
-#include <luxplan/constraints/penalty.h>
-#include <luxplan/io/layout_io.h>
-#include <luxplan/io/scene_loader.h>
+#include <luxplan/constraints/constraint_type.h>
+#include <luxplan/lightsamplers/sampler_type.h>
 #include <luxplan/optimizer/optimizer.h>
 #include <luxplan/optimizer/report.h>
+#include "support/desk_light.h"
+#include "support/scene_builder.h"
+#include "support/shared_scenes.h"
 #include "support/temp_files.h"
 
 namespace luxplan {
 namespace {
 
-const char* kOffice = R"({
-  "luxplan": 1,
-  "name": "office",
-  "materials": {"m": {"type": "diffuse", "reflectance": 0.5}},
-  "geometry": [
-    {"name": "room", "room": {"min": [0, 0, 0], "max": [6, 4, 3]}, "materials": {"floor": "m", "walls": "m", "ceiling": "m"}},
-    {"name": "door", "box": {"min": [2.5, 0, 0], "max": [3.5, 1, 2]}, "invisible": true}
-  ],
-  "samplers": [{"name": "desk_light", "type": "planar", "center": [0, 0, 0.75], "size": [1, 1], "target": [300, 500]}],
-  "entities": [
-    {"name": "workstation", "position": [2, 2],
-     "placement": {"regions": [{"min": [1, 1], "max": [5, 3], "rotations": [0, 90, 180, 270]}]},
-     "children": [
-       {"name": "desk", "parts": [{"box": {"size": [1.2, 0.6, 0.75]}, "material": "m"}],
-        "children": [{"name": "monitor", "position": [0, 0.1, 0.75],
-                      "placement": {"regions": [{"min": [-0.4, 0], "max": [0.4, 0.2], "rotation_range": [-20, 20]}]},
-                      "parts": [{"box": {"size": [0.5, 0.15, 0.4]}, "material": "m"}]}]},
-       {"name": "chair", "position": [0, -0.7], "rotation": 180,
-        "placement": {"regions": [{"min": [-0.5, -1.0], "max": [0.5, -0.5], "rotation_range": [120, 240]}]},
-        "parts": [{"box": {"size": [0.5, 0.5, 0.9]}, "material": "m"}]}]},
-    {"name": "shelf", "position": [0.2, 3], "rotation": 90,
-     "placement": {"regions": [{"min": [0.2, 1], "max": [0.2, 3.5], "rotations": [90]},
-                               {"min": [5.8, 1], "max": [5.8, 3.5], "rotations": [270]}]},
-     "parts": [{"box": {"size": [0.8, 0.3, 1.8]}, "material": "m"}]},
-    {"name": "plant", "position": [5, 3.5],
-     "placement": {"regions": [{"min": [0.4, 0.4], "max": [5.6, 3.6]}]},
-     "parts": [{"box": {"size": [0.4, 0.4, 1.0]}, "material": "m"}]}
-  ],
-  "constraints": [
-    {"type": "alignment", "a": "workstation.desk", "b": "room", "tolerance_deg": 5},
-    {"type": "distance", "a": "workstation.desk", "b": "workstation.chair", "min": 0.5, "max": 0.9},
-    {"type": "focus", "a": "workstation.chair", "b": "workstation.desk", "tolerance_deg": 20},
-    {"type": "focus", "a": "workstation.desk.monitor", "b": "workstation.chair", "tolerance_deg": 15},
-    {"type": "distance", "a": "plant", "b": "workstation", "min": 1.5, "max": 100}
-  ],
-  "objective": {"lighting_weight": 0.5},
-  "optimizer": {"iterations": 3000, "seed": 3}
-})";
-
-// Desk illuminance falls off towards +x: E = 600 - 100 x lx, target [300, 500].
-class DeskLight : public LightingEvaluator {
-public:
-    explicit DeskLight(const Scene& scene) : scene_(scene) {}
-    double evaluate(const Layout&, const std::vector<Transform>& world, LightingBreakdown* out) override {
-        ++calls;
-        if (GeometryEvaluator(scene_).evaluate(world).rejected) ++rejectedCalls;
-        double e = 600 - 100 * world[size_t(scene_.findEntity("workstation.desk"))].t.x;
-        if (out) out->samplers = {{e, 0, {e, e}, {0, 0}}};
-        return lightingCost(scene_, {e});
-    }
-    int calls = 0, rejectedCalls = 0;
-
-private:
-    const Scene& scene_;
-};
-
 class OptimizerTest : public ::testing::Test {
 protected:
-    void SetUp() override { scene = io::loadScene(dir.write("office.json", kOffice)); }
     test::TempDir dir;
-    Scene scene;
+    Scene scene = test::optimizerOffice();
 };
 
 TEST_F(OptimizerTest, FindsAFeasibleLayoutAndReportsConsistentCosts) {
-    DeskLight light(scene);
+    test::DeskLight light(scene);
     OptimizerOptions o = optimizerOptions(scene);
     EXPECT_EQ(o.iterations, 3000);
     EXPECT_EQ(o.seed, 3u);
@@ -119,7 +65,7 @@ TEST_F(OptimizerTest, FindsAFeasibleLayoutAndReportsConsistentCosts) {
 }
 
 TEST_F(OptimizerTest, LightingOnlyForLayoutsThatPassTheGeometricTest) {
-    DeskLight light(scene);
+    test::DeskLight light(scene);
     OptimizerOptions o = optimizerOptions(scene);
     o.iterations = 1500;
     OptimizerResult r = Optimizer(scene, o, &light).run();
@@ -146,7 +92,7 @@ TEST_F(OptimizerTest, NoLightingHookMeansLZero) {
 
 TEST_F(OptimizerTest, DeterministicForAFixedSeed) {
     auto run = [&](uint64_t seed) {
-        DeskLight light(scene);
+        test::DeskLight light(scene);
         OptimizerOptions o = optimizerOptions(scene);
         o.iterations = 800;
         o.seed = seed;
@@ -212,7 +158,7 @@ TEST_F(OptimizerTest, LevelsAndInnerIterations) {
 }
 
 TEST_F(OptimizerTest, CancellationKeepsTheBestLayout) {
-    DeskLight light(scene);
+    test::DeskLight light(scene);
     OptimizerOptions o = optimizerOptions(scene);
     o.progressEvery = 100;
     o.stopAtZeroCost = false;
@@ -239,13 +185,11 @@ TEST_F(OptimizerTest, CancellationKeepsTheBestLayout) {
 }
 
 TEST(OptimizerStop, StopsAtZeroCost) {
-    test::TempDir dir;
-    Scene s = io::loadScene(dir.write("scene.json", R"({
-      "luxplan": 1,
-      "entities": [
-        {"name": "a", "position": [0, 0], "placement": {"regions": [{"min": [0, 0], "max": [4, 4]}]}},
-        {"name": "b", "position": [9, 9], "placement": {"regions": [{"min": [0, 0], "max": [4, 4]}]}}],
-      "constraints": [{"type": "distance", "a": "a", "b": "b", "min": 0.5, "max": 1.0}]})"));
+    Scene s = test::SceneBuilder()
+                  .entity("a").region({0, 0}, {4, 4}).end()
+                  .entity("b", {9, 9, 0}).region({0, 0}, {4, 4}).end()
+                  .constraint(distanceConstraint({0.5, 1.0, std::nullopt}), "a", "b")
+                  .build();
     OptimizerOptions o;
     o.iterations = 20000;
     o.start = StartFrom::Scene;  // 12.7 m apart: rejected, repaired, then solved
@@ -275,14 +219,12 @@ private:
 };
 
 TEST(OptimizerStop, ZeroCostIsConfirmedBeforeStopping) {
-    test::TempDir dir;
-    Scene s = io::loadScene(dir.write("scene.json", R"({
-      "luxplan": 1,
-      "samplers": [{"name": "s", "type": "planar", "center": [2, 2, 1], "size": [1, 1], "target": [100, 200]}],
-      "entities": [
-        {"name": "a", "position": [0, 0], "placement": {"regions": [{"min": [0, 0], "max": [4, 4]}]}},
-        {"name": "b", "position": [1, 0], "placement": {"regions": [{"min": [0, 0], "max": [4, 4]}]}}],
-      "constraints": [{"type": "distance", "a": "a", "b": "b", "min": 0.5, "max": 1.5}]})"));
+    Scene s = test::SceneBuilder()
+                  .sampler("s", planarSampler({2, 2, 1}, {0, 0, 1}, {0, 1, 0}, {1, 1}, {4, 4}), 100, 200)
+                  .entity("a").region({0, 0}, {4, 4}).end()
+                  .entity("b", {1, 0, 0}).region({0, 0}, {4, 4}).end()
+                  .constraint(distanceConstraint({0.5, 1.5, std::nullopt}), "a", "b")
+                  .build();
     OptimizerOptions o;
     o.iterations = 500;
     o.start = StartFrom::Scene;  // feasible, G = 0: the estimate says C = 0 at once
@@ -302,8 +244,7 @@ TEST(OptimizerStop, ZeroCostIsConfirmedBeforeStopping) {
 }
 
 TEST(OptimizerStop, NothingToMove) {
-    test::TempDir dir;
-    Scene s = io::loadScene(dir.write("scene.json", R"({"luxplan": 1, "entities": [{"name": "a", "position": [1, 1]}]})"));
+    Scene s = test::SceneBuilder().entity("a", {1, 1, 0}).end().build();
     OptimizerResult r = Optimizer(s, OptimizerOptions()).run();
     EXPECT_EQ(r.stop, StopReason::NothingToMove);
     EXPECT_EQ(r.iterations, 0);
@@ -311,16 +252,11 @@ TEST(OptimizerStop, NothingToMove) {
 
 TEST(OptimizerStart, RepairsAnInfeasibleStart) {
     // Four 1 m cubes in a 2.2 m square room: a uniform draw almost always collides.
-    test::TempDir dir;
-    std::string entities;
+    test::SceneBuilder b;
+    b.material("m", test::diffuse(0.5)).room({0, 0, 0}, {2.2, 2.2, 2}, "m", "m", "m");
     for (int i = 0; i < 4; ++i)
-        entities += std::string(i ? "," : "") + R"({"name": "box)" + std::to_string(i) +
-                    R"(", "position": [1, 1], "placement": {"regions": [{"min": [0.5, 0.5], "max": [1.7, 1.7]}]},
-                       "parts": [{"box": {"size": [1, 1, 1]}, "material": "m"}]})";
-    Scene s = io::loadScene(dir.write("scene.json", R"({"luxplan": 1,
-      "materials": {"m": {"type": "diffuse", "reflectance": 0.5}},
-      "geometry": [{"name": "room", "room": {"min": [0, 0, 0], "max": [2.2, 2.2, 2]}, "materials": {"floor": "m", "walls": "m", "ceiling": "m"}}],
-      "entities": [)" + entities + "]}"));
+        b.entity("box" + std::to_string(i), {1, 1, 0}).region({0.5, 0.5}, {1.7, 1.7}).part({1, 1, 1}, "m").end();
+    Scene s = b.build();
     OptimizerOptions o;
     o.iterations = 4000;
     o.startAttempts = 1;
@@ -331,14 +267,13 @@ TEST(OptimizerStart, RepairsAnInfeasibleStart) {
     EXPECT_FALSE(GeometryEvaluator(s).evaluate(worldTransforms(s, r.best)).rejected);
 }
 
-TEST_F(OptimizerTest, WritesLayoutReportAndTrace) {
-    DeskLight light(scene);
+TEST_F(OptimizerTest, WritesReportAndTrace) {
+    test::DeskLight light(scene);
     OptimizerOptions o = optimizerOptions(scene);
     o.iterations = 500;
     OptimizerResult r = Optimizer(scene, o, &light).run();
     auto out = dir.path() / "out";
     writeOptimizerOutputs(out, scene, r);
-    io::writeLayout(out / "layout.json", scene, r.best);
 
     auto report = nlohmann::json::parse(std::ifstream(out / "report.json"));
     EXPECT_EQ(report["scene"], "office");
@@ -372,12 +307,6 @@ TEST_F(OptimizerTest, WritesLayoutReportAndTrace) {
     int rows = 0;
     while (std::getline(trace, line)) ++rows;
     EXPECT_EQ(rows, int(r.trace.size()));
-
-    Layout back = io::readLayout(out / "layout.json", scene);
-    for (size_t e = 0; e < scene.entities.size(); ++e) {
-        EXPECT_NEAR(back.placements[e].position.x, r.best.placements[e].position.x, 1e-12);
-        EXPECT_NEAR(back.placements[e].rotationDeg, r.best.placements[e].rotationDeg, 1e-12);
-    }
 }
 
 }  // namespace

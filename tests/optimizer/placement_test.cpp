@@ -4,24 +4,26 @@
 
 #include <cmath>
 
-#include <luxplan/io/scene_loader.h>
 #include <luxplan/optimizer/placement.h>
 #include "support/chi2.h"
-#include "support/temp_files.h"
+#include "support/scene_builder.h"
 
 namespace luxplan {
 namespace {
 
-const char* kScene = R"({
-  "luxplan": 1,
-  "materials": {"m": {"type": "diffuse", "reflectance": 0.5}},
-  "entities": [
-    {"name": "table", "position": [1, 1, 0.2],
-     "placement": {"regions": [{"min": [0, 0], "max": [2, 1], "rotations": [0, 90, 180, 270]},
-                               {"min": [4, 0], "max": [5, 1], "rotation_range": [0, 90]},
-                               {"min": [7, 0], "max": [7, 3], "rotations": [0]}]}},
-    {"name": "stool", "position": [3, 3]}
-  ]})";
+// A table on three regions (quarter turns, an interval, a rail) at 0.2 m above the
+// floor, and a stool without regions.
+Scene makeScene() {
+    return test::SceneBuilder()
+        .material("m", test::diffuse(0.5))
+        .entity("table", {1, 1, 0.2})
+        .region({0, 0}, {2, 1}, {0, 90, 180, 270})
+        .rangeRegion({4, 0}, {5, 1}, 0, 90)
+        .region({7, 0}, {7, 3}, {0})
+        .end()
+        .entity("stool", {3, 3, 0}).end()
+        .build();
+}
 
 TEST(Placement, RegionMeasure) {
     Region r;
@@ -59,8 +61,7 @@ TEST(Placement, RotationHelpers) {
 }
 
 TEST(Placement, UniformOnTheUnionOfRegions) {
-    test::TempDir dir;
-    Scene s = io::loadScene(dir.write("scene.json", kScene));
+    Scene s = makeScene();
     const Entity& table = s.entities[0];
     Rng rng(hashValues({1, 2, 3}));
     const int n = 60000;
@@ -95,8 +96,7 @@ TEST(Placement, UniformOnTheUnionOfRegions) {
 }
 
 TEST(Placement, SampleLayoutKeepsImmovableEntities) {
-    test::TempDir dir;
-    Scene s = io::loadScene(dir.write("scene.json", kScene));
+    Scene s = makeScene();
     Layout base = initialLayout(s);
     Rng rng(hashValues({4}));
     Layout l = sampleLayout(s, base, rng);

@@ -7,7 +7,8 @@
 
 #include <luxplan/output/denoise.h>
 #include <luxplan/output/render.h>
-#include "support/lab.h"
+#include "support/scene_lab.h"
+#include "support/shared_scenes.h"
 
 namespace luxplan {
 namespace {
@@ -77,12 +78,7 @@ TEST(Denoise, PixelsThatSeeNothingStayAndSizesMustAgree) {
 }
 
 TEST(Denoise, ALowSampleRenderComesCloserToAHighSampleOne) {
-    test::Lab lab(R"({"luxplan": 1,
-      "materials": {"wall": {"type": "diffuse", "reflectance": 0.6}, "wood": {"type": "diffuse", "reflectance": 0.4}},
-      "geometry": [{"name": "room", "room": {"min": [0,0,0], "max": [5,4,3]},
-                    "materials": {"floor": "wall", "walls": "wall", "ceiling": "wall"}},
-                   {"name": "block", "box": {"min": [2,2,0], "max": [3,3,1]}, "material": "wood"}],
-      "luminaires": [{"name": "lamp", "shape": "rect", "center": [2.5,2,2.99], "normal": [0,0,-1], "size": [0.6,0.6], "flux_lm": 4000}]})");
+    test::SceneLab lab(test::litRoom());
     Camera camera = defaultCamera(lab.scene);
     RenderOptions o;
     o.width = 48, o.height = 36;

@@ -1,5 +1,5 @@
-// scene.glb: it reads back with tinygltf (nodes, meshes, materials, lights) and with
-// luxplan's own glTF import, whose y-up to z-up turn must give the scene's bounds.
+// scene.glb: it reads back with tinygltf (nodes, meshes, materials, lights); luxplan's
+// own glTF import reads it in tests/roundtrip/glb_import_test.cpp.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -7,38 +7,12 @@
 #include <tiny_gltf.h>
 
 #include <luxplan/core/error.h>
-#include <luxplan/io/mesh_io.h>
-#include <luxplan/io/scene_loader.h>
 #include <luxplan/output/gltf_export.h>
+#include "support/shared_scenes.h"
 #include "support/temp_files.h"
 
 namespace luxplan {
 namespace {
-
-const char* kScene = R"({"luxplan": 1,
-  "materials": {"wall": {"type": "diffuse", "reflectance": 0.6},
-                "wood": {"type": "glossy", "reflectance": 0.04, "base": [0.5, 0.3, 0.1], "roughness": 0.25},
-                "glass": {"type": "glass", "transmittance": 0.8},
-                "chrome": {"type": "mirror", "reflectance": 0.9}},
-  "geometry": [{"name": "room", "room": {"min": [0,0,0], "max": [5,4,3]},
-                "materials": {"floor": "wall", "walls": "wall", "ceiling": "wall"},
-                "openings": [{"wall": "south", "offset": 1, "width": 1.5, "sill": 0.9, "height": 1.2, "material": "glass"}]},
-               {"name": "pillar", "box": {"min": [4,3,0], "max": [4.5,3.5,3]}, "material": "chrome"},
-               {"name": "blocker", "box": {"min": [0,0,0], "max": [0.5,0.5,1]}, "invisible": true}],
-  "luminaires": [{"name": "panel", "shape": "rect", "center": [2.5,2,2.99], "normal": [0,0,-1], "size": [0.6,1.2],
-                  "up": [0,1,0], "flux_lm": 3000, "cct_k": 4000},
-                 {"name": "bulb", "shape": "sphere", "center": [1,1,2.5], "radius": 0.1, "flux_lm": 800}],
-  "entities": [{"name": "desk1", "position": [2,1.5], "rotation": 90,
-                "placement": {"regions": [{"min": [1,1], "max": [4,3], "rotations": [0, 90]}]},
-                "parts": [{"preset": "desk", "material": "wood"}],
-                "children": [{"name": "lamp", "position": [0.5,0.2,0.75],
-                              "parts": [{"box": {"size": [0.1,0.1,0.4]}, "material": "chrome"}],
-                              "emitters": [{"name": "shade", "shape": "disk", "center": [0,0,0.45], "normal": [0,0,-1],
-                                            "radius": 0.08, "flux_lm": 400}]}]},
-               {"name": "group", "children": [{"name": "chair", "position": [3,2],
-                                               "parts": [{"preset": "chair", "material": "wood"}]}]}]})";
-
-constexpr size_t kEmitterTriangles = 2 + 48 + 320;  // rect, disk, icosphere
 
 struct Exported {
     test::TempDir dir;
@@ -50,7 +24,7 @@ struct Exported {
 
 std::unique_ptr<Exported> exportScene() {
     auto e = std::make_unique<Exported>();
-    e->scene = io::loadScene(e->dir.write("scene.json", kScene));
+    e->scene = test::furnishedRoom();  // support/shared_scenes.h
     e->layout = initialLayout(e->scene);
     e->file = e->dir.path() / "scene.glb";
     writeGlb(e->file, e->scene, e->layout);
@@ -143,61 +117,9 @@ TEST(Gltf, NodesMeshesMaterialsAndLights) {
     EXPECT_NEAR(desk->translation[2], -1.5, 1e-9);
 }
 
-// The bounds of everything visible under a layout, and its triangle count (emitters included).
-std::pair<Bounds3, size_t> visibleGeometry(const Scene& scene, const Layout& layout) {
-    std::vector<Transform> world = worldTransforms(scene, layout);
-    Bounds3 bounds;
-    size_t triangles = kEmitterTriangles;
-    for (const StaticItem& item : scene.geometry) {
-        if (item.invisible) continue;
-        bounds.extend(item.mesh.bounds());
-        triangles += item.mesh.triangleCount();
-    }
-    for (size_t i = 0; i < scene.entities.size(); ++i) {
-        const Entity& ent = scene.entities[i];
-        if (!ent.hasGeometry()) continue;
-        TriangleMesh placed;
-        placed.append(ent.mesh, world[i]);
-        bounds.extend(placed.bounds());
-        triangles += ent.mesh.triangleCount();
-    }
-    return {bounds, triangles};
-}
-
-void expectBounds(const Bounds3& b, const Bounds3& expected) {
-    for (int k = 0; k < 3; ++k) {
-        EXPECT_NEAR(b.lo[k], expected.lo[k], 1e-5) << k;
-        EXPECT_NEAR(b.hi[k], expected.hi[k], 1e-5) << k;
-    }
-}
-
-TEST(Gltf, LuxplanImportGivesTheSceneBack) {
-    auto e = exportScene();
-    const Scene& scene = e->scene;
-    auto [bounds, triangles] = visibleGeometry(scene, e->layout);
-    TriangleMesh back = io::loadMeshFile(e->file, 0);
-    EXPECT_EQ(back.triangleCount(), triangles);
-    expectBounds(back.bounds(), bounds);
-
-    // Another layout moves the desk (and its lamp) to the room's north-east, past the
-    // pillar's bounds: the file's bounds follow.
-    Layout moved = e->layout;
-    int desk = scene.findEntity("desk1");
-    ASSERT_GE(desk, 0);
-    moved.placements[size_t(desk)].position = Vec3(4.6, 3.3, 0);
-    moved.placements[size_t(desk)].rotationDeg = 0;
-    auto other = e->dir.path() / "moved.glb";
-    writeGlb(other, scene, moved);
-    auto [movedBounds, movedTriangles] = visibleGeometry(scene, moved);
-    TriangleMesh backMoved = io::loadMeshFile(other, 0);
-    EXPECT_EQ(backMoved.triangleCount(), movedTriangles);
-    expectBounds(backMoved.bounds(), movedBounds);
-    EXPECT_GT(movedBounds.hi.x, bounds.hi.x);  // the desk now sticks out of the room
-}
-
 TEST(Gltf, UnwritableFileThrows) {
     test::TempDir dir;
-    Scene scene = io::loadScene(dir.write("scene.json", kScene));
+    Scene scene = test::furnishedRoom();
     EXPECT_THROW(writeGlb(dir.path() / "missing" / "scene.glb", scene, initialLayout(scene)), IoError);
 }
 

@@ -2,26 +2,33 @@
 // the colour of their result, and the grid measures pi L under a uniform sky.
 #include <gtest/gtest.h>
 
+#include <luxplan/emitters/emitter_shape.h>
+#include <luxplan/lightsamplers/sampler_type.h>
 #include <luxplan/output/plan.h>
-#include "support/lab.h"
+#include "support/scene_builder.h"
+#include "support/scene_lab.h"
+#include "support/temp_files.h"
 #include "support/threads.h"
 
 namespace luxplan {
 namespace {
 
-const char* kRoomWithTable = R"({"luxplan": 1,
-  "materials": {"wall": {"type": "diffuse", "reflectance": 0.5}, "wood": {"type": "diffuse", "reflectance": 0.4},
-                "glass": {"type": "glass", "transmittance": 0.8}},
-  "geometry": [{"name": "room", "room": {"min": [0,0,0], "max": [8,4,3]},
-                "materials": {"floor": "wall", "walls": "wall", "ceiling": "wall"},
-                "openings": [{"wall": "south", "offset": 5, "width": 2, "sill": 0.9, "height": 1.2, "material": "glass"},
-                             {"wall": "west", "offset": 1, "width": 1, "sill": 0, "height": 2.1}]}],
-  "luminaires": [{"name": "lamp", "shape": "rect", "center": [6.5,2,2.99], "normal": [0,0,-1], "size": [0.6,0.6], "flux_lm": 6000}],
-  "entities": [{"name": "table", "position": [1.5, 2],
-                "placement": {"regions": [{"min": [1,1], "max": [2.5,3], "rotations": [0, 90]}]},
-                "parts": [{"preset": "table", "size": [1.0, 0.8, 0.75], "material": "wood"}],
-                "samplers": [{"name": "reading", "type": "planar", "center": [0,0,0.76], "size": [0.8,0.6],
-                              "grid": [2,2], "target": [300, null], "tolerance": 100}]}]})";
+// An 8 x 4 m room with a glazed south window, an open west door and a ceiling panel at
+// its east end; a table with a reading sampler (at least 300 lx) at its west end.
+Scene roomWithTable() {
+    return test::SceneBuilder()
+        .material("wall", test::diffuse(0.5))
+        .material("wood", test::diffuse(0.4))
+        .material("glass", test::glass(0.8))
+        .room({0, 0, 0}, {8, 4, 3}, "wall", "wall", "wall")
+        .window(Wall::South, 5, 2, 0.9, 1.2, "glass")
+        .window(Wall::West, 1, 1, 0, 2.1)
+        .emitter("lamp", rectEmitter({6.5, 2, 2.99}, {0, 0, -1}, {0, 1, 0}, {0.6, 0.6}), 6000)
+        .entity("table", {1.5, 2, 0}).region({1, 1}, {2.5, 3}, {0, 90}).preset("table", "wood", Vec3(1.0, 0.8, 0.75))
+        .sampler("reading", planarSampler({0, 0, 0.76}, {0, 0, 1}, {0, 1, 0}, {0.8, 0.6}, {2, 2}), 300, kInf, 100)
+        .end()
+        .build();
+}
 
 bool isGreen(Rgb p) { return p.g > 140 && p.r < 40 && p.b < 100; }
 bool isRed(Rgb p) { return p.r > 200 && p.g < 50 && p.b < 50; }
@@ -31,7 +38,7 @@ int count(const Image& image, bool (*test)(Rgb)) {
 }
 
 TEST(Plan, FurnitureAndSamplersShowWhereTheyAre) {
-    test::Lab lab(kRoomWithTable);
+    test::SceneLab lab(roomWithTable());
     Layout layout = initialLayout(lab.scene);
     PlanOptions options;  // 80 px/m, 50 px margin: world (x, y) at (50 + 80 x, 50 + 80 (4 - y))
     auto pixel = [](double x, double y) { return std::pair<int, int>{int(50 + 80 * x), int(50 + 80 * (4 - y))}; };
@@ -63,7 +70,7 @@ TEST(Plan, FurnitureAndSamplersShowWhereTheyAre) {
 }
 
 TEST(Plan, WorkPlaneUnderAUniformSkyIsPiL) {
-    test::Lab lab(R"({"luxplan": 1, "daylight": {"sky": {"model": "uniform", "luminance_nits": 2000}, "sun": false, "ground_reflectance": 0}})");
+    test::SceneLab lab(test::SceneBuilder().uniformSky(2000, 0).build());
     Bounds3 area({0, 0, 0}, {1.2, 0.7, 1});
     IlluminanceGrid grid = test::withThreads(2, [&] { return measureWorkPlane(*lab.tracer, area, 0.8, 0.5, 256, 3); });
     EXPECT_EQ(grid.nx, 3);
@@ -86,7 +93,7 @@ TEST(Plan, WorkPlaneUnderAUniformSkyIsPiL) {
 }
 
 TEST(Plan, WorkPlaneMapAndLegendColourTheFloor) {
-    test::Lab lab(kRoomWithTable);
+    test::SceneLab lab(roomWithTable());
     PlanData data;
     data.workPlane = measureWorkPlane(*lab.tracer, lab.scene.room()->box, 0.8, 0.5, 8, 1);
     EXPECT_EQ(data.workPlane->nx, 16);

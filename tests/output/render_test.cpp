@@ -3,21 +3,15 @@
 #include <gtest/gtest.h>
 
 #include <luxplan/output/render.h>
-#include "support/lab.h"
+#include "support/scene_lab.h"
+#include "support/shared_scenes.h"
 #include "support/threads.h"
 
 namespace luxplan {
 namespace {
 
-const char* kLitRoom = R"({"luxplan": 1,
-  "materials": {"wall": {"type": "diffuse", "reflectance": 0.6}, "wood": {"type": "diffuse", "reflectance": 0.4}},
-  "geometry": [{"name": "room", "room": {"min": [0,0,0], "max": [5,4,3]},
-                "materials": {"floor": "wall", "walls": "wall", "ceiling": "wall"}},
-               {"name": "block", "box": {"min": [2,2,0], "max": [3,3,1]}, "material": "wood"}],
-  "luminaires": [{"name": "lamp", "shape": "rect", "center": [2.5,2,2.99], "normal": [0,0,-1], "size": [0.6,0.6], "flux_lm": 4000}]})";
-
 TEST(Render, DefaultCameraLooksAcrossTheRoom) {
-    test::Lab lab(kLitRoom);
+    test::SceneLab lab(test::litRoom());
     Camera camera = defaultCamera(lab.scene);
     const Bounds3& room = lab.scene.room()->box;
     EXPECT_TRUE(room.contains(camera.position));
@@ -32,7 +26,7 @@ TEST(Render, DefaultCameraLooksAcrossTheRoom) {
 }
 
 TEST(Render, LitRoomIsVisibleAndDeterministic) {
-    test::Lab lab(kLitRoom);
+    test::SceneLab lab(test::litRoom());
     RenderOptions options;
     options.width = 48, options.height = 36, options.samplesPerPixel = 4, options.seed = 7;
     Camera camera = defaultCamera(lab.scene);

@@ -6,23 +6,29 @@
 #include <fstream>
 #include <regex>
 
-#include <luxplan/io/scene_loader.h>
+#include <luxplan/constraints/constraint_type.h>
+#include <luxplan/lightsamplers/sampler_type.h>
 #include <luxplan/output/report_html.h>
+#include "support/scene_builder.h"
 #include "support/temp_files.h"
 
 namespace luxplan {
 namespace {
 
-const char* kScene = R"({"luxplan": 1, "name": "<b>Tom & Jerry's \"room\"</b>",
-  "materials": {"m": {"type": "diffuse", "reflectance": 0.5}},
-  "geometry": [{"name": "room", "room": {"min": [0,0,0], "max": [6,4,3]}, "materials": {"floor": "m", "walls": "m", "ceiling": "m"}}],
-  "entities": [{"name": "table", "position": [2,2], "placement": {"regions": [{"min": [1,1], "max": [5,3]}]},
-                "parts": [{"box": {"size": [1,1,0.75]}, "material": "m"}]},
-               {"name": "sofa", "position": [2.5,2], "placement": {"regions": [{"min": [1,1], "max": [5,3]}]},
-                "parts": [{"box": {"size": [1,1,0.75]}, "material": "m"}]}],
-  "samplers": [{"name": "<script>alert(1)</script>", "type": "planar", "center": [3,2,0.8], "size": [1,1], "target": [300, 500]},
-               {"name": "ambient", "type": "planar", "center": [1,1,0.8], "size": [1,1], "target": [100, null]}],
-  "constraints": [{"type": "distance", "a": "table", "b": "sofa", "min": 1, "max": 2}]})";
+// Names that need escaping, two boxes too close for their distance constraint, a
+// sampler above its target and one within.
+Scene makeScene() {
+    return test::SceneBuilder()
+        .name("<b>Tom & Jerry's \"room\"</b>")
+        .material("m", test::diffuse(0.5))
+        .room({0, 0, 0}, {6, 4, 3}, "m", "m", "m")
+        .entity("table", {2, 2, 0}).region({1, 1}, {5, 3}).part({1, 1, 0.75}, "m").end()
+        .entity("sofa", {2.5, 2, 0}).region({1, 1}, {5, 3}).part({1, 1, 0.75}, "m").end()
+        .sampler("<script>alert(1)</script>", planarSampler({3, 2, 0.8}, {0, 0, 1}, {0, 1, 0}, {1, 1}, {4, 4}), 300, 500)
+        .sampler("ambient", planarSampler({1, 1, 0.8}, {0, 0, 1}, {0, 1, 0}, {1, 1}, {4, 4}), 100)
+        .constraint(distanceConstraint({1, 2, std::nullopt}), "table", "sofa")
+        .build();
+}
 
 std::vector<std::string> links(const std::string& html) {
     std::vector<std::string> out;
@@ -40,7 +46,7 @@ TEST(ReportHtml, EscapesText) {
 
 TEST(ReportHtml, SamplersConstraintsAndOnlyExistingLinks) {
     test::TempDir dir;
-    Scene scene = io::loadScene(dir.write("scene.json", kScene));
+    Scene scene = makeScene();
     dir.write("plan.png", "png");
     dir.write("scene.glb", "glb");
     ReportData data;
@@ -79,7 +85,7 @@ TEST(ReportHtml, SamplersConstraintsAndOnlyExistingLinks) {
 
 TEST(ReportHtml, OptimizerResultSections) {
     test::TempDir dir;
-    Scene scene = io::loadScene(dir.write("scene.json", kScene));
+    Scene scene = makeScene();
     OptimizerOptions options;
     options.iterations = 40;
     Optimizer optimizer(scene, options);

@@ -5,6 +5,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include <luxplan/scene/presets.h>
 #include <luxplan/scene/room.h>
 
 namespace luxplan::test {
@@ -29,11 +30,29 @@ Material glossy(double reflectance, double roughness, double base) {
     return m;
 }
 
+Material glossy(double reflectance, double roughness, Vec3 base) {
+    Material m = glossy(reflectance, roughness, 0.0);
+    m.base = base;
+    return m;
+}
+
+Material mirror(double reflectance) {
+    Material m;
+    m.type = MaterialType::Mirror;
+    m.reflectance = Vec3(reflectance, reflectance, reflectance);
+    return m;
+}
+
 Material glass(double transmittance) {
     Material m;
     m.type = MaterialType::Glass;
     m.transmittance = transmittance;
     return m;
+}
+
+SceneBuilder& SceneBuilder::name(const std::string& name) {
+    name_ = name;
+    return *this;
 }
 
 SceneBuilder& SceneBuilder::material(const std::string& name, const Material& m) {
@@ -182,9 +201,29 @@ SceneBuilder& SceneBuilder::region(Vec2 lo, Vec2 hi, std::vector<double> rotatio
     return *this;
 }
 
+SceneBuilder& SceneBuilder::rangeRegion(Vec2 lo, Vec2 hi, double minDeg, double maxDeg) {
+    Entity* e = open();
+    if (!e) throw std::invalid_argument("rangeRegion() outside an entity");
+    if (maxDeg < minDeg) throw std::invalid_argument("rotation range is inverted");
+    Region r;
+    r.lo = lo, r.hi = hi;
+    r.continuousRotation = true;
+    r.rotationMinDeg = minDeg, r.rotationMaxDeg = maxDeg;
+    e->regions.push_back(r);
+    return *this;
+}
+
 SceneBuilder& SceneBuilder::part(Vec3 size, const std::string& material, std::optional<Vec3> center) {
     if (!open()) throw std::invalid_argument("part() outside an entity");
-    entities_[size_t(stack_.back())].parts.push_back({size, center, material});
+    entities_[size_t(stack_.back())].parts.push_back({"", size, center, material});
+    return *this;
+}
+
+SceneBuilder& SceneBuilder::preset(const std::string& preset, const std::string& material, std::optional<Vec3> size,
+                                   std::optional<Vec3> center) {
+    if (!open()) throw std::invalid_argument("preset() outside an entity");
+    if (!findPreset(preset)) throw std::invalid_argument("unknown preset \"" + preset + "\"");
+    entities_[size_t(stack_.back())].parts.push_back({preset, size, center, material});
     return *this;
 }
 
@@ -220,6 +259,16 @@ SceneBuilder& SceneBuilder::overlap(double tolerance, double weight) {
     return *this;
 }
 
+SceneBuilder& SceneBuilder::lightingWeight(double w) {
+    objective_.lightingWeight = w;
+    return *this;
+}
+
+SceneBuilder& SceneBuilder::optimizer(const OptimizerSettings& settings) {
+    optimizer_ = settings;
+    return *this;
+}
+
 uint32_t SceneBuilder::resolve(const std::map<std::string, uint32_t>& index, const std::string& name) const {
     auto it = index.find(name);
     if (it == index.end()) throw std::invalid_argument("unknown material \"" + name + "\"");
@@ -229,7 +278,7 @@ uint32_t SceneBuilder::resolve(const std::map<std::string, uint32_t>& index, con
 Scene SceneBuilder::build() const {
     if (!stack_.empty()) throw std::invalid_argument("entity \"" + entities_[size_t(stack_.back())].entity.path + "\" is not closed");
     Scene s;
-    s.name = "scene";
+    s.name = name_;
     s.daylight = daylight_;
     for (const auto& [name, m] : materials_) {  // name order, as the loader's JSON object
         s.materialIndex[name] = uint32_t(s.materials.size());
@@ -261,11 +310,20 @@ Scene SceneBuilder::build() const {
         Entity e = d.entity;
         for (const Part& p : d.parts) {
             PartInfo info;
-            info.kind = "box";
             info.material = resolve(s.materialIndex, p.material);
-            Vec3 c = p.center.value_or(Vec3(0, 0, p.size.z / 2));
             TriangleMesh mesh;
-            addBox(mesh, Bounds3(c - p.size * 0.5, c + p.size * 0.5), info.material);
+            if (p.preset.empty()) {
+                info.kind = "box";
+                Vec3 c = p.center.value_or(Vec3(0, 0, p.size->z / 2));
+                addBox(mesh, Bounds3(c - *p.size * 0.5, c + *p.size * 0.5), info.material);
+            } else {
+                const PresetInfo& preset = *findPreset(p.preset);
+                info.kind = preset.name;
+                Vec3 size = p.size.value_or(preset.defaultSize);
+                Vec3 c = p.center.value_or(Vec3(0, 0, size.z / 2));
+                mesh.append(buildPreset(preset, size, {{preset.slots.front(), info.material}}),
+                            Transform::translate(c - Vec3(0, 0, size.z / 2)));
+            }
             info.bounds = mesh.bounds();
             e.parts.push_back(info);
             e.mesh.append(mesh);
@@ -310,6 +368,8 @@ Scene SceneBuilder::build() const {
         s.constraints.push_back(c);
     }
     s.overlap = overlap_;
+    s.objective = objective_;
+    s.optimizer = optimizer_;
     return s;
 }
 

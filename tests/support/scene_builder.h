@@ -1,8 +1,8 @@
 // Scenes for module tests, built in C++ instead of read from JSON (as Yocto/GL's
 // scene presets): chainable calls that record what a scene file would say, and
 // build(), which resolves it as io::loadScene does (material indices in name order,
-// entity paths, carried samplers and emitters listed on their entities, default
-// tolerances, JSON paths, voxels). Loader-free: it links luxplan_scene only.
+// entity paths, parts and presets as meshes, carried samplers and emitters listed on
+// their entities, default tolerances, JSON paths, voxels). Loader-free: it links luxplan_scene only.
 //
 //   Scene s = SceneBuilder()
 //                 .material("m", diffuse(0.5))
@@ -23,10 +23,14 @@ namespace luxplan::test {
 
 Material diffuse(double reflectance);
 Material glossy(double reflectance, double roughness, double base);
+Material glossy(double reflectance, double roughness, Vec3 base);
 Material glass(double transmittance);
+Material mirror(double reflectance);
 
 class SceneBuilder {
 public:
+    // The scene's "name" (default "scene", what the loader takes from scene.json).
+    SceneBuilder& name(const std::string& name);
     SceneBuilder& material(const std::string& name, const Material& m);
 
     // Static geometry, in the order of the scene file's "geometry".
@@ -51,9 +55,16 @@ public:
     // Opens an entity (a child of the open one, if any) until end().
     SceneBuilder& entity(const std::string& name, Vec3 position = {}, double rotationDeg = 0);
     // A placement region of the open entity; no rotations: it keeps its initial one.
+    // An entity without regions is fixed.
     SceneBuilder& region(Vec2 lo, Vec2 hi, std::vector<double> rotationsDeg = {});
+    // A region whose rotations are the interval [minDeg, maxDeg] (the file's "rotation_range").
+    SceneBuilder& rangeRegion(Vec2 lo, Vec2 hi, double minDeg, double maxDeg);
     // A box part of the open entity, `size` centred at `center` (default: on the floor).
     SceneBuilder& part(Vec3 size, const std::string& material, std::optional<Vec3> center = std::nullopt);
+    // A furniture preset (scene/presets.h) of the open entity, all of it in `material`;
+    // size unset: the preset's default; centre unset: standing on the floor.
+    SceneBuilder& preset(const std::string& preset, const std::string& material, std::optional<Vec3> size = std::nullopt,
+                         std::optional<Vec3> center = std::nullopt);
     SceneBuilder& fronts(const std::vector<Vec2>& fronts);  // normalized, as the loader does
     SceneBuilder& end();
 
@@ -63,12 +74,17 @@ public:
                              double weight = 1);
     SceneBuilder& overlap(double tolerance, double weight = 1);
 
+    // The file's "objective" and "optimizer" objects.
+    SceneBuilder& lightingWeight(double w);
+    SceneBuilder& optimizer(const OptimizerSettings& settings);
+
     // Throws std::invalid_argument for an unknown name or an entity left open.
     Scene build() const;
 
 private:
     struct Part {
-        Vec3 size;
+        std::string preset;          // empty: a box
+        std::optional<Vec3> size;    // a box's, or the preset's (unset: its default)
         std::optional<Vec3> center;
         std::string material;
     };
@@ -90,6 +106,7 @@ private:
     Entity* open();
     uint32_t resolve(const std::map<std::string, uint32_t>& index, const std::string& name) const;
 
+    std::string name_ = "scene";
     std::map<std::string, Material> materials_;
     std::optional<DaylightParams> daylight_;
     std::vector<StaticDef> geometry_;
@@ -100,6 +117,8 @@ private:
     int topLevel_ = 0, fixedEmitters_ = 0, fixedSamplers_ = 0, constraintEntries_ = 0;
     std::vector<ConstraintDef> constraints_;
     OverlapRule overlap_;
+    Objective objective_;
+    OptimizerSettings optimizer_;
 };
 
 }  // namespace luxplan::test

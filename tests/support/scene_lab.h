@@ -1,5 +1,5 @@
 // A scene with everything needed to measure it: the daylight, the Embree scene and
-// the path tracer. Loader-free (support/lab.h adds scenes from JSON text).
+// the path tracer, for a scene built in C++ (support/scene_builder.h).
 #pragma once
 
 #include <memory>

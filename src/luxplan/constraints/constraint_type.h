@@ -6,6 +6,7 @@
 // of the scene (Scene::overlap), not a type.
 #pragma once
 
+#include <array>
 #include <memory>
 #include <optional>
 #include <string>
@@ -21,6 +22,8 @@ namespace luxplan {
 
 struct PenaltyTerm;    // constraints/terms.h
 struct ConstraintEnd;  // constraints/relational.h
+struct Scene;          // scene/scene.h
+class EntityInfo;      // constraints/entity_info.h
 
 // The scene file's "type" of the `constraints` entry that sets the overlap rule.
 inline constexpr const char* kOverlapRuleName = "overlap";
@@ -42,6 +45,16 @@ public:
     // The kind's Eq. between ends `a` and `b`: fills the term's value, reference,
     // penalty, rejects and, for a term made of parts, parts.
     virtual void evaluate(const ConstraintEnd& a, const ConstraintEnd& b, PenaltyTerm& t) const = 0;
+    // Where the ends of a constraint of this kind between entities `a` and `b` are under
+    // `world`. By default each entity's own end (relational.h: entityEnd()); the
+    // constraints flattenScene() moved off a group keep measuring the group
+    // (optimizer/flatten.h: FlatConstraint).
+    virtual std::array<ConstraintEnd, 2> ends(const Scene& scene, const EntityInfo& info,
+                                              const std::vector<Transform>& world, int a, int b) const;
+    // Whether G's normalizer (Eq. 2's sum of weights) counts its weight: all but
+    // flattenScene()'s cohesion rules, so that a layout the hierarchy allows costs the
+    // same in the flat scene.
+    virtual bool countsInNormalizer() const { return true; }
 
     // Whether reports show its value as an angle (degrees) or a distance (metres).
     virtual bool measuresAngle() const = 0;

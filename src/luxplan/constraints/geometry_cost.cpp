@@ -20,7 +20,7 @@ GeometryResult GeometryEvaluator::evaluate(const std::vector<Transform>& world, 
         if (c.a < 0 || (c.b < 0 && c.b != kRoomEntity)) continue;
         PenaltyTerm t = evaluateRelational(*scene_, info_, world, int(i));
         sum += t.weight * t.penalty;
-        if (!c.cohesion) weights += t.weight;
+        if (c.kind->countsInNormalizer()) weights += t.weight;
         if (t.parts.empty())
             r.violation += std::max(0.0, t.penalty - 1.0);
         else

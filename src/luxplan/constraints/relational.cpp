@@ -101,15 +101,14 @@ void AngleConstraint::hold(double angleRad, PenaltyTerm& t) const {
     t.rejects = rejects(t.penalty);
 }
 
-static ConstraintEnd resolveEnd(const Scene& scene, const EntityInfo& info, const std::vector<Transform>& world, int e,
-                                const std::optional<GroupEnd>& group) {
-    if (!group) return {entityCenter(info, world, e), worldFronts(scene, world, e)};
-    const Transform worldFromGroup = world[e] * group->entityFromGroup;
-    const Transform groupFromWorld = worldFromGroup.inverse();
-    Bounds3 box;
-    for (int m : group->members) box.extend((groupFromWorld * world[m]).apply(info.localBounds(m)));
-    return {group->members.empty() ? worldFromGroup.t : worldFromGroup.applyPoint(box.center()),
-            frontsIn(group->fronts, worldFromGroup)};
+ConstraintEnd entityEnd(const Scene& scene, const EntityInfo& info, const std::vector<Transform>& world, int e) {
+    if (e == kRoomEntity) return {Vec3(), {Vec2(1, 0), Vec2(0, 1)}};
+    return {entityCenter(info, world, e), worldFronts(scene, world, e)};
+}
+
+std::array<ConstraintEnd, 2> ConstraintKind::ends(const Scene& scene, const EntityInfo& info,
+                                                  const std::vector<Transform>& world, int a, int b) const {
+    return {entityEnd(scene, info, world, a), entityEnd(scene, info, world, b)};
 }
 
 PenaltyTerm evaluateRelational(const Scene& scene, const EntityInfo& info, const std::vector<Transform>& world,
@@ -120,9 +119,7 @@ PenaltyTerm evaluateRelational(const Scene& scene, const EntityInfo& info, const
     t.constraint = constraintIndex;
     t.a = c.a, t.b = c.b;
     t.weight = c.weight;
-    const ConstraintEnd a = resolveEnd(scene, info, world, c.a, c.groupA);
-    const ConstraintEnd b = c.b == kRoomEntity ? ConstraintEnd{Vec3(), {Vec2(1, 0), Vec2(0, 1)}}
-                                               : resolveEnd(scene, info, world, c.b, c.groupB);
+    const auto [a, b] = c.kind->ends(scene, info, world, c.a, c.b);
     c.kind->evaluate(a, b, t);
     return t;
 }

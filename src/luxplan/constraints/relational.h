@@ -24,8 +24,7 @@ inline constexpr double kDistanceRejectFraction = 0.05;
 inline constexpr double kMinDistanceElasticLimit = 0.01;
 
 // Where a constraint end is and which way it faces (world frame): an entity's centre
-// (entityCenter()) and fronts, a former group's (ConstraintSpec::groupA/B), or the
-// room's axes.
+// and fronts (entityEnd()), the room's axes, or what a kind's ends() makes of them.
 struct ConstraintEnd {
     Vec3 center;
     std::vector<Vec2> fronts;  // unit vectors in the xy plane
@@ -46,6 +45,9 @@ double facingAngle(const ConstraintEnd& from, const ConstraintEnd& to);
 
 // Fronts of an entity in world space, unit vectors in the xy plane.
 std::vector<Vec2> worldFronts(const Scene& scene, const std::vector<Transform>& world, int e);
+// An entity's end: its centre (entityCenter()) and world fronts; kRoomEntity: the
+// room's axes at the origin.
+ConstraintEnd entityEnd(const Scene& scene, const EntityInfo& info, const std::vector<Transform>& world, int e);
 
 // Eq. 4 read in angle space: P(angle, 0, theta, theta/8, 2). Zero up to the
 // tolerance theta, quadratic beyond, 1 at theta + theta/8.
@@ -79,7 +81,7 @@ protected:
     double toleranceDeg_;
 };
 
-// Evaluates constraint `constraintIndex` of the scene: resolves its ends, then its
+// Evaluates constraint `constraintIndex` of the scene: its kind's ends, then its
 // kind's Eq.
 PenaltyTerm evaluateRelational(const Scene& scene, const EntityInfo& info, const std::vector<Transform>& world,
                                int constraintIndex);

@@ -73,6 +73,28 @@ Placement placementOf(const Entity& e, const Transform& parentFromEntity) {
 
 }  // namespace
 
+FlatConstraint::FlatConstraint(std::shared_ptr<const ConstraintKind> kind, std::optional<GroupEnd> a,
+                               std::optional<GroupEnd> b, bool cohesion)
+    : kind_(std::move(kind)), groupA_(std::move(a)), groupB_(std::move(b)), cohesion_(cohesion) {}
+
+void FlatConstraint::evaluate(const ConstraintEnd& a, const ConstraintEnd& b, PenaltyTerm& t) const {
+    kind_->evaluate(a, b, t);
+}
+
+std::array<ConstraintEnd, 2> FlatConstraint::ends(const Scene& scene, const EntityInfo& info,
+                                                  const std::vector<Transform>& world, int a, int b) const {
+    auto end = [&](int e, const std::optional<GroupEnd>& group) -> ConstraintEnd {
+        if (!group) return entityEnd(scene, info, world, e);
+        const Transform worldFromGroup = world[e] * group->entityFromGroup;
+        const Transform groupFromWorld = worldFromGroup.inverse();
+        Bounds3 box;
+        for (int m : group->members) box.extend((groupFromWorld * world[m]).apply(info.localBounds(m)));
+        return {group->members.empty() ? worldFromGroup.t : worldFromGroup.applyPoint(box.center()),
+                frontsIn(group->fronts, worldFromGroup)};
+    };
+    return {end(a, groupA_), end(b, groupB_)};
+}
+
 FlatScene flattenScene(const Scene& scene) {
     const auto& entities = scene.entities;
     const size_t n = entities.size();
@@ -166,7 +188,8 @@ FlatScene flattenScene(const Scene& scene) {
         return g;
     };
     for (auto& c : out.constraints) {
-        c.groupA = groupEnd(c.a), c.groupB = groupEnd(c.b);
+        std::optional<GroupEnd> groupA = groupEnd(c.a), groupB = groupEnd(c.b);
+        if (groupA || groupB) c.kind = std::make_shared<FlatConstraint>(c.kind, std::move(groupA), std::move(groupB), false);
         if (c.a >= 0) c.a = flat.representative[size_t(c.a)];
         if (c.b >= 0) c.b = flat.representative[size_t(c.b)];
     }
@@ -204,15 +227,15 @@ FlatScene flattenScene(const Scene& scene) {
         ConstraintSpec c;
         c.jsonPath = member.jsonPath + " (cohesion with " + fb.path + ")";
         c.a = a, c.b = b;
-        c.cohesion = true;
-        c.kind = distanceConstraint({std::max(0.0, dMin - kDistanceSlack), dMax + kDistanceSlack, kDistanceElasticLimit});
-        out.constraints.push_back(c);
-        ++flat.cohesionConstraints;
-        if (degrees(focusMax) <= kFocusAtMostDeg) c.kind = focusConstraint(degrees(focusMax) + kAngleSlackDeg);
-        else if (degrees(alignMax) <= kAlignmentAtMostDeg) c.kind = alignmentConstraint(degrees(alignMax) + kAngleSlackDeg);
-        else continue;  // turns freely relative to the anchor: nothing to keep
-        out.constraints.push_back(c);
-        ++flat.cohesionConstraints;
+        auto cohesion = [&](std::shared_ptr<const ConstraintKind> kind) {
+            c.kind = std::make_shared<FlatConstraint>(std::move(kind), std::nullopt, std::nullopt, true);
+            out.constraints.push_back(c);
+            ++flat.cohesionConstraints;
+        };
+        cohesion(distanceConstraint({std::max(0.0, dMin - kDistanceSlack), dMax + kDistanceSlack, kDistanceElasticLimit}));
+        if (degrees(focusMax) <= kFocusAtMostDeg) cohesion(focusConstraint(degrees(focusMax) + kAngleSlackDeg));
+        else if (degrees(alignMax) <= kAlignmentAtMostDeg) cohesion(alignmentConstraint(degrees(alignMax) + kAngleSlackDeg));
+        // else it turns freely relative to the anchor: nothing to keep
     }
     return flat;
 }

@@ -110,26 +110,12 @@ class ConstraintKind;  // constraints/constraint_type.h
 
 inline constexpr int kRoomEntity = -2;  // constraint target "room"
 
-// A constraint end that stands for a former group in a flattened scene
-// (flattenScene()): it keeps the group's centre (Eqs. 5, 7: the box of the members'
-// geometry in the group's frame) and the group's fronts, carried by the entity that
-// represents the group.
-struct GroupEnd {
-    std::vector<int> members;   // entities whose own geometry the box holds
-    Transform entityFromGroup;  // the group's frame in the representative's
-    std::vector<Vec2> fronts;   // the group's fronts, group frame
-};
-
 // A relational constraint (Section 5.2) between two entities.
 struct ConstraintSpec {
     std::string jsonPath;
     std::shared_ptr<const ConstraintKind> kind;  // alignment, distance, focus, conversation (constraints/)
     int a = -1, b = -1;  // entity indices (b may be kRoomEntity where the kind accepts the room)
     double weight = 1;
-    // Written by flattenScene() in place of a group's structure: counts in G's sum
-    // but not in its normalizer, so a layout the hierarchy allows costs the same flat.
-    bool cohesion = false;
-    std::optional<GroupEnd> groupA, groupB;  // flattenScene(): a or b was a group
 };
 
 // The overlap rule (Eq. 6), which holds between every two solids of the scene. The
