@@ -7,6 +7,7 @@
 #include <luxplan/constraints/constraint_type.h>
 #include <luxplan/io/layout_io.h>
 #include <luxplan/io/scene_loader.h>
+#include <luxplan/emitters/emitter_shape.h>
 #include <luxplan/lightsamplers/sampler_type.h>
 #include <luxplan/scene/layout.h>
 
@@ -57,6 +58,9 @@ void printSummary(const Scene& s, std::ostream& out) {
     for (const auto& e : s.emitters) fixedLights += e.entity < 0, flux += e.fluxLm;
     out << "  luminaires: " << fixedLights << " fixed, " << s.emitters.size() - fixedLights << " on entities, "
         << std::setprecision(0) << flux << " lm in all\n" << std::setprecision(2);
+    for (const auto& e : s.emitters)
+        out << "    " << e.name << " (" << e.shape->name() << (e.entity >= 0 ? ", on " + s.entities[e.entity].path : "")
+            << "): " << e.shape->describe() << ", " << std::setprecision(0) << e.fluxLm << " lm\n" << std::setprecision(2);
     int groups = 0, movable = 0;
     for (const auto& e : s.entities) groups += e.isGroup(), movable += e.movable();
     out << "  entities: " << s.entities.size() << " (" << groups << " groups, " << movable << " movable)\n";
@@ -75,7 +79,8 @@ void printSummary(const Scene& s, std::ostream& out) {
     out << "  samplers: " << s.samplers.size() << "\n";
     for (const auto& sp : s.samplers)
         out << "    " << sp.name << " (" << sp.type->name() << (sp.entity >= 0 ? ", on " + s.entities[sp.entity].path : "")
-            << "): target [" << sp.targetMin << ", " << sp.targetMax << "] " << sp.type->unit() << "\n";
+            << "): " << sp.type->describe() << "; target [" << sp.targetMin << ", " << sp.targetMax << "] "
+            << sp.type->unit() << "\n";
     out << "  constraints: " << s.constraints.size() << "\n";
     for (const auto& c : s.constraints)
         out << "    " << c.kind->name() << " " << entityName(s, c.a) << " - " << entityName(s, c.b) << ": "

@@ -52,7 +52,7 @@ TEST(Cli, InfoSummarizesTheScene) {
     Result r = run("info " + kDemo);
     EXPECT_EQ(r.exitCode, 0) << r.output;
     for (const char* part : {"rooms: 1, openings: 3", "luminaires: 6 fixed", "entities: 24", "samplers: 12", "constraints: 27",
-                             "overlap rule: tolerance 0.05"})
+                             "overlap rule: tolerance 0.05", "points on", "strata over", " lm\n"})
         EXPECT_NE(r.output.find(part), std::string::npos) << part << "\n" << r.output;
 }
 

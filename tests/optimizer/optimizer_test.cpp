@@ -293,6 +293,7 @@ TEST_F(OptimizerTest, WritesReportAndTrace) {
     ASSERT_EQ(report["samplers"].size(), 1u);
     EXPECT_EQ(report["samplers"][0]["name"], "desk_light");
     EXPECT_EQ(report["samplers"][0]["unit"], "lx");
+    EXPECT_EQ(report["samplers"][0]["description"], scene.samplers[0].type->describe());
     EXPECT_EQ(report["samplers"][0]["target"][0], 300);
     int64_t proposed = 0;
     for (const char* m : {"translate", "rotate", "swap", "jump"}) proposed += report["moves"][m]["proposed"].get<int64_t>();

@@ -92,7 +92,7 @@ std::string reportJson(const Scene& scene, const OptimizerResult& r) {
     for (size_t k = 0; k < best.samplers.samplers.size() && k < scene.samplers.size(); ++k) {
         const SamplerResult& m = best.samplers.samplers[k];
         const LightSamplerSpec& s = scene.samplers[k];
-        Json e = {{"name", s.name}, {"type", s.type->name()}, {"unit", s.type->unit()},
+        Json e = {{"name", s.name}, {"type", s.type->name()}, {"description", s.type->describe()}, {"unit", s.type->unit()},
                   {"value", number(m.value)}, {"target", {number(s.targetMin), number(s.targetMax)}},
                   {"tolerance", s.tolerance}, {"weight", s.weight}, {"penalty", number(lightingPenalty(s, m.value))}};
         if (!m.points.empty()) e["points"] = m.points;

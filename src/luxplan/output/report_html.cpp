@@ -183,7 +183,8 @@ void samplerTable(std::ostringstream& out, const Scene& scene, const std::vector
            "<th>tolerance</th><th>penalty</th><th>status</th></tr>\n";
     for (size_t k = 0; k < rows.size(); ++k) {
         const LightSamplerSpec& s = scene.samplers[k];
-        out << "<tr>" << cell(escapeHtml(s.name)) << cell(escapeHtml(s.type->name()))
+        out << "<tr>" << cell(escapeHtml(s.name)) << "<td title=\"" << escapeHtml(s.type->describe()) << "\">"
+            << escapeHtml(s.type->name()) << "</td>"
             << cell(s.entity >= 0 ? escapeHtml(entityName(scene, s.entity)) : "<span class=\"muted\">fixed</span>");
         if (rows[k].known) {
             bool ok = rows[k].value >= s.targetMin && rows[k].value <= s.targetMax;
