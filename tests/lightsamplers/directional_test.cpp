@@ -131,5 +131,16 @@ TEST(ItemEstimates, StratifiedErrorIgnoresTheSpreadBetweenSources) {
     EXPECT_DOUBLE_EQ(e.of(0, 1u).value, 2.0);
 }
 
+// With unequal path counts per source, each source still weighs 1 / sources (a pooled
+// mean would weigh the busier source more), and the error adds each source's own.
+TEST(ItemEstimates, SourcesWeighEquallyWhateverTheirPathCounts) {
+    ItemEstimates e(1, 2);
+    for (int k = 0; k < 4; ++k) e.cell(0, 0, 0).add(k % 2 ? 0.0 : 2.0);  // mean 1, variance 4/3
+    for (int k = 0; k < 12; ++k) e.cell(0, 1, 0).add(3.0);
+    Estimate x = e.of(0);
+    EXPECT_DOUBLE_EQ(x.value, 2.0);
+    EXPECT_NEAR(x.standardError, std::sqrt(4.0 / 3 / 4) / 2, 1e-12);
+}
+
 }  // namespace
 }  // namespace luxplan

@@ -32,18 +32,17 @@ ItemEstimates::ItemEstimates(int items, int sources)
     : items_(items), sources_(sources), cells_(size_t(items) * sources * kFolds) {}
 
 Estimate ItemEstimates::of(int item, unsigned folds) const {
-    double sum = 0, varianceOfSum = 0;
-    uint64_t n = 0;
+    // The stratified estimate: each source's mean weighs 1 / sources whatever its path
+    // count, and so does its variance of the mean (squared).
+    double mean = 0, variance = 0;
     for (int source = 0; source < sources_; ++source) {
         MeanEstimator m;
         for (int g = 0; g < kFolds; ++g)
             if (folds & (1u << g)) m.merge(cells_[index(item, source, g)]);
-        sum += m.mean() * double(m.count());
-        varianceOfSum += m.variance() * double(m.count());
-        n += m.count();
+        mean += m.mean();
+        variance += m.count() > 0 ? m.variance() / double(m.count()) : 0.0;
     }
-    if (n == 0) return {};
-    return {sum / double(n), std::sqrt(varianceOfSum) / double(n)};
+    return {mean / sources_, std::sqrt(variance) / sources_};
 }
 
 uint64_t ItemEstimates::paths(int item, unsigned folds) const {

@@ -68,9 +68,9 @@ private:
 // goes to fold (path index mod kFolds), so folds are independent and a type can
 // choose among its items with some folds and measure the choice with another (the
 // directional sampler's brightest stratum). Paths traced for different items are
-// strata of one stratified estimate: an item's standard error sums the variances
-// within each item's paths, not across them (a sampler sharing paths draws a fixed
-// number of paths per item).
+// strata of one stratified estimate: an item's value is the mean over sources of each
+// source's mean, and its variance sums the variances within each source's paths, not
+// across them.
 class ItemEstimates {
 public:
     static constexpr int kFolds = 8;
