@@ -75,6 +75,27 @@ TEST(Directional, LampInViewReadsItsStratumLuminance) {
     EXPECT_NEAR(r.value, expected, 4 * r.standardError + 0.01 * expected);
 }
 
+// Adaptive measurement drops the strata that cannot hold the max (successive
+// elimination): the dark ones stop after the first round, the lamp's runs on, and
+// the value is still the lamp's stratum luminance.
+TEST(Directional, AdaptiveMeasurementDropsStrataThatCannotHoldTheMax) {
+    const double flux = 1000, d = 2, fov = 30;
+    const int strata = 3;
+    const double expected = flux / (4 * kPi) / (d * d) / cellArea(fov, strata);
+    SceneLab lab(SceneBuilder()
+                     .emitter("bulb", sphereEmitter({0, d, 0}, 0.02), flux)
+                     .sampler("lamp", directionalSampler({0, 0, 0}, {0, 1, 0}, kZ, fov, strata), expected, kInf, 0.1 * expected)
+                     .build());
+    MeasureOptions o;
+    o.pathsPerPoint = 1000, o.adaptive = true;
+    MeasureResult m = measureSamplers(*lab.tracer, o);
+    const SamplerResult& r = m.samplers[0];
+    const int batch = o.batchPaths;
+    EXPECT_EQ(r.pathsPerPoint, 1000);               // the lamp's stratum, on its band's edge
+    EXPECT_EQ(m.paths, uint64_t(1000 + 8 * batch));  // the eight dark ones: one round
+    EXPECT_NEAR(r.value, expected, 4 * r.standardError + 0.01 * expected);
+}
+
 TEST(Directional, UniformSkyThroughAnOpeningReadsItsLuminanceInEveryStratum) {
     const double L = 3000;
     SceneLab lab(SceneBuilder()

@@ -136,6 +136,22 @@ public:
         return best;
     }
 
+    // Successive elimination: a stratum whose upper bound (mean + z sigma) lies below
+    // another's lower bound cannot hold the max; its paths stop (its estimate keeps
+    // the paths it had, and the light samples other strata's paths send it).
+    std::vector<char> stillNeeded(const ItemEstimates& e, double z) const override {
+        const int n = e.items();
+        std::vector<Estimate> x(static_cast<size_t>(n));
+        double bestLower = -kInf;
+        for (int i = 0; i < n; ++i) {
+            x[size_t(i)] = e.of(i);
+            bestLower = std::max(bestLower, x[size_t(i)].value - z * x[size_t(i)].standardError);
+        }
+        std::vector<char> keep(static_cast<size_t>(n));
+        for (int i = 0; i < n; ++i) keep[size_t(i)] = x[size_t(i)].value + z * x[size_t(i)].standardError >= bestLower;
+        return keep;
+    }
+
     Estimate combine(const ItemEstimates& e) const override {
         const int n = e.items();
         std::vector<double> value, weight;  // per fold with paths

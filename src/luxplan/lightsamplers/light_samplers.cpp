@@ -53,6 +53,10 @@ uint64_t ItemEstimates::paths(int item, unsigned folds) const {
     return n;
 }
 
+std::vector<char> PlacedSampler::stillNeeded(const ItemEstimates& items, double) const {
+    return std::vector<char>(size_t(items.items()), 1);
+}
+
 Estimate PlacedSampler::combine(const ItemEstimates& items) const {
     Estimate e;
     if (items.items() == 0) return e;
@@ -139,23 +143,30 @@ MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& op
     };
 
     // Rounds of options.batchPaths paths per point (one round of all when not
-    // adaptive); a sampler leaves once its value is settled.
-    std::vector<int> traced(samplers, 0);
-    std::vector<char> active(samplers, 1);
+    // adaptive); a sampler leaves once its value is settled, and an item once its
+    // sampler no longer needs it.
+    std::vector<int> traced(work.size(), 0);
+    std::vector<char> active(samplers, 1), needed(work.size(), 1);
     for (int from = 0; from < paths;) {
         const int to = options.adaptive ? std::min(paths, from + std::max(1, options.batchPaths)) : paths;
         std::vector<size_t> round;
         for (size_t k = 0; k < samplers; ++k)
             if (active[k])
-                for (size_t index = firstWork[k]; index < firstWork[k + 1]; ++index) round.push_back(index);
+                for (size_t index = firstWork[k]; index < firstWork[k + 1]; ++index)
+                    if (needed[index]) round.push_back(index);
         if (round.empty()) break;
         parallelFor(round.size(), [&](size_t i) { trace(round[i], from, to); });
+        for (size_t index : round) traced[index] = to;
+        if (!options.adaptive || to == paths) break;
         for (size_t k = 0; k < samplers; ++k) {
-            if (!active[k]) continue;
-            traced[k] = to;
-            if (options.adaptive && to < paths && firstWork[k + 1] > firstWork[k] &&
-                settled(scene.samplers[k], placed[k]->combine(estimates(k)), options.confidenceZ))
+            if (!active[k] || firstWork[k + 1] == firstWork[k]) continue;
+            const ItemEstimates e = estimates(k);
+            if (settled(scene.samplers[k], placed[k]->combine(e), options.confidenceZ)) {
                 active[k] = 0;
+                continue;
+            }
+            const std::vector<char> keep = placed[k]->stillNeeded(e, options.confidenceZ);
+            for (size_t i = 0; i < keep.size(); ++i) needed[firstWork[k] + i] = needed[firstWork[k] + i] && keep[i];
         }
         from = to;
     }
@@ -165,13 +176,13 @@ MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& op
     result.samplers.resize(samplers);
     for (size_t k = 0; k < samplers; ++k) {
         SamplerResult& r = result.samplers[k];
-        r.pathsPerPoint = traced[k];
         for (size_t index = firstWork[k]; index < firstWork[k + 1]; ++index) {
             r.droppedNonFinite += done[index].dropped;
             result.rays += done[index].stats;
+            r.pathsPerPoint = std::max(r.pathsPerPoint, traced[index]);
+            result.paths += uint64_t(traced[index]);
         }
         result.droppedNonFinite += r.droppedNonFinite;
-        result.paths += uint64_t(firstWork[k + 1] - firstWork[k]) * uint64_t(traced[k]);
         if (firstWork[k + 1] == firstWork[k]) continue;
         const ItemEstimates e = estimates(k);
         for (int i = 0; i < e.items(); ++i) {

@@ -14,7 +14,7 @@ struct SamplerResult {
     std::vector<double> points;    // per item: the type's points or strata, in its order
     std::vector<double> pointErrors;
     uint64_t droppedNonFinite = 0; // NaN/inf path samples left out (core/estimator.h)
-    int pathsPerPoint = 0;         // traced per item (fewer than asked when adaptive)
+    int pathsPerPoint = 0;         // traced per item, the most over its items (fewer than asked when adaptive)
 };
 
 }  // namespace luxplan
