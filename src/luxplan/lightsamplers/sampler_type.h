@@ -37,7 +37,6 @@ class PathContributions {
 public:
     static constexpr int kCapacity = 8;
     explicit PathContributions(int item) : item_(item) {}
-    int item() const { return item_; }
     void add(double value) { add(item_, value); }  // to the path's own item
     void add(int item, double value) {
         for (int k = 0; k < count_; ++k)
