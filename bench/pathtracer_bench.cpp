@@ -23,6 +23,8 @@ Office& office() {
     return o;
 }
 
+// The same measurement (same seed: the same rays) every iteration, so that
+// BM_ReplayOfficeRays replays exactly its rays.
 void BM_MeasureOffice(benchmark::State& state) {
     Office& o = office();
     tbb::global_control oneThread(tbb::global_control::max_allowed_parallelism, 1);
@@ -34,7 +36,6 @@ void BM_MeasureOffice(benchmark::State& state) {
         paths += r.paths;
         rays += r.rays.closest + r.rays.shadow;
         shadow += r.rays.shadow;
-        ++options.seed;
     }
     state.counters["paths/s"] = benchmark::Counter(double(paths), benchmark::Counter::kIsRate);
     state.counters["rays/s"] = benchmark::Counter(double(rays), benchmark::Counter::kIsRate);
@@ -42,6 +43,32 @@ void BM_MeasureOffice(benchmark::State& state) {
     state.counters["shadow_share"] = double(shadow) / double(rays);
 }
 BENCHMARK(BM_MeasureOffice)->Arg(64)->Unit(benchmark::kMillisecond);
+
+// Every ray of one BM_MeasureOffice iteration (recorded once), traced again through
+// Embree alone: the time the path tracer would take if rays were all it cost. The
+// ratio of the two benchmarks' times is the tracer's overhead on the same rays.
+void BM_ReplayOfficeRays(benchmark::State& state) {
+    Office& o = office();
+    tbb::global_control oneThread(tbb::global_control::max_allowed_parallelism, 1);
+    static RayLog log = [&] {
+        RayLog l;
+        MeasureOptions options;
+        options.pathsPerPoint = 64;
+        o.rt.record(&l);
+        measureSamplers(o.tracer, options);
+        o.rt.record(nullptr);
+        return l;
+    }();
+    uint64_t rays = 0;
+    for (auto _ : state) {
+        for (const Ray& r : log.closest) benchmark::DoNotOptimize(o.rt.intersect(r));
+        for (const Ray& r : log.shadow) benchmark::DoNotOptimize(o.rt.occluded(r));
+        rays += log.closest.size() + log.shadow.size();
+    }
+    state.counters["rays/s"] = benchmark::Counter(double(rays), benchmark::Counter::kIsRate);
+    state.counters["rays"] = double(log.closest.size() + log.shadow.size());
+}
+BENCHMARK(BM_ReplayOfficeRays)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace luxplan

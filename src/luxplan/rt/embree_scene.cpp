@@ -237,6 +237,7 @@ void EmbreeScene::commit() {
 }
 
 std::optional<Hit> EmbreeScene::intersect(const Ray& r) const {
+    if (log_) log_->closest.push_back(r);
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     RTCRayHit rh;
@@ -276,6 +277,7 @@ std::optional<Hit> EmbreeScene::intersect(const Ray& r) const {
 }
 
 bool EmbreeScene::occluded(const Ray& r) const {
+    if (log_) log_->shadow.push_back(r);
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     RTCRay ray = toRtcRay(r);

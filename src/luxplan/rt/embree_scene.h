@@ -49,6 +49,12 @@ struct Ray {
     unsigned mask = kAllMask;
 };
 
+// Every ray a scene traces, for replaying them through Embree alone (bench/): what
+// the path tracer costs beyond its rays.
+struct RayLog {
+    std::vector<Ray> closest, shadow;
+};
+
 enum class HitKind { Static, Entity, Emitter };
 
 struct Hit {
@@ -77,6 +83,9 @@ public:
 
     std::optional<Hit> intersect(const Ray& ray) const;
     bool occluded(const Ray& ray) const;
+    // Appends every ray traced from now on to `log` (null: stop). Not thread-safe:
+    // record with one thread.
+    void record(RayLog* log) { log_ = log; }
 
     const Scene& scene() const { return scene_; }
     const Transform& worldFromEntity(int entity) const { return worldFromEntity_[entity]; }
@@ -114,6 +123,7 @@ private:
     std::vector<TriangleMesh> emitterMeshes_;  // emitters Embree sees as triangles (rects)
     std::deque<TriangleMesh> splitMeshes_;     // meshes split into opaque and glass parts
     bool hasGlass_ = false;
+    RayLog* log_ = nullptr;
 };
 
 }  // namespace luxplan
