@@ -316,6 +316,29 @@ TEST(EmitterShadows, ALuminaireBlocksTheLightOfAnotherBehindIt) {
     expectWithin(aside, rectIlluminance(L, -side / 2, side / 2, -side / 2, side / 2, 0, 0, h), 2e-3, "unblocked");
 }
 
+// A sampler point lying on a surface (a work plane at a desk's top, carried by a
+// rotated entity: a micron off either way) must see the light above it, not the
+// surface it lies on: rays from a sensor skip their first 0.1 mm.
+TEST(SensorOnASurface, SeesTheLightAboveIt) {
+    const double flux = 1000, h = 1.0;
+    for (double z : {0.0, 0.75}) {
+        SceneLab lab(withMaterials(0)
+                         .box("top", {-2, -2, z - 0.05}, {2, 2, z}, "black")
+                         .emitter("bulb", sphereEmitter({0.3, 0.2, z + h}, 0.05), flux)
+                         .sampler("p", plane({0.3, 0.2, z - 1e-6}, kZ, kUp, {0.4, 0.4}, {4, 4}), 0)
+                         .build());
+        SamplerResult r = lab.measure(400).samplers[0];
+        // Points at (+-0.05, +-0.15) from below the bulb: E = I cos / d^2 = I h / d^3.
+        double expected = 0;
+        for (double dx : {-0.15, -0.05, 0.05, 0.15})
+            for (double dy : {-0.15, -0.05, 0.05, 0.15}) {
+                double d = std::sqrt(dx * dx + dy * dy + h * h);
+                expected += flux / (4 * kPi) * h / (d * d * d) / 16;
+            }
+        expectWithin(r, expected, 1e-3, "work plane at z = " + std::to_string(z));
+    }
+}
+
 // A stand lamp carried by a movable entity lights the table it is moved to.
 TEST(CarriedEmitters, FollowTheLayout) {
     SceneLab lab(SceneBuilder()

@@ -98,7 +98,12 @@ double PathTracer::sample(const Sensor& sensor, Rng& rng, RayStats& stats, bool*
         if (!x.isSurface()) return sensor.pdf(wi);
         return x.bsdf->pdf(x.wo, x.shading.toLocal(wi));
     };
-    auto spawn = [&](const Vertex& x, const Vec3& wi) { return x.isSurface() ? offsetAlong(x.p, x.ng, wi) : x.p; };
+    // Rays leave a surface offset along its normal, and a sensor 0.1 mm along the ray,
+    // so that a sampler point lying on a surface (a micron off it, after the transforms
+    // of a rotated entity) sees past that surface.
+    auto spawn = [&](const Vertex& x, const Vec3& wi) {
+        return x.isSurface() ? offsetAlong(x.p, x.ng, wi) : x.p + wi * kRayEpsilon;
+    };
 
     bool lastDelta = false;
     double lastPdf = 0;
@@ -117,7 +122,7 @@ double PathTracer::sample(const Sensor& sensor, Rng& rng, RayStats& stats, bool*
                 if (!(lightPdf > 0) || maxComponent(Le) <= 0) return;
                 Vec3 f = evalCos(v, wi);
                 if (maxComponent(f) <= 0) return;
-                double T = transmittance(spawn(v, wi), wi, maxT, target, stats);
+                double T = transmittance(spawn(v, wi), wi, v.isSurface() ? maxT : maxT - kRayEpsilon, target, stats);
                 if (T <= 0) return;
                 double w = powerHeuristic(1, lightPdf, 1, pdfOf(v, wi));
                 Vec3 contribution = throughput * f * Le * (T * w / lightPdf);
