@@ -6,6 +6,7 @@
 
 #include <cmath>
 
+#include <luxplan/core/rng.h>
 #include <luxplan/emitters/emitter_shape.h>
 #include "support/scene_builder.h"
 #include "support/scene_lab.h"
@@ -147,9 +148,35 @@ TEST(ItemEstimates, StratifiedErrorIgnoresTheSpreadBetweenSources) {
     Estimate x = e.of(0);
     EXPECT_DOUBLE_EQ(x.value, 2.0);
     EXPECT_DOUBLE_EQ(x.standardError, 0.0);
-    EXPECT_EQ(e.paths(0), 64u);
-    EXPECT_EQ(e.paths(0, 1u), 8u);
-    EXPECT_DOUBLE_EQ(e.of(0, 1u).value, 2.0);
+    EXPECT_EQ(e.pathsInFold(0, 0), 8u);
+    EXPECT_DOUBLE_EQ(e.ofFold(0, 0).value, 2.0);
+    EXPECT_DOUBLE_EQ(e.ofAllBut(0, 0).value, 2.0);
+    EXPECT_DOUBLE_EQ(e.ofAllBut(0, 0).standardError, 0.0);
+}
+
+// A held-out fold is taken from cached totals by subtraction: it must equal the
+// estimate merged from scratch out of the other folds.
+TEST(ItemEstimates, HeldOutFoldMatchesTheOtherFoldsMergedFromScratch) {
+    const int items = 3, sources = 3;
+    ItemEstimates e(items, sources);
+    Rng rng(4);
+    for (int i = 0; i < items; ++i)
+        for (int s = 0; s < sources; ++s)
+            for (int g = 0; g < ItemEstimates::kFolds; ++g)
+                for (int k = 0, n = 1 + int(5 * rng.uniform()); k < n; ++k) e.cell(i, s, g).add(100 * rng.uniform());
+    for (int i = 0; i < items; ++i)
+        for (int g = 0; g < ItemEstimates::kFolds; ++g) {
+            double mean = 0, variance = 0;
+            for (int s = 0; s < sources; ++s) {
+                MeanEstimator m;
+                for (int h = 0; h < ItemEstimates::kFolds; ++h)
+                    if (h != g) m.merge(e.cell(i, s, h));
+                mean += m.mean() / sources, variance += m.variance() / double(m.count()) / (sources * sources);
+            }
+            Estimate x = e.ofAllBut(i, g);
+            EXPECT_NEAR(x.value, mean, 1e-12 * mean);
+            EXPECT_NEAR(x.standardError, std::sqrt(variance), 1e-9 * std::sqrt(variance));
+        }
 }
 
 // With unequal path counts per source, each source still weighs 1 / sources (a pooled

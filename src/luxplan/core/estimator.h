@@ -31,6 +31,14 @@ public:
         sum_ += o.sum_, sumSquares_ += o.sumSquares_, count_ += o.count_, dropped_ += o.dropped_;
     }
 
+    // The estimator of this one's samples less `part`'s, which must be a subset of them
+    // (merged in earlier): a fold held out of a total.
+    MeanEstimator without(const MeanEstimator& part) const {
+        MeanEstimator r = *this;
+        r.sum_ -= part.sum_, r.sumSquares_ -= part.sumSquares_, r.count_ -= part.count_, r.dropped_ -= part.dropped_;
+        return r;
+    }
+
     uint64_t count() const { return count_; }
     uint64_t dropped() const { return dropped_; }
 

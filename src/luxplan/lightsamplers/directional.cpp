@@ -157,14 +157,13 @@ public:
         std::vector<double> value, weight;  // per fold with paths
         std::vector<double> mean(static_cast<size_t>(n)), error(static_cast<size_t>(n));
         for (int g = 0; g < ItemEstimates::kFolds && n > 1; ++g) {
-            const unsigned fold = 1u << g;
-            const double paths = double(e.paths(0, fold));  // the same for every stratum
+            const double paths = double(e.pathsInFold(0, g));  // the same for every stratum
             if (paths == 0) continue;
             for (int i = 0; i < n; ++i) {
-                Estimate x = e.of(i, ItemEstimates::kAllFolds & ~fold);
+                Estimate x = e.ofAllBut(i, g);
                 mean[size_t(i)] = x.value, error[size_t(i)] = x.standardError;
             }
-            value.push_back(e.of(int(brightest(mean, error)), fold).value);
+            value.push_back(e.ofFold(int(brightest(mean, error)), g).value);
             weight.push_back(paths);
         }
         Estimate r;

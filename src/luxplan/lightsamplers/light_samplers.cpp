@@ -31,25 +31,42 @@ struct WorkResult {
 ItemEstimates::ItemEstimates(int items, int sources)
     : items_(items), sources_(sources), cells_(size_t(items) * sources * kFolds) {}
 
-Estimate ItemEstimates::of(int item, unsigned folds) const {
-    // The stratified estimate: each source's mean weighs 1 / sources whatever its path
-    // count, and so does its variance of the mean (squared).
+namespace {
+
+// A stratum of a stratified estimate: its mean and the variance of that mean.
+void addStratum(const MeanEstimator& m, double& mean, double& variance) {
+    mean += m.mean();
+    variance += m.count() > 0 ? m.variance() / double(m.count()) : 0.0;
+}
+
+}  // namespace
+
+// The stratified estimate: each source's mean weighs 1 / sources whatever its path
+// count, and so does its variance of the mean (squared).
+Estimate ItemEstimates::stratified(int item, int heldOut) const {
+    if (totals_.empty()) {
+        totals_.resize(size_t(items_) * sources_);
+        for (int i = 0; i < items_; ++i)
+            for (int source = 0; source < sources_; ++source)
+                for (int g = 0; g < kFolds; ++g) totals_[size_t(i) * sources_ + source].merge(cells_[index(i, source, g)]);
+    }
     double mean = 0, variance = 0;
     for (int source = 0; source < sources_; ++source) {
-        MeanEstimator m;
-        for (int g = 0; g < kFolds; ++g)
-            if (folds & (1u << g)) m.merge(cells_[index(item, source, g)]);
-        mean += m.mean();
-        variance += m.count() > 0 ? m.variance() / double(m.count()) : 0.0;
+        const MeanEstimator& total = totals_[size_t(item) * sources_ + source];
+        addStratum(heldOut < 0 ? total : total.without(cells_[index(item, source, heldOut)]), mean, variance);
     }
     return {mean / sources_, std::sqrt(variance) / sources_};
 }
 
-uint64_t ItemEstimates::paths(int item, unsigned folds) const {
+Estimate ItemEstimates::ofFold(int item, int fold) const {
+    double mean = 0, variance = 0;
+    for (int source = 0; source < sources_; ++source) addStratum(cells_[index(item, source, fold)], mean, variance);
+    return {mean / sources_, std::sqrt(variance) / sources_};
+}
+
+uint64_t ItemEstimates::pathsInFold(int item, int fold) const {
     uint64_t n = 0;
-    for (int source = 0; source < sources_; ++source)
-        for (int g = 0; g < kFolds; ++g)
-            if (folds & (1u << g)) n += cells_[index(item, source, g)].count();
+    for (int source = 0; source < sources_; ++source) n += cells_[index(item, source, fold)].count();
     return n;
 }
 

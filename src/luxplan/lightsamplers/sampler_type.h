@@ -81,15 +81,22 @@ public:
     int items() const { return items_; }
     // What the paths traced for item `source` added to `item` in fold `fold`.
     MeanEstimator& cell(int item, int source, int fold) { return cells_[index(item, source, fold)]; }
-    // Item `item` estimated from the folds whose bits are set in `folds`.
-    Estimate of(int item, unsigned folds = kAllFolds) const;
-    // How many paths of those folds reach `item`.
-    uint64_t paths(int item, unsigned folds = kAllFolds) const;
+    // Item `item` estimated from all folds, or from every fold but `heldOut`.
+    Estimate of(int item) const { return stratified(item, -1); }
+    Estimate ofAllBut(int item, int heldOut) const { return stratified(item, heldOut); }
+    // ... or from fold `fold` alone.
+    Estimate ofFold(int item, int fold) const;
+    // How many paths of fold `fold` reach `item`.
+    uint64_t pathsInFold(int item, int fold) const;
 
 private:
     size_t index(int item, int source, int fold) const { return (size_t(item) * sources_ + source) * kFolds + fold; }
+    Estimate stratified(int item, int heldOut) const;
     int items_, sources_;
     std::vector<MeanEstimator> cells_;
+    // Per (item, source), all folds merged: set up on first use, after the cells are
+    // filled, so that a held-out fold costs one subtraction, not seven merges.
+    mutable std::vector<MeanEstimator> totals_;
 };
 
 // How the floor plan shows a sampler (output/plan.cpp), in world space.
