@@ -96,7 +96,7 @@ bool settled(const LightSamplerSpec& spec, const Estimate& e, double z) {
     return hi <= spec.targetMin || (lo >= spec.targetMin && hi <= spec.targetMax) || lo >= spec.targetMax;
 }
 
-MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& options) {
+MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& options, PathCache* cache) {
     const EmbreeScene& rt = tracer.rayTracer();
     const Scene& scene = rt.scene();
     const size_t samplers = scene.samplers.size();
@@ -109,6 +109,11 @@ MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& op
         for (int i = 0; i < placed.back()->items(); ++i) work.push_back({int(k), i});
     }
     firstWork.push_back(work.size());
+    if (cache) {
+        std::vector<int> workSampler;
+        for (const WorkItem& w : work) workSampler.push_back(w.sampler);
+        cache->begin(rt, workSampler, options.seed);
+    }
     std::vector<WorkResult> done(work.size());
     for (size_t index = 0; index < work.size(); ++index) {
         const PlacedSampler& sampler = *placed[size_t(work[index].sampler)];
@@ -124,9 +129,21 @@ MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& op
         const bool shares = sampler.sharesPaths();
         WorkResult& r = done[index];
         for (int path = from; path < to; ++path) {
-            Rng rng(hashValues({options.seed, uint64_t(w.sampler), uint64_t(w.item), uint64_t(path)}));
+            const PathCache::Record* cached = cache ? cache->reuse(index, path) : nullptr;
             PathContributions c(w.item);
-            sampler.sample(tracer, w.item, rng, r.stats, c);
+            if (cached) {
+                c = cached->contributions;
+            } else {
+                Rng rng(hashValues({options.seed, uint64_t(w.sampler), uint64_t(w.item), uint64_t(path)}));
+                PathCache::Record record;
+                if (cache) r.stats.footprint = &record.footprint;
+                sampler.sample(tracer, w.item, rng, r.stats, c);
+                r.stats.footprint = nullptr;
+                if (cache) {
+                    record.contributions = c;
+                    cache->keep(index, path, std::move(record));
+                }
+            }
             if (!c.finite()) {  // the path is dropped whole (core/estimator.h's policy)
                 ++r.dropped;
                 continue;
@@ -190,6 +207,7 @@ MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& op
 
     // Reduce per sampler, in a fixed order.
     MeasureResult result;
+    if (cache) result.reusedPaths = cache->reused();
     result.samplers.resize(samplers);
     for (size_t k = 0; k < samplers; ++k) {
         SamplerResult& r = result.samplers[k];

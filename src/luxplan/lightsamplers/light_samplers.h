@@ -8,6 +8,7 @@
 #include <memory>
 #include <vector>
 
+#include <luxplan/lightsamplers/path_cache.h>
 #include <luxplan/lightsamplers/sampler_result.h>
 #include <luxplan/lightsamplers/sampler_type.h>
 #include <luxplan/pathtracer/path_tracer.h>
@@ -35,11 +36,14 @@ struct MeasureResult {
     RayStats rays;
     uint64_t paths = 0;             // traced, over all samplers
     uint64_t droppedNonFinite = 0;  // over all samplers
+    uint64_t reusedPaths = 0;       // read from the path cache instead of traced (in `paths`)
 };
 
 // Measures every sampler of the scene for the path tracer's current layout. Each path is
 // seeded from (seed, sampler, point, path), so results do not depend on the thread count
-// (set once by the caller, see core/parallel.h).
-MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& options);
+// (set once by the caller, see core/parallel.h). With a cache, paths no move since its
+// committed layout can have changed are read from it (the result is the same), and
+// the paths traced go to its pending delta (commit or discard it after).
+MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& options, PathCache* cache = nullptr);
 
 }  // namespace luxplan

@@ -31,6 +31,11 @@ public:
     virtual double confirm(const Layout& layout, const std::vector<Transform>& world, LightingBreakdown* out) {
         return evaluate(layout, world, out);
     }
+    // The chain accepted (commit) or refused (revert) the layout last evaluated: an
+    // evaluator that keeps work between layouts (the path cache) keeps it for the
+    // accepted layout only. Evaluations measure against the last committed layout.
+    virtual void commit() {}
+    virtual void revert() {}
 };
 
 }  // namespace luxplan

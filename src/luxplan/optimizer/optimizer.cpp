@@ -129,8 +129,10 @@ void Optimizer::initialize() {
         }
     }
     current_ = start;
+    if (lighting_) lighting_->revert();
     currentEval_ = evaluate(current_, worldTransforms(*scene_, current_));
     geometry_.commit();
+    if (lighting_) lighting_->commit();
     startEval_ = currentEval_;
     best_ = current_;
     bestEval_ = currentEval_;
@@ -183,6 +185,7 @@ void Optimizer::step() {
         if (e.rejected && !accept) ++stats.rejectedGeometry;
         if (accept) geometry_.commit();
         else geometry_.revert();
+        if (lighting_) accept ? lighting_->commit() : lighting_->revert();
     }
     ++iteration_;
     if (accept) {
@@ -241,6 +244,7 @@ OptimizerResult Optimizer::run(const ProgressCallback& progress, const std::atom
         ++confirmations_;
         Evaluation confirmed = bestEval_;
         confirmed.lighting = lighting_->confirm(best_, worldTransforms(*scene_, best_), &confirmed.samplers);
+        lighting_->revert();  // the chain goes on from the current layout
         confirmed.cost = scene_->objective.cost(confirmed.lighting, confirmed.geometry);
         if (bestIteration_ == iteration_) currentEval_ = confirmed;  // the current layout is the best one
         bestEval_ = confirmed;

@@ -5,16 +5,17 @@
 namespace luxplan {
 
 PathTracedLighting::PathTracedLighting(const Scene& scene, const DaylightEnvironment* daylight, const MeasureOptions& options)
-    : scene_(scene), rt_(scene, initialLayout(scene)), tracer_(rt_, daylight), options_(options) {}
+    : scene_(scene), rt_(scene, initialLayout(scene)), tracer_(rt_, daylight), options_(options), cache_(scene) {}
 
 double PathTracedLighting::evaluate(const Layout& /*layout*/, const std::vector<Transform>& world, LightingBreakdown* out) {
     // Only instance transforms change: the top level is re-committed, nothing rebuilt.
     for (size_t i = 0; i < world.size(); ++i) rt_.setEntityTransform(int(i), world[i]);
     rt_.commit();
     tracer_.updateLayout();
-    last_ = measureSamplers(tracer_, options_);
+    last_ = measureSamplers(tracer_, options_, incremental_ ? &cache_ : nullptr);
     ++evaluations_;
     rays_ += last_.rays;
+    reusedPaths_ += last_.reusedPaths;
     std::vector<double> values;
     for (const SamplerResult& r : last_.samplers) values.push_back(r.value);
     if (out) out->samplers = last_.samplers;

@@ -19,10 +19,16 @@ public:
     // by default the same as the search's).
     double confirm(const Layout& layout, const std::vector<Transform>& world, LightingBreakdown* out) override;
     void setConfirmPaths(int pathsPerPoint) { confirmPaths_ = pathsPerPoint; }
+    void commit() override { cache_.commit(); }
+    void revert() override { cache_.discard(); }
+    // Whether evaluations reuse the paths a move cannot change (on by default; the
+    // numbers are the same either way, lightsamplers/path_cache.h).
+    void setIncremental(bool on) { incremental_ = on; }
 
     // The full measurement of the last evaluated layout (per-point values, errors).
     const MeasureResult& lastMeasurement() const { return last_; }
     uint64_t evaluations() const { return evaluations_; }
+    uint64_t reusedPaths() const { return reusedPaths_; }
     RayStats rays() const { return rays_; }
     void setOptions(const MeasureOptions& options) { options_ = options; }
 
@@ -32,9 +38,12 @@ private:
     PathTracer tracer_;
     MeasureOptions options_;
     int confirmPaths_ = 0;  // 0: options_.pathsPerPoint
+    PathCache cache_;
+    bool incremental_ = true;
     MeasureResult last_;
     uint64_t evaluations_ = 0;
     RayStats rays_;
+    uint64_t reusedPaths_ = 0;
 };
 
 }  // namespace luxplan

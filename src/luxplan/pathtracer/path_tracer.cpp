@@ -45,6 +45,8 @@ double PathTracer::transmittance(const Vec3& origin, const Vec3& w, double tMax,
     ++stats.shadow;
     unsigned blockers = kOpaqueMask | (target < 0 ? kEmitterMask : 0u);
     double opaqueEnd = target < 0 ? tMax : tMax * (1 - 1e-4);
+    // The emitter steps below run along this segment; the pane crossings add their own.
+    if (stats.footprint) stats.footprint->add(origin, w, 0, opaqueEnd);
     if (rt_.occluded({origin, w, 0, opaqueEnd, blockers})) return 0;
     if (target >= 0 && emitters_.size() > 1) {
         double tStart = 0;
@@ -67,6 +69,7 @@ double PathTracer::transmittance(const Vec3& origin, const Vec3& w, double tMax,
         const double left = opaqueEnd - dot(p - origin, w);
         if (left <= 0) return T;
         auto hit = rt_.intersect({p, w, 0, left, kGlassMask});
+        if (stats.footprint) stats.footprint->add(p, w, 0, hit ? hit->t : left);
         if (!hit) return T;
         T *= bsdfs_[hit->material].straightTransmittance(std::abs(dot(w, hit->geometricNormal)));
         if (T <= 0) return 0;
@@ -134,6 +137,7 @@ double PathTracer::sample(const Sensor& sensor, Rng& rng, RayStats& stats, bool*
                 }
             };
             if (!emitters_.empty()) {
+                if (stats.footprint) stats.footprint->usedEmitterChoice = true;
                 EmitterSample s = emitters_.sample(v.p, rng.uniform(), {rng.uniform(), rng.uniform()});
                 if (s.pdf > 0 && s.Lv > 0) addLight(s.wi, Vec3(s.Lv, s.Lv, s.Lv), s.pdf, s.distance, s.emitter);
             }
@@ -191,6 +195,7 @@ double PathTracer::sample(const Sensor& sensor, Rng& rng, RayStats& stats, bool*
         for (int crossings = 0; crossings < 32 && !scattered; ++crossings) {
             ++stats.closest;
             auto hit = rt_.intersect({o, d});
+            if (stats.footprint) stats.footprint->add(o, d, 0, hit ? hit->t : kInf);
             if (!hit) {
                 if (daylight_) {
                     Vec3 sky = daylight_->Le(d), sun = daylight_->sunLe(d);
@@ -202,6 +207,7 @@ double PathTracer::sample(const Sensor& sensor, Rng& rng, RayStats& stats, bool*
             }
             if (hit->kind == HitKind::Emitter) {
                 if (hitEmitterFirst && depth == 0 && crossings == 0) *hitEmitterFirst = true;
+                if (stats.footprint) stats.footprint->usedEmitterChoice = true;  // the MIS weight reads it
                 double Le = emitters_.emitted(size_t(hit->index), d);
                 if (Le > 0) {
                     double w = lastDelta ? 1 : powerHeuristic(1, lastPdf, 1, emitters_.pdf(size_t(hit->index), lastPoint, hit->point));

@@ -14,6 +14,7 @@
 #include <luxplan/daylight/environment.h>
 #include <luxplan/materials/bsdf.h>
 #include <luxplan/pathtracer/emitters.h>
+#include <luxplan/pathtracer/path_footprint.h>
 #include <luxplan/pathtracer/sensor.h>
 #include <luxplan/pathtracer/sky_light.h>
 #include <luxplan/rt/embree_scene.h>
@@ -27,9 +28,11 @@ struct PathTracerOptions {
     int maxDepth = 256;        // a safety net only: roulette ends paths long before
 };
 
-// Rays traced, for throughput figures.
+// Rays traced, for throughput figures; and, when `footprint` is set, where they went
+// (every ray of the path is added to it: incremental re-evaluation, path_footprint.h).
 struct RayStats {
     uint64_t closest = 0, shadow = 0;
+    PathFootprint* footprint = nullptr;
     RayStats& operator+=(const RayStats& o) { closest += o.closest, shadow += o.shadow; return *this; }
 };
 

@@ -1,0 +1,88 @@
+// Exact incremental re-evaluation: the paths of the last committed layout, kept with
+// their footprints, so that measuring a moved layout traces again only the paths a
+// move can change. A path is seeded from (seed, sampler, point, path) and its rays see
+// the scene only along its footprint; it is traced again when
+//   - its sampler is carried by an entity whose world transform changed,
+//   - one of its segments meets the old or the new bounds of a moved entity's
+//     geometry or luminaires (a ray that missed both traces the same), or
+//   - it read the emitter choice and a luminaire moved (the choice weighs every
+//     luminaire by flux / distance^2, so every light sample's probability changes).
+// Every other path reads as it did, so measuring with the cache gives the same numbers,
+// bit for bit, as measuring the same layout from scratch (tests/lightsamplers/
+// path_cache_test.cpp). What a measurement traces goes to a pending delta: commit()
+// makes it the committed state (the optimizer accepted the layout), discard() drops it.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include <luxplan/lightsamplers/sampler_type.h>
+#include <luxplan/pathtracer/path_footprint.h>
+#include <luxplan/rt/embree_scene.h>
+
+namespace luxplan {
+
+class PathCache {
+public:
+    // `maxSegments` bounds the memory (24 bytes a segment): paths beyond it are traced
+    // every time, which changes nothing but the time.
+    explicit PathCache(const Scene& scene, size_t maxSegments = size_t(1) << 24);
+
+    struct Record {
+        PathContributions contributions{0};
+        PathFootprint footprint;
+    };
+
+    // Before a measurement of `rt`'s current layout with `workItems` work items (one per
+    // sampler item) whose samplers are `workSampler`: what moved since the committed
+    // layout. Options that change what a path is (seed, sampler set) must not change
+    // between measurements that share a cache; a different seed clears it.
+    void begin(const EmbreeScene& rt, const std::vector<int>& workSampler, uint64_t seed);
+    // The committed record of path `path` of work item `work` if it still holds for
+    // the new layout, else null. Call for paths 0, 1, ... in order per work item (from
+    // one thread per work item).
+    const Record* reuse(size_t work, int path);
+    // A path traced for the new layout (after reuse() said null).
+    void keep(size_t work, int path, Record&& record);
+    // The measured layout becomes the committed one, with the paths it traced (nothing
+    // happens when no measurement is pending).
+    void commit();
+    // Back to the committed layout's paths.
+    void discard();
+
+    // Paths the last measurement reused.
+    uint64_t reused() const { return reusedNow_; }
+    size_t segments() const { return committedSegments_; }
+
+private:
+    struct Pending {
+        int visited = 0;  // paths [0, visited) were asked for
+        std::vector<std::pair<int, std::optional<Record>>> traced;  // none: over the memory bound
+    };
+    bool stillHolds(size_t work, const Record& r) const;
+
+    const Scene& scene_;
+    size_t maxSegments_;
+    std::vector<Bounds3> localBounds_;  // per entity: mesh and luminaires, entity frame
+
+    // Committed state.
+    bool hasCommitted_ = false;
+    uint64_t seed_ = 0;
+    std::vector<Transform> world_;
+    std::vector<std::vector<std::optional<Record>>> records_;  // per work item, by path
+    size_t committedSegments_ = 0;
+
+    // The measurement in progress.
+    bool measuring_ = false;
+    std::vector<Transform> newWorld_;
+    std::vector<Bounds3> moved_;     // world bounds, old and new, of moved geometry
+    std::vector<char> workMoved_;    // per work item: its sampler moved
+    bool emittersMoved_ = false;
+    std::vector<Pending> pending_;
+    std::atomic<size_t> pendingSegments_{0};
+    std::atomic<uint64_t> reusedNow_{0};
+};
+
+}  // namespace luxplan

@@ -1,0 +1,42 @@
+#include <luxplan/pathtracer/path_footprint.h>
+
+#include <algorithm>
+
+namespace luxplan {
+namespace {
+
+// Rays with no end stop here: far outside any room (coordinates are limited to about
+// 1e5 m), and near enough that float keeps the direction to a few 1e-8.
+constexpr double kFar = 1e6;
+
+std::array<float, 3> toFloat(const Vec3& p) { return {float(p.x), float(p.y), float(p.z)}; }
+
+}  // namespace
+
+void PathFootprint::add(const Vec3& p, const Vec3& d, double tMin, double tEnd) {
+    const double len = length(d);
+    if (!(len > 0)) return;
+    const double end = std::min(tEnd, kFar / len);
+    segments.push_back({toFloat(p + d * tMin), toFloat(p + d * end)});
+}
+
+bool meets(const Segment& s, const Bounds3& b, double margin) {
+    // Slabs, in double: the parameter interval [t0, t1] of the segment inside each slab.
+    double t0 = 0, t1 = 1;
+    for (int axis = 0; axis < 3; ++axis) {
+        const double from = s.from[size_t(axis)], to = s.to[size_t(axis)];
+        const double lo = b.lo[axis] - margin, hi = b.hi[axis] + margin;
+        const double d = to - from;
+        if (d == 0) {
+            if (from < lo || from > hi) return false;
+            continue;
+        }
+        double a = (lo - from) / d, c = (hi - from) / d;
+        if (a > c) std::swap(a, c);
+        t0 = std::max(t0, a), t1 = std::min(t1, c);
+        if (t0 > t1) return false;
+    }
+    return true;
+}
+
+}  // namespace luxplan

@@ -1,0 +1,35 @@
+// What one path's rays met: the segments they covered (each ray from its origin to its
+// hit, or to its end), and whether the path read the emitter choice, whose
+// probabilities depend on every luminaire's position. A path whose footprint misses
+// everything a move changes traces the same as before it (lightsamplers/path_cache.h).
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include <luxplan/core/math.h>
+
+namespace luxplan {
+
+struct Segment {
+    std::array<float, 3> from, to;
+};
+
+struct PathFootprint {
+    std::vector<Segment> segments;
+    bool usedEmitterChoice = false;  // sampled an emitter, or weighed a hit on one by MIS
+
+    void clear() {
+        segments.clear();
+        usedEmitterChoice = false;
+    }
+    // Appends p + t d for t in [tMin, tEnd] (tEnd may be infinite: the segment then runs
+    // far past any room).
+    void add(const Vec3& p, const Vec3& d, double tMin, double tEnd);
+};
+
+// Whether segment s passes within `margin` of box b (conservatively: it may say yes for a
+// segment that misses by a little more).
+bool meets(const Segment& s, const Bounds3& b, double margin);
+
+}  // namespace luxplan

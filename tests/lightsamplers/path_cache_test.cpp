@@ -1,0 +1,228 @@
+// Exact incremental re-evaluation (lightsamplers/path_cache.h): after any sequence of
+// moves, some accepted (committed) and some refused (discarded), measuring with the
+// cache gives the same numbers, bit for bit, as measuring the same layout from
+// scratch (a fresh Embree scene and path tracer) with the same seed and paths; and
+// it traces fewer paths when a move is small.
+#include <gtest/gtest.h>
+
+#include <luxplan/core/rng.h>
+#include <luxplan/emitters/emitter_shape.h>
+#include <luxplan/lightsamplers/path_cache.h>
+#include "support/scene_builder.h"
+#include "support/scene_lab.h"
+
+namespace luxplan {
+namespace {
+
+using test::SceneBuilder;
+using test::SceneLab;
+const Vec3 kZ(0, 0, 1);
+
+// A glazed, sunlit 6 x 4 m room with a ceiling panel: a desk carrying a task plane and
+// a lamp (its own entity, with a shade emitter), a chair, a cabinet; a fixed plane on
+// the floor, a fixed directional sampler looking at the window, a volume.
+Scene studio() {
+    DaylightParams d;
+    d.model = SkyModelType::Uniform;
+    d.luminanceNits = 3000;
+    d.sunOverride = SunOverride{35, 170, 50000};
+    d.groundReflectance = 0.2;
+    return SceneBuilder()
+        .material("wall", test::diffuse(0.6))
+        .material("wood", test::diffuse(0.4))
+        .material("glass", test::glass(0.8))
+        .daylight(d)
+        .room({0, 0, 0}, {6, 4, 3}, "wall", "wall", "wall")
+        .window(Wall::South, 1, 2, 0.9, 1.4, "glass")
+        .emitter("panel", rectEmitter({3, 2, 2.99}, {0, 0, -1}, {0, 1, 0}, {0.6, 0.6}), 3000)
+        .sampler("floor", planarSampler({3, 2, 0.01}, kZ, {0, 1, 0}, {4, 2}, {3, 2}), 100, 300, 50)
+        .sampler("view", directionalSampler({3, 3, 1.2}, {0, -1, 0}, kZ, 60, 3), 0, 2000)
+        .sampler("air", volumeSampler({4, 1, 1}, {Vec3(0.4, 0, 0), Vec3(0, 0.4, 0), Vec3(0, 0, 0.4)}, 4), 100, 500, 50)
+        .sampler("face", cylindricalSampler({1, 1, 1.2}), 50, 150, 25)
+        .entity("desk", {2, 2.5, 0}).region({0.8, 0.5}, {5.2, 3.5}, {0, 90, 180, 270})
+        .part({1.4, 0.7, 0.75}, "wood", Vec3(0, 0, 0.375))
+        .sampler("task", planarSampler({0, 0, 0.76}, kZ, {0, 1, 0}, {1.2, 0.6}, {2, 2}), 300, 500, 100)
+        .entity("lamp", {0.5, 0.2, 0.75}).part({0.1, 0.1, 0.4}, "wood", Vec3(0, 0, 0.2))
+        .emitter("shade", diskEmitter({0, 0, 0.45}, {0, 0, -1}, 0.08), 400)
+        .end()
+        .end()
+        .entity("chair", {2, 1.5, 0}).region({0.5, 0.5}, {5.5, 3.5}, {0, 90, 180, 270}).part({0.5, 0.5, 0.9}, "wood", Vec3(0, 0, 0.45)).end()
+        .entity("cabinet", {5, 3.5, 0}).region({4.5, 3.2}, {5.5, 3.7}).part({0.8, 0.4, 1.2}, "wood", Vec3(0, 0, 0.6)).end()
+        .build();
+}
+
+struct FromScratch {
+    std::unique_ptr<EmbreeScene> rt;
+    std::unique_ptr<PathTracer> tracer;
+    FromScratch(const Scene& scene, const Layout& layout, const DaylightEnvironment* daylight)
+        : rt(std::make_unique<EmbreeScene>(scene, layout)), tracer(std::make_unique<PathTracer>(*rt, daylight)) {}
+};
+
+void expectSame(const MeasureResult& a, const MeasureResult& b, const std::string& where) {
+    ASSERT_EQ(a.samplers.size(), b.samplers.size());
+    for (size_t k = 0; k < a.samplers.size(); ++k) {
+        SCOPED_TRACE(where + ", sampler " + std::to_string(k));
+        EXPECT_EQ(a.samplers[k].value, b.samplers[k].value);
+        EXPECT_EQ(a.samplers[k].standardError, b.samplers[k].standardError);
+        EXPECT_EQ(a.samplers[k].points, b.samplers[k].points);
+        EXPECT_EQ(a.samplers[k].pointErrors, b.samplers[k].pointErrors);
+        EXPECT_EQ(a.samplers[k].pathsPerPoint, b.samplers[k].pathsPerPoint);
+        EXPECT_EQ(a.samplers[k].droppedNonFinite, b.samplers[k].droppedNonFinite);
+    }
+    EXPECT_EQ(a.paths, b.paths);
+}
+
+int entityNamed(const Scene& s, const std::string& name) {
+    for (size_t i = 0; i < s.entities.size(); ++i)
+        if (s.entities[i].name == name) return int(i);
+    return -1;
+}
+
+// A random move of one of the movable entities (the desk carries the task plane and
+// the lamp), or of the lamp on the desk.
+void randomMove(const Scene& scene, Layout& layout, Rng& rng) {
+    static const char* names[] = {"desk", "chair", "cabinet", "lamp"};
+    const int e = entityNamed(scene, names[int(rng.uniform() * 4) % 4]);
+    ASSERT_GE(e, 0);
+    Placement& p = layout.placements[size_t(e)];
+    if (scene.entities[size_t(e)].name == "lamp") {
+        p.position.x = -0.6 + 1.2 * rng.uniform(), p.position.y = -0.3 + 0.6 * rng.uniform();
+        return;
+    }
+    p.position.x += 0.6 * (rng.uniform() - 0.5), p.position.y += 0.6 * (rng.uniform() - 0.5);
+    if (rng.uniform() < 0.3) p.rotationDeg = 90.0 * int(rng.uniform() * 4);
+}
+
+void runSequence(bool adaptive, int paths, int moves, uint64_t moveSeed) {
+    SceneLab lab(studio());
+    const Scene& scene = lab.scene;
+    const DaylightEnvironment* daylight = lab.daylight ? &*lab.daylight : nullptr;
+    MeasureOptions o;
+    o.pathsPerPoint = paths, o.seed = 7, o.adaptive = adaptive, o.batchPaths = 8;
+    PathCache cache(scene);
+    Layout committed = initialLayout(scene);
+    lab.rt->setLayout(committed);
+    lab.tracer->updateLayout();
+    measureSamplers(*lab.tracer, o, &cache);
+    cache.commit();
+    Rng rng(moveSeed);
+    uint64_t reused = 0, traced = 0;
+    for (int m = 0; m < moves; ++m) {
+        Layout proposed = committed;
+        randomMove(scene, proposed, rng);
+        if (rng.uniform() < 0.25) randomMove(scene, proposed, rng);  // two entities at once
+        lab.rt->setLayout(proposed);
+        lab.tracer->updateLayout();
+        MeasureResult incremental = measureSamplers(*lab.tracer, o, &cache);
+        FromScratch fresh(scene, proposed, daylight);
+        MeasureResult scratch = measureSamplers(*fresh.tracer, o);
+        expectSame(incremental, scratch, "move " + std::to_string(m));
+        EXPECT_EQ(scratch.reusedPaths, 0u);
+        reused += incremental.reusedPaths, traced += incremental.paths;
+        if (rng.uniform() < 0.5) {
+            cache.commit();
+            committed = proposed;
+        } else {
+            cache.discard();
+        }
+    }
+    // Half the moves carry the lamp (every path chose an emitter): the rest reuse.
+    EXPECT_GT(double(reused), 0.1 * double(traced));
+}
+
+TEST(PathCache, MovesEqualFromScratchFixedPaths) { runSequence(false, 24, 24, 11); }
+
+TEST(PathCache, MovesEqualFromScratchAdaptive) { runSequence(true, 48, 24, 12); }
+
+TEST(PathCache, AnUnmovedLayoutReusesEveryPath) {
+    SceneLab lab(studio());
+    MeasureOptions o;
+    o.pathsPerPoint = 16;
+    PathCache cache(lab.scene);
+    MeasureResult first = measureSamplers(*lab.tracer, o, &cache);
+    EXPECT_EQ(first.reusedPaths, 0u);
+    cache.commit();
+    MeasureResult again = measureSamplers(*lab.tracer, o, &cache);
+    EXPECT_EQ(again.reusedPaths, again.paths);
+    EXPECT_EQ(again.rays.closest + again.rays.shadow, 0u);
+    expectSame(again, first, "unmoved");
+    // More paths than committed: the first ones are reused, the rest traced.
+    cache.commit();
+    o.pathsPerPoint = 24;
+    MeasureResult more = measureSamplers(*lab.tracer, o, &cache);
+    EXPECT_EQ(more.reusedPaths, first.paths);
+    expectSame(more, lab.measure(24, 1), "more paths");
+    // Another seed shares nothing.
+    o.seed = 2;
+    EXPECT_EQ(measureSamplers(*lab.tracer, o, &cache).reusedPaths, 0u);
+}
+
+TEST(PathCache, MovingTheCabinetRetracesOnlyThePathsThatMetIt) {
+    SceneLab lab(studio());
+    MeasureOptions o;
+    o.pathsPerPoint = 32;
+    PathCache cache(lab.scene);
+    measureSamplers(*lab.tracer, o, &cache);
+    cache.commit();
+    Layout layout = initialLayout(lab.scene);
+    layout.placements[size_t(entityNamed(lab.scene, "cabinet"))].position.x -= 0.3;
+    lab.rt->setLayout(layout);
+    lab.tracer->updateLayout();
+    MeasureResult moved = measureSamplers(*lab.tracer, o, &cache);
+    // A 0.8 x 0.4 x 1.2 m cabinet in a corner of a 6 x 4 x 3 m room.
+    EXPECT_GT(double(moved.reusedPaths), 0.5 * double(moved.paths));
+    EXPECT_LT(moved.reusedPaths, moved.paths);
+    std::printf("cabinet move: %llu of %llu paths reused\n", (unsigned long long)moved.reusedPaths, (unsigned long long)moved.paths);
+}
+
+TEST(PathCache, MovingTheLampRetracesEveryPathThatChoseAnEmitter) {
+    SceneLab lab(studio());
+    MeasureOptions o;
+    o.pathsPerPoint = 8;
+    PathCache cache(lab.scene);
+    measureSamplers(*lab.tracer, o, &cache);
+    cache.commit();
+    Layout layout = initialLayout(lab.scene);
+    layout.placements[size_t(entityNamed(lab.scene, "lamp"))].position.x += 0.1;
+    lab.rt->setLayout(layout);
+    lab.tracer->updateLayout();
+    // Every path samples an emitter at its first vertex (the scene has two).
+    EXPECT_EQ(measureSamplers(*lab.tracer, o, &cache).reusedPaths, 0u);
+}
+
+TEST(PathCache, AMemoryBoundOnlyCostsTime) {
+    SceneLab lab(studio());
+    MeasureOptions o;
+    o.pathsPerPoint = 16;
+    PathCache cache(lab.scene, /* maxSegments = */ 2000);
+    MeasureResult first = measureSamplers(*lab.tracer, o, &cache);
+    cache.commit();
+    EXPECT_LE(cache.segments(), 2000u);
+    MeasureResult again = measureSamplers(*lab.tracer, o, &cache);
+    EXPECT_GT(again.reusedPaths, 0u);
+    EXPECT_LT(again.reusedPaths, again.paths);
+    expectSame(again, first, "bounded");
+}
+
+TEST(PathFootprint, SegmentsMeetBoxesAsTheSlabsSay) {
+    const Bounds3 box({0, 0, 0}, {1, 1, 1});
+    auto seg = [](Vec3 a, Vec3 b) { return Segment{{float(a.x), float(a.y), float(a.z)}, {float(b.x), float(b.y), float(b.z)}}; };
+    EXPECT_TRUE(meets(seg({-1, 0.5, 0.5}, {2, 0.5, 0.5}), box, 0));   // through
+    EXPECT_TRUE(meets(seg({0.5, 0.5, 0.5}, {0.6, 0.6, 0.6}), box, 0)); // inside
+    EXPECT_FALSE(meets(seg({-1, 0.5, 0.5}, {-0.1, 0.5, 0.5}), box, 0)); // stops short
+    EXPECT_TRUE(meets(seg({-1, 0.5, 0.5}, {-0.1, 0.5, 0.5}), box, 0.2)); // within the margin
+    EXPECT_FALSE(meets(seg({-1, 2, 0.5}, {2, 2, 0.5}), box, 0));      // parallel, beside
+    EXPECT_FALSE(meets(seg({-1, 0, 0.5}, {0.5, -1.5, 0.5}), box, 0)); // passes the corner
+    EXPECT_TRUE(meets(seg({1, 1, 1}, {1, 1, 1}), box, 0));            // a point on the corner
+    PathFootprint f;
+    f.add({-5, 0.5, 0.5}, {1, 0, 0}, 0, kInf);  // no end: runs far past the box
+    ASSERT_EQ(f.segments.size(), 1u);
+    EXPECT_TRUE(meets(f.segments[0], box, 0));
+    f.add({-5, 0.5, 0.5}, {2, 0, 0}, 0, 2);  // t in units of the direction's length
+    EXPECT_FALSE(meets(f.segments[1], box, 0));
+    f.add({-5, 0.5, 0.5}, {2, 0, 0}, 0, 2.6);
+    EXPECT_TRUE(meets(f.segments[2], box, 0));
+}
+
+}  // namespace
+}  // namespace luxplan
