@@ -30,7 +30,7 @@ struct OptimizeArgs {
     std::string scene, out;
     int iterations = -1, paths = 0, spp = 0;
     int64_t seed = -1;
-    bool flat = false, quiet = false, noPictures = false, fixedPaths = false;
+    bool flat = false, quiet = false, noPictures = false, fixedPaths = false, fullEvaluation = false;
 };
 
 std::string duration(double seconds) {
@@ -90,6 +90,7 @@ bool runOptimize(const OptimizeArgs& args) {
     if (!scene.samplers.empty()) {
         lighting = std::make_unique<PathTracedLighting>(scene, daylight ? &*daylight : nullptr, measure);
         lighting->setConfirmPaths(reportPaths);  // before stopping at C = 0
+        lighting->setIncremental(!args.fullEvaluation);
     }
 
     Optimizer optimizer(scene, options, lighting && scene.objective.lightingWeight > 0 ? lighting.get() : nullptr);
@@ -147,7 +148,8 @@ bool runOptimize(const OptimizeArgs& args) {
     }
     if (lighting)
         std::cout << "  lighting: " << lighting->evaluations() << " evaluations, "
-                  << lighting->rays().closest + lighting->rays().shadow << " rays\n";
+                  << lighting->rays().closest + lighting->rays().shadow << " rays, " << lighting->tracedPaths()
+                  << " paths traced, " << lighting->reusedPaths() << " reused from earlier layouts\n";
     return result.stop == StopReason::Cancelled;
 }
 
@@ -168,6 +170,9 @@ void registerOptimizeCommand(CLI::App& app, int& threads) {
     cmd->add_flag("--fixed-paths", args->fixedPaths,
                   "Trace exactly --paths per point for every sampler (default: a sampler stops early once its "
                   "penalty is settled, --paths being the most)");
+    cmd->add_flag("--full-evaluation", args->fullEvaluation,
+                  "Trace every path of every evaluated layout (default: only the paths a move can change are "
+                  "traced again; the numbers are the same)");
     cmd->add_flag("--flat", args->flat,
                   "Flat baseline (the paper's Figure 6): no groups, every object on its own, groups kept by cohesion constraints");
     cmd->add_flag("-q,--quiet", args->quiet, "No progress line");

@@ -16,6 +16,7 @@ double PathTracedLighting::evaluate(const Layout& /*layout*/, const std::vector<
     ++evaluations_;
     rays_ += last_.rays;
     reusedPaths_ += last_.reusedPaths;
+    tracedPaths_ += last_.paths - last_.reusedPaths;
     std::vector<double> values;
     for (const SamplerResult& r : last_.samplers) values.push_back(r.value);
     if (out) out->samplers = last_.samplers;

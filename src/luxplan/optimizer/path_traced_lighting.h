@@ -28,6 +28,8 @@ public:
     // The full measurement of the last evaluated layout (per-point values, errors).
     const MeasureResult& lastMeasurement() const { return last_; }
     uint64_t evaluations() const { return evaluations_; }
+    // Paths over all evaluations: traced, and read from the path cache.
+    uint64_t tracedPaths() const { return tracedPaths_; }
     uint64_t reusedPaths() const { return reusedPaths_; }
     RayStats rays() const { return rays_; }
     void setOptions(const MeasureOptions& options) { options_ = options; }
@@ -43,7 +45,7 @@ private:
     MeasureResult last_;
     uint64_t evaluations_ = 0;
     RayStats rays_;
-    uint64_t reusedPaths_ = 0;
+    uint64_t tracedPaths_ = 0, reusedPaths_ = 0;
 };
 
 }  // namespace luxplan
