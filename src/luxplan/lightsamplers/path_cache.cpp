@@ -26,19 +26,56 @@ Bounds3 widened(const Bounds3& b) {
     return {b.lo - Vec3(margin, margin, margin), b.hi + Vec3(margin, margin, margin)};
 }
 
+// Boxes around clusters of triangles: median splits of the centroids along the widest
+// axis, down to a dozen triangles (a box part's six faces become thin slabs).
+void clusterBounds(const TriangleMesh& mesh, std::vector<uint32_t>& triangles, size_t begin, size_t end, int depth,
+                   std::vector<Bounds3>& out) {
+    auto centroid = [&](uint32_t t) {
+        const auto& tri = mesh.triangles[t];
+        return (mesh.positions[tri[0]] + mesh.positions[tri[1]] + mesh.positions[tri[2]]) / 3.0;
+    };
+    if (end - begin <= 12 || depth == 5) {
+        Bounds3 b;
+        for (size_t k = begin; k < end; ++k)
+            for (uint32_t v : mesh.triangles[triangles[k]]) b.extend(mesh.positions[v]);
+        out.push_back(b);
+        return;
+    }
+    Bounds3 c;
+    for (size_t k = begin; k < end; ++k) c.extend(centroid(triangles[k]));
+    const Vec3 size = c.size();
+    const int axis = size.x >= size.y && size.x >= size.z ? 0 : (size.y >= size.z ? 1 : 2);
+    const size_t mid = (begin + end) / 2;
+    std::nth_element(triangles.begin() + long(begin), triangles.begin() + long(mid), triangles.begin() + long(end),
+                     [&](uint32_t a, uint32_t b) { return centroid(a)[axis] < centroid(b)[axis]; });
+    clusterBounds(mesh, triangles, begin, mid, depth + 1, out);
+    clusterBounds(mesh, triangles, mid, end, depth + 1, out);
+}
+
 }  // namespace
 
 PathCache::PathCache(const Scene& scene, size_t maxSegments) : scene_(scene), maxSegments_(maxSegments) {
-    localBounds_.resize(scene.entities.size());
+    localClusters_.resize(scene.entities.size());
     for (size_t i = 0; i < scene.entities.size(); ++i) {
         const Entity& e = scene.entities[i];
-        if (e.hasGeometry()) localBounds_[i].extend(e.mesh.bounds());
+        if (e.hasGeometry()) {
+            std::vector<uint32_t> triangles(e.mesh.triangles.size());
+            for (size_t t = 0; t < triangles.size(); ++t) triangles[t] = uint32_t(t);
+            clusterBounds(e.mesh, triangles, 0, triangles.size(), 0, localClusters_[i]);
+        }
         for (int em : e.emitters) {
             const EmitterShape& shape = *scene.emitters[size_t(em)].shape;
             const double r = shape.reach();
-            localBounds_[i].extend(Bounds3(shape.center() - Vec3(r, r, r), shape.center() + Vec3(r, r, r)));
+            localClusters_[i].push_back(Bounds3(shape.center() - Vec3(r, r, r), shape.center() + Vec3(r, r, r)));
         }
     }
+}
+
+bool PathCache::MovedBounds::meets(const SegmentProbe& s) const {
+    if (!s.meets(whole)) return false;
+    for (const Bounds3& c : clusters)
+        if (s.meets(c)) return true;
+    return false;
 }
 
 void PathCache::begin(const EmbreeScene& rt, const std::vector<int>& workSampler, uint64_t seed) {
@@ -53,15 +90,22 @@ void PathCache::begin(const EmbreeScene& rt, const std::vector<int>& workSampler
     }
 
     moved_.clear();
+    movedUnion_ = Bounds3();
     emittersMoved_ = false;
     std::vector<char> entityMoved(entities, 0);
     if (hasCommitted_)
         for (size_t i = 0; i < entities; ++i) {
             if (same(world_[i], newWorld_[i])) continue;
             entityMoved[i] = 1;
-            if (!localBounds_[i].empty()) {
-                moved_.push_back(widened(worldBounds(world_[i], localBounds_[i])));
-                moved_.push_back(widened(worldBounds(newWorld_[i], localBounds_[i])));
+            for (const Transform* world : {&world_[i], &newWorld_[i]}) {
+                MovedBounds b;
+                for (const Bounds3& c : localClusters_[i]) {
+                    b.clusters.push_back(widened(worldBounds(*world, c)));
+                    b.whole.extend(b.clusters.back());
+                }
+                if (b.clusters.empty()) continue;
+                movedUnion_.extend(b.whole);
+                moved_.push_back(std::move(b));
             }
             if (!scene_.entities[i].emitters.empty()) emittersMoved_ = true;
         }
@@ -79,9 +123,19 @@ void PathCache::begin(const EmbreeScene& rt, const std::vector<int>& workSampler
 bool PathCache::stillHolds(size_t work, const Record& r) const {
     if (workMoved_[work]) return false;
     if (emittersMoved_ && r.footprint.usedEmitterChoice) return false;
-    for (const Segment& s : r.footprint.segments)
-        for (const Bounds3& b : moved_)
-            if (meets(s, b, 0)) return false;
+    if (moved_.empty()) return true;
+    const Bounds3& u = movedUnion_;
+    for (const Segment& s : r.footprint.segments) {
+        // The segment's own box first: comparisons only.
+        if (std::max(s.from[0], s.to[0]) < u.lo.x || std::min(s.from[0], s.to[0]) > u.hi.x ||
+            std::max(s.from[1], s.to[1]) < u.lo.y || std::min(s.from[1], s.to[1]) > u.hi.y ||
+            std::max(s.from[2], s.to[2]) < u.lo.z || std::min(s.from[2], s.to[2]) > u.hi.z)
+            continue;
+        const SegmentProbe probe(s);
+        if (!probe.meets(movedUnion_)) continue;
+        for (const MovedBounds& b : moved_)
+            if (b.meets(probe)) return false;
+    }
     return true;
 }
 

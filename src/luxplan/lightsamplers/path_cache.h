@@ -4,7 +4,9 @@
 // the scene only along its footprint; it is traced again when
 //   - its sampler is carried by an entity whose world transform changed,
 //   - one of its segments meets the old or the new bounds of a moved entity's
-//     geometry or luminaires (a ray that missed both traces the same), or
+//     geometry or luminaires (a ray that missed both traces the same; the bounds are
+//     those of up to 32 clusters of its triangles, so that a ray under a desk top or
+//     between a chair's legs is not traced again), or
 //   - it read the emitter choice and a luminaire moved (the choice weighs every
 //     luminaire by flux / distance^2, so every light sample's probability changes).
 // Every other path reads as it did, so measuring with the cache gives the same numbers,
@@ -61,11 +63,18 @@ private:
         int visited = 0;  // paths [0, visited) were asked for
         std::vector<std::pair<int, std::optional<Record>>> traced;  // none: over the memory bound
     };
+    // A moved entity's bounds in the world, before and after the move: the whole, then
+    // its clusters (tested only for segments that meet the whole).
+    struct MovedBounds {
+        Bounds3 whole;
+        std::vector<Bounds3> clusters;
+        bool meets(const SegmentProbe& s) const;
+    };
     bool stillHolds(size_t work, const Record& r) const;
 
     const Scene& scene_;
     size_t maxSegments_;
-    std::vector<Bounds3> localBounds_;  // per entity: mesh and luminaires, entity frame
+    std::vector<std::vector<Bounds3>> localClusters_;  // per entity: its triangles' and luminaires', entity frame
 
     // Committed state.
     bool hasCommitted_ = false;
@@ -77,7 +86,8 @@ private:
     // The measurement in progress.
     bool measuring_ = false;
     std::vector<Transform> newWorld_;
-    std::vector<Bounds3> moved_;     // world bounds, old and new, of moved geometry
+    std::vector<MovedBounds> moved_;  // old and new, of every moved entity with geometry
+    Bounds3 movedUnion_;
     std::vector<char> workMoved_;    // per work item: its sampler moved
     bool emittersMoved_ = false;
     std::vector<Pending> pending_;

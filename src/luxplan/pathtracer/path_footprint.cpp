@@ -21,17 +21,29 @@ void PathFootprint::add(const Vec3& p, const Vec3& d, double tMin, double tEnd) 
 }
 
 bool meets(const Segment& s, const Bounds3& b, double margin) {
-    // Slabs, in double: the parameter interval [t0, t1] of the segment inside each slab.
+    const Vec3 m(margin, margin, margin);
+    return SegmentProbe(s).meets({b.lo - m, b.hi + m});
+}
+
+SegmentProbe::SegmentProbe(const Segment& s) {
+    for (size_t axis = 0; axis < 3; ++axis) {
+        from_[axis] = s.from[axis];
+        const double d = double(s.to[axis]) - double(s.from[axis]);
+        flat_[axis] = d == 0;
+        inv_[axis] = flat_[axis] ? 0 : 1 / d;
+    }
+}
+
+bool SegmentProbe::meets(const Bounds3& b) const {
+    // Slabs: the parameter interval [t0, t1] of the segment inside each.
     double t0 = 0, t1 = 1;
     for (int axis = 0; axis < 3; ++axis) {
-        const double from = s.from[size_t(axis)], to = s.to[size_t(axis)];
-        const double lo = b.lo[axis] - margin, hi = b.hi[axis] + margin;
-        const double d = to - from;
-        if (d == 0) {
+        const double lo = b.lo[axis], hi = b.hi[axis], from = from_[axis];
+        if (flat_[axis]) {
             if (from < lo || from > hi) return false;
             continue;
         }
-        double a = (lo - from) / d, c = (hi - from) / d;
+        double a = (lo - from) * inv_[axis], c = (hi - from) * inv_[axis];
         if (a > c) std::swap(a, c);
         t0 = std::max(t0, a), t1 = std::min(t1, c);
         if (t0 > t1) return false;

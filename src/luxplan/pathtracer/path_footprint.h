@@ -32,4 +32,15 @@ struct PathFootprint {
 // segment that misses by a little more).
 bool meets(const Segment& s, const Bounds3& b, double margin);
 
+// The same test for one segment against many boxes, its divisions done once.
+class SegmentProbe {
+public:
+    explicit SegmentProbe(const Segment& s);
+    bool meets(const Bounds3& b) const;
+
+private:
+    double from_[3], inv_[3];
+    bool flat_[3];  // no extent along the axis
+};
+
 }  // namespace luxplan
