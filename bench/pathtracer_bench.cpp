@@ -70,5 +70,43 @@ void BM_ReplayOfficeRays(benchmark::State& state) {
 }
 BENCHMARK(BM_ReplayOfficeRays)->Unit(benchmark::kMillisecond);
 
+// One workstation of the office moved by 20 cm, measured against the layout before
+// the move: from scratch (0) or with the path cache (1, exact incremental
+// re-evaluation: only the paths the move can change are traced). Both give the same
+// numbers (tests/lightsamplers/path_cache_test.cpp); the ratio of their times is
+// what incremental re-evaluation saves on the paper's kind of move. The range's
+// second argument is the paths per point.
+void BM_OfficeWorkstationMove(benchmark::State& state) {
+    static Office o;  // its own: the layout changes
+    tbb::global_control oneThread(tbb::global_control::max_allowed_parallelism, 1);
+    const bool incremental = state.range(0) != 0;
+    MeasureOptions options;
+    options.pathsPerPoint = int(state.range(1));
+    const Layout before = initialLayout(o.scene);
+    Layout after = before;
+    int workstation = -1;
+    for (size_t i = 0; i < o.scene.entities.size() && workstation < 0; ++i)
+        if (o.scene.entities[i].parent < 0 && o.scene.entities[i].movable() && o.scene.entities[i].isGroup())
+            workstation = int(i);
+    after.placements[size_t(workstation)].position.x += 0.2;
+    PathCache cache(o.scene);
+    o.rt.setLayout(before);
+    o.tracer.updateLayout();
+    measureSamplers(o.tracer, options, &cache);
+    cache.commit();
+    o.rt.setLayout(after);
+    o.tracer.updateLayout();
+    uint64_t traced = 0, reused = 0;
+    for (auto _ : state) {
+        MeasureResult r = measureSamplers(o.tracer, options, incremental ? &cache : nullptr);
+        cache.discard();
+        traced += r.paths - r.reusedPaths, reused += r.reusedPaths;
+    }
+    state.counters["traced_share"] = double(traced) / double(traced + reused);
+    o.rt.setLayout(before);
+    o.tracer.updateLayout();
+}
+BENCHMARK(BM_OfficeWorkstationMove)->Args({0, 256})->Args({1, 256})->Unit(benchmark::kMillisecond);
+
 }  // namespace
 }  // namespace luxplan
