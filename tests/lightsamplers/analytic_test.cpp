@@ -153,6 +153,29 @@ TEST(Analytic, GlazedOpeningScalesByThePanesTransmittance) {
     expectWithin(rg.samplers[0], expected(0.8), 1e-3, "glazed");
 }
 
+TEST(Analytic, WindowPanesAndGlassFurnitureMultiplyTheirTransmittances) {
+    // The window's pane is crossed analytically (pathtracer/panes.h), a glass sheet in
+    // front of the sensor by Embree: parallel to the window, its two faces and the pane
+    // each pass T(cos) of the same angle.
+    const Scene scene = withMaterials(0)
+                            .uniformSky(1000)
+                            .room({0, 0, 0}, {4, 4, 3}, "black", "black", "black")
+                            .window(Wall::South, 1, 2, 1, 1.5, "glass")
+                            .box("sheet", {0.5, 0.9, 0.5}, {3.5, 0.92, 3}, "glass")
+                            .sampler("p", point({2, 1.5, 1.2}, {0, -1, 0}, kZ), 0)
+                            .build();
+    const int n = 400;
+    double expected = 0, dA = 2.0 * 1.5 / (n * n);
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j) {
+            Vec3 d = Vec3(1 + 2.0 * (i + 0.5) / n, 0, 1 + 1.5 * (j + 0.5) / n) - Vec3(2, 1.5, 1.2);
+            if (d.z <= 0) continue;
+            double dist = length(d), cosR = -d.y / dist;
+            expected += 1000 * std::pow(thinGlassTransmittance(cosR, 0.8), 3) * cosR * cosR * dA / (dist * dist);
+        }
+    expectWithin(SceneLab(scene).measure(4000).samplers[0], expected, 1e-3, "pane and sheet");
+}
+
 TEST(Analytic, SeveralPortalsSumTheirProjectedSolidAngles) {
     // Black room, uniform sky over a black ground, two windows on different walls, a
     // door and a skylight: an upward sensor gets L times the projected solid angle of

@@ -25,7 +25,7 @@ struct Vertex {
 }  // namespace
 
 PathTracer::PathTracer(const EmbreeScene& rt, const DaylightEnvironment* daylight, const PathTracerOptions& options)
-    : rt_(rt), daylight_(daylight), options_(options), sky_(rt.scene(), daylight, options.portals) {
+    : rt_(rt), daylight_(daylight), options_(options), sky_(rt.scene(), daylight, options.portals), panes_(rt.scene()) {
     for (const Material& m : rt.scene().materials) bsdfs_.push_back(makeBsdf(m));
     updateLayout();
 }
@@ -58,11 +58,11 @@ double PathTracer::transmittance(const Vec3& origin, const Vec3& w, double tMax,
             tStart = hit->t + kRayEpsilon;
         }
     }
-    if (!rt_.hasGlass()) return 1;
-    // Then the panes in the way, one closest-hit query each, continuing from just
-    // beyond each pane along its normal (a step along a grazing ray could stay on the
-    // pane and cross it twice).
-    double T = 1;
+    // Then the windows' panes, analytically, and any other glass in the way, one
+    // closest-hit query each, continuing from just beyond each pane along its normal
+    // (a step along a grazing ray could stay on the pane and cross it twice).
+    double T = panes_.transmittance(origin, w, opaqueEnd);
+    if (!rt_.hasGlass() || T <= 0) return T;
     Vec3 p = origin;
     for (int crossings = 0; crossings < 16; ++crossings) {
         ++stats.shadow;

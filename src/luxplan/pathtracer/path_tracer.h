@@ -3,7 +3,8 @@
 // light (area emitters of emitters.h, the sun disks, the sky through window portals
 // of sky_light.h) combined with BSDF sampling by multiple importance sampling (power
 // heuristic), Russian roulette instead of a depth cap, and thin glass panes that
-// shadow rays and paths pass through, attenuated by the pane's transmittance.
+// shadow rays and paths pass through, attenuated by the pane's transmittance (the
+// windows' panes analytically for shadow rays, panes.h).
 // Results are in lx and cd/m^2.
 #pragma once
 
@@ -14,6 +15,7 @@
 #include <luxplan/daylight/environment.h>
 #include <luxplan/materials/bsdf.h>
 #include <luxplan/pathtracer/emitters.h>
+#include <luxplan/pathtracer/panes.h>
 #include <luxplan/pathtracer/path_footprint.h>
 #include <luxplan/pathtracer/sensor.h>
 #include <luxplan/pathtracer/sky_light.h>
@@ -87,6 +89,7 @@ private:
     std::vector<Bsdf> bsdfs_;  // per scene material
     EmitterSet emitters_;
     SkyLight sky_;
+    OpeningPanes panes_;
 };
 
 }  // namespace luxplan

@@ -101,7 +101,9 @@ void EmbreeScene::attachMesh(SubScene& sub, const TriangleMesh& mesh, HitKind ki
         attachTriangles(sub, mesh, kind, index, kOpaqueMask);
         return;
     }
-    hasGlass_ = true;
+    // The room shell's glass is its openings' panes.
+    const bool panes = kind == HitKind::Static && scene_.geometry[size_t(index)].kind == StaticKind::Room;
+    if (!panes) hasGlass_ = true;
     // Split, keeping vertices (and normals) whole: unused vertices cost nothing.
     TriangleMesh parts[2];
     for (auto& part : parts) part.positions = mesh.positions, part.normals = mesh.normals;
@@ -113,7 +115,7 @@ void EmbreeScene::attachMesh(SubScene& sub, const TriangleMesh& mesh, HitKind ki
     for (int k = 0; k < 2; ++k) {
         if (parts[k].empty()) continue;
         splitMeshes_.push_back(std::move(parts[k]));
-        attachTriangles(sub, splitMeshes_.back(), kind, index, k == 0 ? kOpaqueMask : kGlassMask);
+        attachTriangles(sub, splitMeshes_.back(), kind, index, k == 0 ? kOpaqueMask : (panes ? kPaneMask : kGlassMask));
     }
 }
 

@@ -37,9 +37,10 @@ private:
     std::string pendingError_;
 };
 
-// Ray masks: shadow rays can ask for opaque surfaces only, then cross glass panes
-// (transmissive materials) one by one.
-inline constexpr unsigned kOpaqueMask = 1u, kGlassMask = 2u, kEmitterMask = 4u, kAllMask = 0xffffffffu;
+// Ray masks: shadow rays can ask for opaque surfaces only, then cross glass
+// (transmissive materials) one surface at a time. The panes of the room's openings
+// have a mask of their own: shadow rays cross them analytically (pathtracer/panes.h).
+inline constexpr unsigned kOpaqueMask = 1u, kGlassMask = 2u, kEmitterMask = 4u, kPaneMask = 8u, kAllMask = 0xffffffffu;
 
 struct Ray {
     Vec3 origin;
@@ -91,7 +92,8 @@ public:
     const Transform& worldFromEntity(int entity) const { return worldFromEntity_[entity]; }
     // Number of entity instances in the top-level scene.
     size_t instanceCount() const;
-    // Whether any visible surface has a transmissive (glass) material.
+    // Whether any visible surface other than the room's window panes has a
+    // transmissive (glass) material.
     bool hasGlass() const { return hasGlass_; }
 
 private:
