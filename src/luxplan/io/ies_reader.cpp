@@ -5,6 +5,7 @@
 #include <luxplan/io/photometry_io.h>
 #include <luxplan/io/photometry_text.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include <luxplan/json/fields.h>
@@ -63,6 +64,14 @@ std::vector<double> readAngles(Numbers& in, int n, const char* what, double lo, 
                                               " after " + formatNumber(a[size_t(i) - 1]) + ")");
     }
     return a;
+}
+
+// Whether planes from C = 0 to the last reach round: C = 360 itself, or a gap to
+// it no wider than the widest step between planes (files that leave out 360).
+bool coversTheCircle(const std::vector<double>& c) {
+    double widest = 0;
+    for (size_t i = 1; i < c.size(); ++i) widest = std::max(widest, c[i] - c[i - 1]);
+    return 360 - c.back() <= widest + 1e-9;
 }
 
 }  // namespace
@@ -144,7 +153,7 @@ PhotometricTable readIes(const std::string& text, const std::string& name) {
     else if (c0 == 0 && c1 == 90) t.symmetry = CSymmetry::Quadrants;
     else if (c0 == 0 && c1 == 180) t.symmetry = CSymmetry::AboutC0C180;
     else if (c0 == 90 && c1 == 270) t.symmetry = CSymmetry::AboutC90C270;
-    else if (c0 == 0 && c1 > 180) t.symmetry = CSymmetry::None;
+    else if (c0 == 0 && c1 > 180 && coversTheCircle(t.cDeg)) t.symmetry = CSymmetry::None;
     else
         fail(name, cLine, "horizontal angles from " + formatNumber(c0) + " to " + formatNumber(c1) +
                               ": type C runs from 0 to 0, 90, 180 or 360, or from 90 to 270");
