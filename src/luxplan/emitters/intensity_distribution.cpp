@@ -99,7 +99,6 @@ IntensityDistribution::IntensityDistribution(const PhotometricTable& t) {
     for (double g : t.gammaDeg) gamma_.push_back(g * kPi / 180);
     for (size_t ic = 0; ic + 1 < c_.size(); ++ic)
         for (size_t ig = 0; ig + 1 < gamma_.size(); ++ig) flux_ += cellMass(ic, ig, c_[ic], c_[ic + 1], gamma_[ig], gamma_[ig + 1]);
-    maxIntensity_ = *std::max_element(values_.begin(), values_.end());
     // Light reaches gamma > 90 from a value there, or from one whose interval
     // reaches past 90 (interpolation carries it over).
     const double right = kPi / 2 + 1e-9;

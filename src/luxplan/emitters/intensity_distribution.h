@@ -51,7 +51,6 @@ public:
     // Total flux in lm: the integral of the bilinear intensity over the sphere (exact
     // for that model, cell by cell).
     double flux() const { return flux_; }
-    double maxIntensity() const { return maxIntensity_; }
     // Whether any light leaves at gamma > 90 degrees (flat openings then emit from
     // both faces).
     bool emitsBeyond90() const { return emitsBeyond90_; }
@@ -79,7 +78,7 @@ private:
     void buildSampling();
 
     std::vector<double> c_, gamma_, values_;
-    double flux_ = 0, maxIntensity_ = 0;
+    double flux_ = 0;
     bool emitsBeyond90_ = false;
     Distribution2D sampling_;  // over (C, 1 - cos gamma): per unit solid angle
 };

@@ -6,6 +6,7 @@
 #include <luxplan/io/photometry_text.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 
 #include <luxplan/json/fields.h>

@@ -1,6 +1,7 @@
 #include <luxplan/io/photometry_io.h>
 
 #include <algorithm>
+#include <cctype>
 #include <fstream>
 #include <sstream>
 
