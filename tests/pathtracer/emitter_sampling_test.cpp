@@ -5,6 +5,7 @@
 
 #include <luxplan/core/rng.h>
 #include <luxplan/pathtracer/emitters.h>
+#include "support/chi2.h"
 
 namespace luxplan {
 namespace {
@@ -41,6 +42,154 @@ TEST(EmitterSampling, SetPdfIncludesTheChoice) {
         EXPECT_NEAR(e.pdf, set.selectionProbability(size_t(e.emitter), p) * set[size_t(e.emitter)].shape->pdf(p, q),
                     1e-9 * e.pdf);
     }
+}
+
+}  // namespace
+}  // namespace luxplan
+
+namespace luxplan {
+namespace {
+
+// A lopsided distribution: 12 planes, gammas every 15 degrees to 180, brightest
+// towards C 60 and gamma 40, some uplight.
+std::shared_ptr<const IntensityDistribution> lopsided() {
+    PhotometricTable t;
+    for (int c = 0; c < 360; c += 30) t.cDeg.push_back(c);
+    for (int g = 0; g <= 180; g += 15) t.gammaDeg.push_back(g);
+    for (double c : t.cDeg)
+        for (double g : t.gammaDeg)
+            t.candela.push_back(g == 180 ? 0
+                                         : 800 * std::exp(-std::pow((g - 40) / 25, 2)) * (1.3 + std::cos((c - 60) * kPi / 180)) +
+                                               (g > 90 ? 20 : 0));
+    return std::make_shared<IntensityDistribution>(t);
+}
+
+Emitter luminaire(std::shared_ptr<const EmitterShape> opening, Vec3 axis, Vec3 c0, double flux) {
+    Emitter e;
+    e.shape = photometricEmitter(opening, lopsided(), axis, c0);
+    e.fluxLm = flux;
+    return e;
+}
+
+TEST(PhotometricEmission, RadianceIsIntensityOverProjectedArea) {
+    Scene s;
+    const double r = 0.05, flux = 1500;
+    s.emitters = {luminaire(diskEmitter({0, 0, 3}, {0, 0, -1}, r), {0, 0, -1}, {1, 0, 0}, flux),
+                  luminaire(sphereEmitter({2, 0, 3}, r), {0, 0, -1}, {1, 0, 0}, flux)};
+    EmitterSet set(s, {}, EmitterSelection::PowerDistance);
+    auto d = lopsided();
+    const double scale = flux / d->flux();
+    // Towards C 90 (+y: c0 x normal = x x -z), gamma 30, the light leaves along
+    // (0, sin 30, -cos 30); the viewer looks back along w.
+    Vec3 out(0, 0.5, -std::sqrt(3.0) / 2), w = -out;
+    double I = scale * d->intensity(PhotometricAngles{kPi / 2, kPi / 6});
+    EXPECT_NEAR(set.emitted(0, w), I / (kPi * r * r * std::sqrt(3.0) / 2), 1e-9 * I);
+    EXPECT_NEAR(set.emitted(1, w), I / (kPi * r * r), 1e-9 * I);
+    // The distribution sends light upwards, so the flat opening emits from its back too.
+    EXPECT_FALSE(set[0].normal.has_value());
+    Vec3 up(std::sqrt(3.0) / 2, 0, 0.5);  // C 0, gamma 120
+    EXPECT_NEAR(set.emitted(0, -up), scale * d->intensity(PhotometricAngles{0, 2 * kPi / 3}) / (kPi * r * r * 0.5), 1e-9 * I);
+    EXPECT_GT(set.emitted(0, -up), 0.0);
+}
+
+TEST(PhotometricEmission, FarAwayIlluminanceIsIntensityOverDistanceSquared) {
+    Scene s;
+    // A 1 mm opening: the bilinear table has kinks at its planes, and an opening's
+    // extent averages across them (a 1 cm one reads 0.5% high at C 270, gamma 15).
+    s.emitters = {luminaire(diskEmitter({0, 0, 3}, {0, 0, -1}, 0.001), {0, 0, -1}, {1, 0, 0}, 2000)};
+    EmitterSet set(s, {}, EmitterSelection::PowerDistance);
+    auto d = lopsided();
+    const double scale = 2000 / d->flux(), dist = 2.5;
+    Rng rng(4);
+    for (double cDeg : {0.0, 60.0, 150.0, 270.0})
+        for (double gDeg : {15.0, 45.0, 75.0, 120.0}) {
+            double c = cDeg * kPi / 180, g = gDeg * kPi / 180;
+            // x: C 0, y: C 90, -z: gamma 0.
+            Vec3 out(std::sin(g) * std::cos(c), std::sin(g) * std::sin(c), -std::cos(g));
+            Vec3 p = Vec3(0, 0, 3) + out * dist, n = normalize(Vec3(0.3, -0.2, 1) * (gDeg > 90 ? -1.0 : 1.0));
+            double E = 0;
+            const int samples = 256;
+            for (int k = 0; k < samples; ++k) {
+                EmitterSample e = set.sample(p, rng.uniform(), {rng.uniform(), rng.uniform()});
+                ASSERT_GE(e.emitter, 0);
+                E += e.Lv * std::max(0.0, dot(e.wi, n)) / e.pdf / samples;
+            }
+            double expected = scale * d->intensity(PhotometricAngles{c, g}) * std::max(0.0, dot(-out, n)) / (dist * dist);
+            EXPECT_NEAR(E, expected, 2e-3 * expected) << "C " << cDeg << " gamma " << gDeg;
+        }
+}
+
+TEST(PhotometricEmission, SetPdfMatchesSampleAndVanishesWhereNothingIsSent) {
+    Scene s;
+    s.emitters = {luminaire(rectEmitter({0, 0, 3}, {0, 0, -1}, {0, 1, 0}, {0.3, 0.2}), {0, 0, -1}, {1, 0, 0}, 1000),
+                  luminaire(diskEmitter({1, 0.5, 2.8}, {0, 0, -1}, 0.1), {0, 0, -1}, {0, 1, 0}, 800), disk({-1, 0, 3}, 0.2, 500)};
+    EmitterSet set(s, {}, EmitterSelection::PowerDistance);
+    Rng rng(8);
+    for (Vec3 p : {Vec3(0.5, 0.2, 0.5), Vec3(-0.4, 1.1, 1.2), Vec3(0.2, 0.1, 3.5)}) {
+        for (int k = 0; k < 100; ++k) {
+            EmitterSample e = set.sample(p, rng.uniform(), {rng.uniform(), rng.uniform()});
+            if (e.emitter < 0) continue;
+            Vec3 q = p + e.wi * e.distance;
+            EXPECT_NEAR(e.pdf, set.pdf(size_t(e.emitter), p, q), 1e-9 * e.pdf);
+            EXPECT_NEAR(e.Lv, set.emitted(size_t(e.emitter), e.wi), 1e-12 * e.Lv);
+        }
+    }
+    // Straight up (gamma 180) the distribution sends nothing: a point right above the
+    // rect never chooses it.
+    EXPECT_EQ(set.selectionProbability(0, {0, 0, 4}), 0.0);
+}
+
+// The choice among photometric luminaires follows each one's intensity towards the
+// point over distance squared (chi-square over the emitters).
+TEST(PhotometricEmission, ChoiceFollowsTheIntensityTowardsThePoint) {
+    Scene s;
+    const Vec3 p(0.3, -0.2, 0.8);
+    std::vector<Vec3> centers = {{0, 0, 3}, {2, 1, 2.5}, {-1.5, 0.5, 3}, {0.5, -2, 2.8}, {1, 1, 0.2}, {-1, -1, 1.5}};
+    std::vector<Vec3> c0s = {{1, 0, 0}, {0, 1, 0}, {-1, 0, 0}, {1, 1, 0}, {1, 0, 0}, {0, -1, 0}};
+    for (size_t i = 0; i < centers.size(); ++i) {
+        Vec3 axis = i == 4 ? Vec3(0, 0, 1) : Vec3(0, 0, -1);
+        s.emitters.push_back(luminaire(diskEmitter(centers[i], axis, 0.05), axis, c0s[i], 500.0 * double(i + 1)));
+    }
+    EmitterSet set(s, {}, EmitterSelection::PowerDistance);
+    auto d = lopsided();
+    std::vector<double> weight;
+    double total = 0;
+    for (size_t i = 0; i < centers.size(); ++i) {
+        auto* l = set[i].photometric;
+        ASSERT_NE(l, nullptr);
+        Vec3 to = p - centers[i];
+        weight.push_back(set[i].intensityScale * l->intensity(normalize(to)) / lengthSquared(to));
+        total += weight.back();
+    }
+    const int samples = 200000;
+    std::vector<double> observed(centers.size(), 0.0), expected(centers.size());
+    Rng rng(12);
+    for (int k = 0; k < samples; ++k) {
+        EmitterSample e = set.sample(p, rng.uniform(), {rng.uniform(), rng.uniform()});
+        ASSERT_GE(e.emitter, 0);
+        observed[size_t(e.emitter)] += 1;
+    }
+    for (size_t i = 0; i < centers.size(); ++i) {
+        expected[i] = samples * weight[i] / total;
+        EXPECT_NEAR(set.selectionProbability(i, p), weight[i] / total, 1e-12);
+    }
+    auto r = test::chi2Test(observed, expected);
+    EXPECT_GT(r.pValue, 0.01) << r.table;
+}
+
+TEST(PhotometricEmission, AxesMoveWithTheEmitter) {
+    auto l = photometricEmitter(diskEmitter({1, 0, 2}, {0, 0, -1}, 0.1), lopsided(), {0, 0, -1}, std::nullopt);
+    EXPECT_NEAR(length(l->c0() - Vec3(1, 0, 0)), 0, 1e-12);  // world +x projected
+    EXPECT_NEAR(length(l->c90() - Vec3(0, 1, 0)), 0, 1e-12);  // c0 x normal
+    auto placed = std::dynamic_pointer_cast<const PhotometricEmitter>(l->transformed(Transform::placement({0, 0, 0}, 90)));
+    ASSERT_NE(placed, nullptr);
+    EXPECT_NEAR(length(placed->c0() - Vec3(0, 1, 0)), 0, 1e-12);
+    EXPECT_NEAR(length(placed->center() - Vec3(0, 1, 2)), 0, 1e-12);
+    EXPECT_NEAR(placed->intensity(Vec3(0, 0.6, -0.8)), l->intensity(Vec3(0.6, 0, -0.8)), 1e-9);
+    // A rect's C 0 is its first side by default.
+    auto rect = rectEmitter({0, 0, 3}, {0, 0, -1}, {0, 1, 0}, {0.6, 0.3});
+    EXPECT_NEAR(length(defaultC0(*rect, {0, 0, -1}) - *rect->firstSide()), 0, 1e-12);
+    EXPECT_NEAR(length(*rect->firstSide() - Vec3(-1, 0, 0)), 0, 1e-12);
 }
 
 }  // namespace

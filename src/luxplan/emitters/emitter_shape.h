@@ -51,6 +51,9 @@ public:
     virtual std::optional<Vec3> normal() const = 0;
     // The distance within which flux / distance^2 stops growing (emitter choice).
     virtual double reach() const = 0;
+    // A rect's first side (unit, from its first corner along the side of length
+    // size[0]): where a photometric luminaire's C = 0 points by default.
+    virtual std::optional<Vec3> firstSide() const { return std::nullopt; }
     // The same shape in another frame (`newFromOld`): placed in the world for the
     // current layout, or moved onto another entity by flattenScene.
     virtual std::shared_ptr<const EmitterShape> transformed(const Transform& newFromOld) const = 0;

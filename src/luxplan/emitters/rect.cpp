@@ -22,6 +22,7 @@ public:
     Vec3 center() const override { return center_; }
     std::optional<Vec3> normal() const override { return n_; }
     double reach() const override { return 0.5 * length(rect_.edgeU + rect_.edgeV); }
+    std::optional<Vec3> firstSide() const override { return normalize(rect_.edgeU); }
 
     std::shared_ptr<const EmitterShape> transformed(const Transform& t) const override {
         return std::make_shared<Rect>(t.applyPoint(center_), t.applyVector(normal_), t.applyVector(up_), size_);

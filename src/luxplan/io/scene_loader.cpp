@@ -4,6 +4,7 @@
 #include <luxplan/io/scene_loader.h>
 
 #include <fstream>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -13,9 +14,11 @@
 #include <luxplan/daylight/datetime.h>
 #include <luxplan/daylight/daylight.h>
 #include <luxplan/emitters/emitter_shape.h>
+#include <luxplan/emitters/photometric_emitter.h>
 #include <luxplan/json/fields.h>
 #include <luxplan/lightsamplers/sampler_type.h>
 #include <luxplan/io/mesh_io.h>
+#include <luxplan/io/photometry_io.h>
 #include <luxplan/scene/presets.h>
 #include <luxplan/scene/room.h>
 
@@ -558,13 +561,48 @@ private:
             f.error("shape", "unknown emitter shape \"" + *shape + "\"" + didYouMean(*shape, emitterShapeNames()) + " (" +
                                  listNames(emitterShapeNames()) + ")");
         if (entry) e.shape = entry->read(f);
-        e.fluxLm = f.number("flux_lm", kNonNegative, true).value_or(0);
+        auto photometry = f.string("photometry");
+        auto flux = f.number("flux_lm", kNonNegative, /*required=*/!photometry);
+        e.fluxLm = flux.value_or(0);
         e.cctK = f.number("cct_k", 4000.0, Range::closed(1000, 40000, "K"));
+        auto c0 = f.direction("c0");
+        if (c0 && !photometry) f.error("c0", "\"c0\" orients a photometric luminaire: it needs \"photometry\"");
+        if (photometry && e.shape) readPhotometry(f, *photometry, c0, flux, e);
         f.finish(entry ? article(*shape + " emitter") : "", family);
         if (!entry) return;
         int index = int(scene_.emitters.size());
         scene_.emitters.push_back(e);
         if (entity >= 0) scene_.entities[entity].emitters.push_back(index);
+    }
+
+    // A luminaire's "photometry": its shape becomes the luminous opening of the
+    // file's distribution, gamma = 0 along its normal (a sphere's own "normal",
+    // default straight down), C = 0 along "c0"; "flux_lm" scales it, else the file's.
+    void readPhotometry(const Fields& f, const std::string& rel, std::optional<Vec3> c0, std::optional<double> flux,
+                        Emitter& e) {
+        const bool flat = e.shape->normal().has_value();
+        Vec3 axis = flat ? *e.shape->normal() : f.direction("normal").value_or(Vec3(0, 0, -1));
+        if (c0 && length(cross(*c0, axis)) < 1e-6) {
+            f.error("c0", "\"c0\" is parallel to the luminaire's normal (gamma = 0)");
+            c0.reset();
+        }
+        std::filesystem::path file = std::filesystem::path(rel).is_absolute() ? std::filesystem::path(rel) : dir_ / rel;
+        auto cached = photometries_.find(file);
+        if (cached == photometries_.end()) {
+            std::shared_ptr<const IntensityDistribution> d;
+            try {
+                d = loadPhotometry(file);
+            } catch (const IoError& err) {
+                photometryErrors_[file] = err.what();
+            }
+            cached = photometries_.emplace(file, d).first;
+        }
+        if (!cached->second) {
+            f.error("photometry", photometryErrors_[file]);
+            return;
+        }
+        e.shape = photometricEmitter(e.shape, cached->second, axis, c0, rel);
+        if (!flux) e.fluxLm = cached->second->flux();
     }
 
     std::optional<Region> readRegion(const Json& j, const std::string& path, double initialRotation) {
@@ -933,6 +971,10 @@ private:
     DiagnosticSink sink_;
     Scene scene_;
     std::filesystem::path dir_;
+    // Each photometric file is read once however many luminaires use it (null: it
+    // could not be read, for the reason in photometryErrors_).
+    std::map<std::filesystem::path, std::shared_ptr<const IntensityDistribution>> photometries_;
+    std::map<std::filesystem::path, std::string> photometryErrors_;
 };
 
 }  // namespace

@@ -8,6 +8,11 @@ EmitterSet::EmitterSet(const Scene& scene, const std::vector<Transform>& world, 
         Transform t = e.entity >= 0 ? world[e.entity] : Transform();
         auto shape = e.shape->transformed(t);
         emitters_.push_back({shape, emitterLuminance(e), e.fluxLm, shape->center(), shape->reach(), shape->normal()});
+        if (auto* luminaire = dynamic_cast<const PhotometricEmitter*>(shape.get())) {
+            double fileFlux = luminaire->distribution().flux();
+            emitters_.back().photometric = luminaire;
+            emitters_.back().intensityScale = fileFlux > 0 ? e.fluxLm / fileFlux : 0;
+        }
     }
 }
 
@@ -18,6 +23,16 @@ double EmitterSet::importance(size_t i, const Vec3& p) const {
     Vec3 d = e.center - p;
     // A one-sided emitter lights nothing behind its plane.
     if (e.normal && dot(-d, *e.normal) <= 0) return 0;
+    if (e.photometric) {
+        // 4 pi I is the flux of a uniform source as bright towards p: a point the
+        // luminaire sends nothing to never chooses it (BSDF paths still see it, at
+        // full MIS weight). Within its reach, where the centre's direction says
+        // little, at least the mean intensity.
+        double d2 = lengthSquared(d);
+        double I = d2 > 0 ? e.intensityScale * e.photometric->intensity(-d / std::sqrt(d2)) : 0;
+        if (d2 < e.reach * e.reach) I = std::max(I, e.flux / (4 * kPi));
+        return 4 * kPi * I / std::max(d2, e.reach * e.reach);
+    }
     return e.flux / std::max(lengthSquared(d), e.reach * e.reach);
 }
 
@@ -34,6 +49,13 @@ double EmitterSet::pdf(size_t i, const Vec3& p, const Vec3& onEmitter) const {
 
 double EmitterSet::emitted(size_t i, const Vec3& w) const {
     const WorldEmitter& e = emitters_[i];
+    if (e.photometric) {
+        if (e.normal && dot(w, *e.normal) >= 0) return 0;
+        // The opening seen edge-on shows no area (and sends nothing).
+        double area = e.photometric->projectedArea(-w);
+        if (!(area > 1e-9 * e.photometric->area())) return 0;
+        return e.intensityScale * e.photometric->intensity(-w) / area;
+    }
     return !e.normal || dot(w, *e.normal) < 0 ? e.luminance : 0.0;
 }
 

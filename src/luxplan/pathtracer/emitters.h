@@ -8,6 +8,7 @@
 #include <vector>
 
 #include <luxplan/emitters/emitter_shape.h>
+#include <luxplan/emitters/photometric_emitter.h>
 #include <luxplan/scene/scene.h>
 
 namespace luxplan {
@@ -15,13 +16,17 @@ namespace luxplan {
 // One emitter placed by the current layout.
 struct WorldEmitter {
     std::shared_ptr<const EmitterShape> shape;  // world frame
-    double luminance = 0;  // cd/m^2 (flux / (pi A))
+    double luminance = 0;  // cd/m^2 (flux / (pi A)); a photometric luminaire's varies with direction
     double flux = 0;       // lm
     // What the emitter choice reads for every emitter at every vertex, copied out of
     // the shape once per layout so the hot loop makes no virtual calls.
     Vec3 center;
     double reach = 0;
     std::optional<Vec3> normal;  // one-sided emitters
+    // A photometric luminaire (the shape itself, world frame) and the factor taking
+    // its file's candela to `flux`; null for a Lambertian emitter.
+    const PhotometricEmitter* photometric = nullptr;
+    double intensityScale = 0;
 };
 
 // A sampled point on an emitter as seen from a shading point.
@@ -35,7 +40,10 @@ struct EmitterSample {
 
 enum class EmitterSelection {
     Uniform,        // every emitter equally likely
-    PowerDistance,  // flux / distance^2, zero for points behind a one-sided emitter
+    // flux / distance^2, zero for points behind a one-sided emitter; a photometric
+    // luminaire's weight is 4 pi I(towards the point) / distance^2, so that the
+    // choice follows its intensity distribution.
+    PowerDistance,
 };
 
 class EmitterSet {
@@ -56,7 +64,8 @@ public:
     // Density (per solid angle, selection included) that sample() gives the point
     // `onEmitter` of emitter i seen from p.
     double pdf(size_t i, const Vec3& p, const Vec3& onEmitter) const;
-    // Luminance emitter i sends along -w (w: direction from the viewer towards it).
+    // Luminance emitter i sends along -w (w: direction from the viewer towards it):
+    // flux / (pi A), or a photometric luminaire's I(-w) / (its area projected across w).
     double emitted(size_t i, const Vec3& w) const;
 
 private:

@@ -1,0 +1,117 @@
+// EULUMDAT photometric files (.ldt; the format of Stockmar 1990, as DIALux and Relux
+// write it): one field per line in a fixed order, ISO-8859-1, decimal commas common.
+// Lines 1-26 describe the luminaire, the symmetry and the lamp sets; then 6 lines per
+// lamp set, 10 direct ratios, the Mc C angles, the Ng gamma angles and the stored
+// planes' intensities in cd per 1000 lm of lamp flux, plane by plane.
+#include <luxplan/io/photometry_io.h>
+#include <luxplan/io/photometry_text.h>
+
+#include <cmath>
+
+#include <luxplan/json/fields.h>
+
+namespace luxplan::io {
+namespace {
+
+using json::formatNumber;
+using photometry::fail;
+using photometry::quote;
+
+class Lines {
+public:
+    Lines(const std::string& text, const std::string& name) : lines_(photometry::splitLines(text)), name_(name) {}
+
+    // The number on line `n` (1-based).
+    double number(int n, const std::string& what) const {
+        if (n > int(lines_.size()))
+            fail(name_, int(lines_.size()), "the file ends at line " + std::to_string(lines_.size()) + "; " + what +
+                                                " should be on line " + std::to_string(n));
+        auto v = photometry::parseNumber(lines_[size_t(n - 1)]);
+        if (!v) fail(name_, n, "expected " + what + ", got " + quote(photometry::trim(lines_[size_t(n - 1)])));
+        return *v;
+    }
+    int integer(int n, const std::string& what, int lo, int hi) const {
+        double v = number(n, what);
+        if (v != std::floor(v) || v < lo || v > hi)
+            fail(name_, n, what + " must be an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got " +
+                               formatNumber(v));
+        return int(v);
+    }
+
+private:
+    std::vector<std::string> lines_;
+    const std::string& name_;
+};
+
+}  // namespace
+
+PhotometricTable readEulumdat(const std::string& text, const std::string& name) {
+    Lines in(text, name);
+    in.integer(2, "the type indicator Ityp", 0, 3);
+    const int isym = in.integer(3, "the symmetry indicator Isym", 0, 4);
+    const int mc = in.integer(4, "the number of C planes Mc", 1, 3600);
+    const int ng = in.integer(6, "the number of intensities per plane Ng", 2, 1801);
+    if ((isym == 2 && mc % 2) || ((isym == 3 || isym == 4) && mc % 4))
+        fail(name, 4, "Isym " + std::to_string(isym) + " needs Mc divisible by " + (isym == 2 ? "2" : "4") + ", got " +
+                          std::to_string(mc));
+    const double conversion = in.number(24, "the conversion factor for luminous intensities");
+    if (!(conversion > 0)) fail(name, 24, "the conversion factor must be > 0, got " + formatNumber(conversion));
+    const int sets = in.integer(26, "the number of lamp sets", 1, 20);
+    // The first set's lamps give the flux the intensities are relative to (a
+    // negative lamp count marks absolute photometry: the flux is then the
+    // luminaire's, and the arithmetic is the same).
+    const double lampFlux = in.number(27 + 2 * sets, "the first lamp set's total flux (lm)");
+    if (!(lampFlux > 0)) fail(name, 27 + 2 * sets, "the lamp set's total flux must be > 0 lm, got " + formatNumber(lampFlux));
+    const int cLine = 27 + 6 * sets + 10, gLine = cLine + mc, iLine = gLine + ng;
+
+    // ---- the stored planes (Mc1 to Mc2 of the spec) ----
+    int firstPlane = 0, planes = mc;
+    CSymmetry symmetry = CSymmetry::None;
+    switch (isym) {
+        case 0: break;
+        case 1: planes = 1, symmetry = CSymmetry::Rotational; break;
+        case 2: planes = mc / 2 + 1, symmetry = CSymmetry::AboutC0C180; break;
+        case 3: firstPlane = mc / 4, planes = mc / 2 + 1, symmetry = CSymmetry::AboutC90C270; break;
+        case 4: planes = mc / 4 + 1, symmetry = CSymmetry::Quadrants; break;
+    }
+    std::vector<double> cAll(static_cast<size_t>(mc));
+    for (int i = 0; i < mc; ++i) {
+        cAll[size_t(i)] = in.number(cLine + i, "a C angle");
+        if (cAll[size_t(i)] < 0 || cAll[size_t(i)] >= 360)
+            fail(name, cLine + i, "C angle " + formatNumber(cAll[size_t(i)]) + " is outside [0, 360)");
+        if (i > 0 && !(cAll[size_t(i)] > cAll[size_t(i) - 1]))
+            fail(name, cLine + i, "C angles must increase (" + formatNumber(cAll[size_t(i)]) + " after " +
+                                      formatNumber(cAll[size_t(i) - 1]) + ")");
+    }
+    PhotometricTable t;
+    t.symmetry = symmetry;
+    t.cDeg.assign(cAll.begin() + firstPlane, cAll.begin() + firstPlane + planes);
+    // Each symmetry stores a fixed range of planes: its ends must be where it says.
+    auto expectPlane = [&](int index, double deg) {
+        if (std::abs(cAll[size_t(index)] - deg) > 1e-6)
+            fail(name, cLine + index, "Isym " + std::to_string(isym) + " stores C " + formatNumber(deg) + " as plane " +
+                                          std::to_string(index + 1) + ", but the file's C angle there is " +
+                                          formatNumber(cAll[size_t(index)]));
+    };
+    expectPlane(0, 0);
+    if (isym == 2) expectPlane(mc / 2, 180);
+    if (isym == 3) expectPlane(mc / 4, 90), expectPlane(3 * mc / 4, 270);
+    if (isym == 4) expectPlane(mc / 4, 90);
+
+    for (int i = 0; i < ng; ++i) {
+        double g = in.number(gLine + i, "a gamma angle");
+        if (g < 0 || g > 180) fail(name, gLine + i, "gamma angle " + formatNumber(g) + " is outside [0, 180]");
+        if (i > 0 && !(g > t.gammaDeg.back()))
+            fail(name, gLine + i, "gamma angles must increase (" + formatNumber(g) + " after " + formatNumber(t.gammaDeg.back()) + ")");
+        t.gammaDeg.push_back(g);
+    }
+    const double toCandela = lampFlux / 1000 * conversion;
+    for (int k = 0; k < planes * ng; ++k) {
+        double v = in.number(iLine + k, "an intensity (cd/klm; " + std::to_string(planes * ng) + " in all)");
+        if (v < 0) fail(name, iLine + k, "negative intensity " + formatNumber(v));
+        t.candela.push_back(v * toCandela);
+    }
+    return t;
+}
+
+}  // namespace luxplan::io

@@ -1,0 +1,30 @@
+#include <luxplan/io/photometry_io.h>
+
+#include <algorithm>
+#include <cctype>
+#include <fstream>
+#include <sstream>
+
+#include <luxplan/core/error.h>
+
+namespace luxplan::io {
+
+std::shared_ptr<const IntensityDistribution> loadPhotometry(const std::filesystem::path& file) {
+    const std::string name = file.string();
+    std::string ext = file.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    if (ext != ".ies" && ext != ".ldt")
+        throw IoError(name + ": unsupported photometry format \"" + ext + "\" (use .ies or .ldt)");
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(file, ec)) throw IoError(name + ": no such file");
+    std::ifstream in(file, std::ios::binary);
+    if (!in) throw IoError(name + ": cannot open the file");
+    std::stringstream buffer;
+    buffer << in.rdbuf();
+    PhotometricTable table = ext == ".ies" ? readIes(buffer.str(), name) : readEulumdat(buffer.str(), name);
+    auto d = std::make_shared<const IntensityDistribution>(table);
+    if (!(d->flux() > 0)) throw IoError(name + ": the distribution emits no light (every intensity is 0)");
+    return d;
+}
+
+}  // namespace luxplan::io
