@@ -26,6 +26,7 @@ struct MeasureArgs {
     int paths = 0;
     int64_t seed = -1;
     bool json = false, flat = false, adaptive = false;
+    std::string sampling = "sobol";
 };
 
 void runMeasure(const MeasureArgs& args) {
@@ -41,6 +42,7 @@ void runMeasure(const MeasureArgs& args) {
     options.pathsPerPoint = args.paths > 0 ? args.paths : scene.optimizer.pathsPerPoint;
     options.seed = args.seed >= 0 ? uint64_t(args.seed) : scene.optimizer.seed;
     options.adaptive = args.adaptive;
+    options.lowDiscrepancy = args.sampling == "sobol";
     MeasureResult result = measureSamplers(tracer, options);
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
@@ -64,7 +66,7 @@ void runMeasure(const MeasureArgs& args) {
         }
         nlohmann::json out = {{"samplers", samplers},
                               {"paths_per_point", options.pathsPerPoint},
-                              {"adaptive", options.adaptive},
+                              {"adaptive", options.adaptive}, {"sampling", args.sampling},
                               {"seed", options.seed},
                               {"seconds", seconds}};
         std::cout << out.dump(2) << "\n";
@@ -104,6 +106,9 @@ void registerMeasureCommand(CLI::App& app, int& threads) {
     cmd->add_flag("--adaptive", args->adaptive,
                   "Stop each sampler once value +- 3 standard errors lies inside one linear piece of its penalty "
                   "(--paths is then the most per point)");
+    cmd->add_option("--sampling", args->sampling,
+                    "Random numbers of the paths' first vertices: sobol (scrambled low-discrepancy, default) or random (PCG)")
+        ->check(CLI::IsMember({"sobol", "random"}));
     cmd->add_flag("--flat", args->flat, "Measure in the flattened scene (read the layout_flat.json of optimize --flat)");
     cmd->callback([args] { runMeasure(*args); });
 }

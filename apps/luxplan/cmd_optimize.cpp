@@ -31,6 +31,7 @@ struct OptimizeArgs {
     int iterations = -1, paths = 0, spp = 0;
     int64_t seed = -1;
     bool flat = false, quiet = false, noPictures = false, fixedPaths = false, fullEvaluation = false;
+    std::string sampling = "sobol";
 };
 
 std::string duration(double seconds) {
@@ -85,6 +86,7 @@ bool runOptimize(const OptimizeArgs& args) {
     measure.pathsPerPoint = args.paths > 0 ? args.paths : scene.optimizer.searchPathsPerPoint;
     measure.seed = options.seed;
     measure.adaptive = !args.fixedPaths;
+    measure.lowDiscrepancy = args.sampling == "sobol";
     std::unique_ptr<PathTracedLighting> lighting;
     const int reportPaths = std::max(scene.optimizer.reportPathsPerPoint, measure.pathsPerPoint);
     if (!scene.samplers.empty()) {
@@ -170,6 +172,8 @@ void registerOptimizeCommand(CLI::App& app, int& threads) {
     cmd->add_flag("--fixed-paths", args->fixedPaths,
                   "Trace exactly --paths per point for every sampler (default: a sampler stops early once its "
                   "penalty is settled, --paths being the most)");
+    cmd->add_option("--sampling", args->sampling, "Random numbers of the paths' first vertices: sobol (default) or random")
+        ->check(CLI::IsMember({"sobol", "random"}));
     cmd->add_flag("--full-evaluation", args->fullEvaluation,
                   "Trace every path of every evaluated layout (default: only the paths a move can change are "
                   "traced again; the numbers are the same)");

@@ -16,6 +16,7 @@ struct WorkItem {
 };
 
 constexpr int kFolds = ItemEstimates::kFolds;
+constexpr uint64_t kSequenceTag = 0x5350'0bb1'5eedULL;  // keys the low-discrepancy sequences
 
 // What one work item's paths added: per fold an estimator for each item they reach
 // (the own item only, or all of a sampler that shares paths).
@@ -112,7 +113,7 @@ MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& op
     if (cache) {
         std::vector<int> workSampler;
         for (const WorkItem& w : work) workSampler.push_back(w.sampler);
-        cache->begin(rt, workSampler, options.seed);
+        cache->begin(rt, workSampler, hashValues({options.seed, uint64_t(options.lowDiscrepancy)}));
     }
     std::vector<WorkResult> done(work.size());
     for (size_t index = 0; index < work.size(); ++index) {
@@ -135,9 +136,15 @@ MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& op
                 c = cached->contributions;
             } else {
                 Rng rng(hashValues({options.seed, uint64_t(w.sampler), uint64_t(w.item), uint64_t(path)}));
+                const bool folds = sampler.independentFolds();
+                const uint64_t sequence = hashValues(
+                    {options.seed, kSequenceTag, uint64_t(w.sampler), uint64_t(w.item), folds ? uint64_t(path % kFolds) : kFolds});
+                PathSamples samples = options.lowDiscrepancy
+                                          ? PathSamples(rng, sequence, uint32_t(folds ? path / kFolds : path))
+                                          : PathSamples(rng);
                 PathCache::Record record;
                 if (cache) r.stats.footprint = &record.footprint;
-                sampler.sample(tracer, w.item, rng, r.stats, c);
+                sampler.sample(tracer, w.item, samples, r.stats, c);
                 r.stats.footprint = nullptr;
                 if (cache) {
                     record.contributions = c;

@@ -29,6 +29,11 @@ struct MeasureOptions {
     bool adaptive = false;
     int batchPaths = 16;
     double confidenceZ = 3;
+    // Low-discrepancy numbers for the first vertices of every path
+    // (pathtracer/path_samples.h): the paths of one point are consecutive points of a
+    // scrambled sequence (one per fold for types that compare folds,
+    // PlacedSampler::independentFolds). Off: PCG only.
+    bool lowDiscrepancy = true;
 };
 
 struct MeasureResult {

@@ -78,15 +78,15 @@ bool PathCache::MovedBounds::meets(const SegmentProbe& s) const {
     return false;
 }
 
-void PathCache::begin(const EmbreeScene& rt, const std::vector<int>& workSampler, uint64_t seed) {
+void PathCache::begin(const EmbreeScene& rt, const std::vector<int>& workSampler, uint64_t streams) {
     const size_t entities = scene_.entities.size();
     newWorld_.resize(entities);
     for (size_t i = 0; i < entities; ++i) newWorld_[i] = rt.worldFromEntity(int(i));
-    if (!hasCommitted_ || seed != seed_ || records_.size() != workSampler.size()) {
+    if (!hasCommitted_ || streams != streams_ || records_.size() != workSampler.size()) {
         records_.assign(workSampler.size(), {});
         committedSegments_ = 0;
         hasCommitted_ = false;
-        seed_ = seed;
+        streams_ = streams;
     }
 
     moved_.clear();

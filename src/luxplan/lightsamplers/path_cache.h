@@ -39,9 +39,9 @@ public:
 
     // Before a measurement of `rt`'s current layout with `workItems` work items (one per
     // sampler item) whose samplers are `workSampler`: what moved since the committed
-    // layout. Options that change what a path is (seed, sampler set) must not change
-    // between measurements that share a cache; a different seed clears it.
-    void begin(const EmbreeScene& rt, const std::vector<int>& workSampler, uint64_t seed);
+    // layout. `streams` keys what a path's numbers are (the seed and the sampling
+    // options): a different key clears the cache.
+    void begin(const EmbreeScene& rt, const std::vector<int>& workSampler, uint64_t streams);
     // The committed record of path `path` of work item `work` if it still holds for
     // the new layout, else null. Call for paths 0, 1, ... in order per work item (from
     // one thread per work item).
@@ -78,7 +78,7 @@ private:
 
     // Committed state.
     bool hasCommitted_ = false;
-    uint64_t seed_ = 0;
+    uint64_t streams_ = 0;
     std::vector<Transform> world_;
     std::vector<std::vector<std::optional<Record>>> records_;  // per work item, by path
     size_t committedSegments_ = 0;

@@ -21,7 +21,7 @@
 namespace luxplan {
 
 class PathTracer;
-class Rng;
+class PathSamples;
 struct RayStats;
 
 // A value and its standard error.
@@ -116,13 +116,18 @@ public:
     // How many estimates it is made of: its points, or its strata.
     virtual int items() const = 0;
     // Traces one path for `item` and adds what it contributes, in the type's unit.
-    virtual void sample(const PathTracer& tracer, int item, Rng& rng, RayStats& stats, PathContributions& out) const = 0;
+    virtual void sample(const PathTracer& tracer, int item, PathSamples& samples, RayStats& stats, PathContributions& out) const = 0;
     // Whether a path traced for one item may add to others. If so, every item's
     // estimate is the mean over all the sampler's paths (each path then adds its
     // contribution times items(), so that an item's own paths keep their weight).
     // Otherwise an item's estimate is the mean over its own paths, and sample()
     // adds to that item only.
     virtual bool sharesPaths() const { return false; }
+    // Whether the type compares its folds (chooses with some, measures with another):
+    // with low-discrepancy sampling, each fold's paths then come from a sequence of
+    // their own, so that folds stay independent. Otherwise all of an item's paths are
+    // one sequence, which stratifies better.
+    virtual bool independentFolds() const { return false; }
     // The sampler's value from its items' estimates. Default: the mean of the items,
     // whose error is the root sum of squares over their count.
     virtual Estimate combine(const ItemEstimates& items) const;

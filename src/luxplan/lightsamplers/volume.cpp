@@ -27,8 +27,8 @@ public:
     std::vector<Vec3> points, corners;
 
     int items() const override { return int(points.size()); }
-    void sample(const PathTracer& tracer, int item, Rng& rng, RayStats& stats, PathContributions& out) const override {
-        out.add(tracer.sample(SphereSensor(points[size_t(item)]), rng, stats));
+    void sample(const PathTracer& tracer, int item, PathSamples& samples, RayStats& stats, PathContributions& out) const override {
+        out.add(tracer.sample(SphereSensor(points[size_t(item)]), samples, stats));
     }
     SamplerDrawing drawing() const override {
         SamplerDrawing d;

@@ -78,7 +78,7 @@ double PathTracer::transmittance(const Vec3& origin, const Vec3& w, double tMax,
     return 0;
 }
 
-double PathTracer::sample(const Sensor& sensor, Rng& rng, RayStats& stats, bool* hitEmitterFirst,
+double PathTracer::sample(const Sensor& sensor, PathSamples& samples, RayStats& stats, bool* hitEmitterFirst,
                           SensorLight* sensorLight) const {
     if (sensorLight) sensorLight->count = 0;
     const Vec3 origin = sensor.position();
@@ -117,6 +117,7 @@ double PathTracer::sample(const Sensor& sensor, Rng& rng, RayStats& stats, bool*
     double firstWeight = 0;
 
     for (int depth = 0; depth < options_.maxDepth; ++depth) {
+        samples.setDepth(depth);
         bool deltaVertex = v.isSurface() ? v.bsdf->isDelta() : sensor.isDelta();
 
         // ---- next-event estimation (skipped at delta vertices) ----
@@ -138,19 +139,20 @@ double PathTracer::sample(const Sensor& sensor, Rng& rng, RayStats& stats, bool*
             };
             if (!emitters_.empty()) {
                 if (stats.footprint) stats.footprint->usedEmitterChoice = true;
-                EmitterSample s = emitters_.sample(v.p, rng.uniform(), {rng.uniform(), rng.uniform()});
+                const double uChoice = samples.get1D(PathSamples::EmitterChoice);
+                EmitterSample s = emitters_.sample(v.p, uChoice, samples.get2D(PathSamples::EmitterPoint));
                 if (s.pdf > 0 && s.Lv > 0) addLight(s.wi, Vec3(s.Lv, s.Lv, s.Lv), s.pdf, s.distance, s.emitter);
             }
             if (daylight_ && daylight_->hasSun()) {
-                double uDisk = rng.uniform();
-                EnvironmentSample s = daylight_->sampleSun(uDisk, {rng.uniform(), rng.uniform()});
+                const double uDisk = samples.get1D(PathSamples::SunDisk);
+                EnvironmentSample s = daylight_->sampleSun(uDisk, samples.get2D(PathSamples::SunPoint));
                 addLight(s.wi, s.Le, s.pdf, kInf, -1);
             }
             if (sky) {
                 SkyLight::View& view = views[current];
                 if (depth == 0) sky_.viewFromSensor(v.p, view);
                 else sky_.view(v.p, view);
-                EnvironmentSample s = sky_.sample(view, v.p, {rng.uniform(), rng.uniform()});
+                EnvironmentSample s = sky_.sample(view, v.p, samples.get2D(PathSamples::SkyPoint));
                 addLight(s.wi, s.Le, s.pdf, kInf, -1);
             }
         }
@@ -161,11 +163,11 @@ double PathTracer::sample(const Sensor& sensor, Rng& rng, RayStats& stats, bool*
         bool delta = false;
         if (!v.isSurface()) {
             // A delta sensor draws no random numbers for its one direction.
-            SensorSample s = sensor.isDelta() ? sensor.sample({0, 0}) : sensor.sample({rng.uniform(), rng.uniform()});
+            SensorSample s = sensor.isDelta() ? sensor.sample({0, 0}) : sensor.sample(samples.get2D(PathSamples::Direction));
             d = s.wi, weight = Vec3(s.weight, s.weight, s.weight), pdf = s.pdf, delta = s.delta;
         } else {
-            double uLobe = rng.uniform();
-            auto s = v.bsdf->sample(v.wo, uLobe, {rng.uniform(), rng.uniform()});
+            const double uLobe = samples.get1D(PathSamples::Lobe);
+            auto s = v.bsdf->sample(v.wo, uLobe, samples.get2D(PathSamples::Direction));
             if (!s) break;
             d = v.shading.toWorld(s->wi);
             // Reflection must stay on the arrival side of the geometric surface.
@@ -185,7 +187,7 @@ double PathTracer::sample(const Sensor& sensor, Rng& rng, RayStats& stats, bool*
         // ---- Russian roulette ----
         if (depth >= options_.rouletteDepth) {
             double q = std::min(0.95, maxComponent(throughput) / firstWeight);
-            if (rng.uniform() >= q) break;
+            if (samples.get1D(PathSamples::Roulette) >= q) break;
             throughput = throughput * (1 / q);
         }
 
@@ -223,7 +225,7 @@ double PathTracer::sample(const Sensor& sensor, Rng& rng, RayStats& stats, bool*
                 double scatter = r.reflectance + r.transmittance;
                 if (scatter <= 0) return luminance(L);
                 throughput = throughput * scatter;
-                if (rng.uniform() * scatter < r.transmittance) {
+                if (samples.rng().uniform() * scatter < r.transmittance) {
                     o = offsetAlong(hit->point, hit->geometricNormal, d);
                 } else {
                     d = reflect(-d, hit->geometricNormal);

@@ -17,6 +17,7 @@
 #include <luxplan/pathtracer/emitters.h>
 #include <luxplan/pathtracer/panes.h>
 #include <luxplan/pathtracer/path_footprint.h>
+#include <luxplan/pathtracer/path_samples.h>
 #include <luxplan/pathtracer/sensor.h>
 #include <luxplan/pathtracer/sky_light.h>
 #include <luxplan/rt/embree_scene.h>
@@ -61,8 +62,14 @@ public:
     // hit a luminaire (the value is then its luminance alone: emitters end paths).
     // `sensorLight`, when given, receives the light sampled at the sensor instead of
     // the returned value (which then holds the rest of the path's).
-    double sample(const Sensor& sensor, Rng& rng, RayStats& stats, bool* hitEmitterFirst = nullptr,
+    double sample(const Sensor& sensor, PathSamples& samples, RayStats& stats, bool* hitEmitterFirst = nullptr,
                   SensorLight* sensorLight = nullptr) const;
+    // The same with pseudo-random numbers only.
+    double sample(const Sensor& sensor, Rng& rng, RayStats& stats, bool* hitEmitterFirst = nullptr,
+                  SensorLight* sensorLight = nullptr) const {
+        PathSamples samples(rng);
+        return sample(sensor, samples, stats, hitEmitterFirst, sensorLight);
+    }
     // The same for the usual sensors: illuminance (lx) at p over the hemisphere around
     // unit n, and the luminance arriving along a ray (cd/m^2).
     double illuminanceSample(const Vec3& p, const Vec3& n, Rng& rng, RayStats& stats) const {

@@ -1,0 +1,60 @@
+// Low-discrepancy points for path sampling: the first two dimensions of the Sobol
+// sequence (a (0,2)-sequence in base 2: every 2^m consecutive points from index 0
+// put one point in each of 2^m equal rectangles of any shape), randomized by
+// hash-based Owen scrambling (Burley 2020, "Practical Hash-based Owen Scrambling",
+// after Laine and Karras 2011), which keeps that stratification and makes every point
+// uniform on its own: estimates stay unbiased. Higher dimensions are "padded": each
+// pair of dimensions gets its own shuffle of the point index and its own scramble
+// (pbrt-v4's PaddedSobolSampler does the same), so pairs are independent of each
+// other and each is well stratified.
+#pragma once
+
+#include <cstdint>
+
+#include <luxplan/core/math.h>
+#include <luxplan/core/rng.h>
+
+namespace luxplan {
+
+constexpr uint32_t reverseBits(uint32_t x) {
+    x = ((x & 0x55555555u) << 1) | ((x >> 1) & 0x55555555u);
+    x = ((x & 0x33333333u) << 2) | ((x >> 2) & 0x33333333u);
+    x = ((x & 0x0f0f0f0fu) << 4) | ((x >> 4) & 0x0f0f0f0fu);
+    x = ((x & 0x00ff00ffu) << 8) | ((x >> 8) & 0x00ff00ffu);
+    return (x << 16) | (x >> 16);
+}
+
+// A random permutation of [0, 2^32) that is a nested uniform scramble in base 2: bit k
+// of the result is bit k of the input flipped by a hash of the bits above it.
+constexpr uint32_t owenScramble(uint32_t x, uint32_t seed) {
+    x = reverseBits(x);
+    // Laine-Karras: each step only mixes lower bits into higher ones (reversed order).
+    x += seed;
+    x ^= x * 0x6c50b47cu;
+    x ^= x * 0xb82f1e52u;
+    x ^= x * 0xc7afe638u;
+    x ^= x * 0x8d22f6e6u;
+    return reverseBits(x);
+}
+
+// Sobol dimensions 0 (van der Corput) and 1, as 32-bit fractions.
+constexpr uint32_t sobol0(uint32_t i) { return reverseBits(i); }
+constexpr uint32_t sobol1(uint32_t i) {
+    uint32_t r = 0;
+    for (uint32_t v = 1u << 31; i; i >>= 1, v ^= v >> 1)
+        if (i & 1) r ^= v;
+    return r;
+}
+
+// 32-bit fraction to [0, 1).
+constexpr double toUnit(uint32_t x) { return double(x) * (1.0 / 4294967296.0); }
+
+// Point `index` of the padded, scrambled sequence `sequence`, in dimension pair `pair`.
+inline Vec2 sobolPair(uint64_t sequence, uint32_t index, uint32_t pair) {
+    const uint64_t h = hashValues({sequence, pair});
+    const uint32_t shuffled = owenScramble(index, uint32_t(h));
+    return {toUnit(owenScramble(sobol0(shuffled), uint32_t(h >> 32))),
+            toUnit(owenScramble(sobol1(shuffled), uint32_t(mixBits(h) >> 32)))};
+}
+
+}  // namespace luxplan
