@@ -55,6 +55,10 @@ public:
     // flattenScene()'s cohesion rules, so that a layout the hierarchy allows costs the
     // same in the flat scene.
     virtual bool countsInNormalizer() const { return true; }
+    // Whether it measures the same with `a` and `b` exchanged (a distance between
+    // centres; not a focus of a on b). The search uses it to find entities a swap
+    // cannot tell apart (optimizer/interchangeable.h).
+    virtual bool symmetric() const { return false; }
 
     // Whether reports show its value as an angle (degrees) or a distance (metres).
     virtual bool measuresAngle() const = 0;

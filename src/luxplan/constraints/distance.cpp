@@ -19,6 +19,7 @@ public:
         t.rejects = rejects(t.penalty);
     }
     bool measuresAngle() const override { return false; }
+    bool symmetric() const override { return true; }  // |a - b|
     std::optional<DistanceRange> distanceRange() const override { return range_; }
     std::string describe() const override {
         return describeRange(range_) +

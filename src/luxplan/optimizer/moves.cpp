@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include <luxplan/optimizer/interchangeable.h>
 #include <luxplan/optimizer/placement.h>
 
 namespace luxplan {
@@ -97,8 +98,11 @@ MoveSet::MoveSet(const Scene& scene, std::vector<int> entities, MoveOptions opti
             translates = translates || r.hi.x > r.lo.x || r.hi.y > r.lo.y;
             rotates = rotates || (r.continuousRotation ? r.rotationMaxDeg > r.rotationMinDeg : distinctRotations(r).size() > 1);
         }
+        // Swap partners: siblings, but not the ones a swap cannot tell apart
+        // (interchangeable.h: the swap would be a null move).
         for (int o : entities_)
-            if (o != e && scene.entities[size_t(o)].parent == entity.parent) siblings_[size_t(e)].push_back(o);
+            if (o != e && scene.entities[size_t(o)].parent == entity.parent && !interchangeable(scene, e, o))
+                siblings_[size_t(e)].push_back(o);
         if (translates) candidates_[int(MoveType::Translate)].push_back(e);
         if (rotates) candidates_[int(MoveType::Rotate)].push_back(e);
         if (!siblings_[size_t(e)].empty()) candidates_[int(MoveType::Swap)].push_back(e);
