@@ -22,6 +22,13 @@ TEST(LowDiscrepancy, OwenScrambleIsAPermutation) {
     EXPECT_EQ(reverseBits(1u), 1u << 31);
     EXPECT_EQ(sobol1(1), 1u << 31);
     EXPECT_EQ(sobol1(2), 3u << 30);
+    // The table against the bit loop that defines it.
+    for (uint32_t i : {0u, 1u, 3u, 255u, 256u, 65537u, 0x89abcdefu, 0xffffffffu}) {
+        uint32_t r = 0, x = i;
+        for (uint32_t v = 1u << 31; x; x >>= 1, v ^= v >> 1)
+            if (x & 1) r ^= v;
+        EXPECT_EQ(sobol1(i), r) << i;
+    }
 }
 
 TEST(LowDiscrepancy, EveryElementaryIntervalHoldsOnePoint) {

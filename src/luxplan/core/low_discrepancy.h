@@ -39,22 +39,47 @@ constexpr uint32_t owenScramble(uint32_t x, uint32_t seed) {
 
 // Sobol dimensions 0 (van der Corput) and 1, as 32-bit fractions.
 constexpr uint32_t sobol0(uint32_t i) { return reverseBits(i); }
+// Dimension 1: bit k of the index adds direction number v_k (v_0 = 2^31,
+// v_{k+1} = v_k ^ (v_k >> 1)), by bytes from a table.
+struct Sobol1Table {
+    uint32_t bytes[4][256] = {};
+    constexpr Sobol1Table() {
+        uint32_t v[32] = {};
+        v[0] = 1u << 31;
+        for (int k = 1; k < 32; ++k) v[k] = v[k - 1] ^ (v[k - 1] >> 1);
+        for (int b = 0; b < 4; ++b)
+            for (uint32_t x = 0; x < 256; ++x)
+                for (int j = 0; j < 8; ++j)
+                    if (x & (1u << j)) bytes[b][x] ^= v[8 * b + j];
+    }
+};
+inline constexpr Sobol1Table kSobol1;
 constexpr uint32_t sobol1(uint32_t i) {
-    uint32_t r = 0;
-    for (uint32_t v = 1u << 31; i; i >>= 1, v ^= v >> 1)
-        if (i & 1) r ^= v;
-    return r;
+    return kSobol1.bytes[0][i & 255] ^ kSobol1.bytes[1][(i >> 8) & 255] ^ kSobol1.bytes[2][(i >> 16) & 255] ^
+           kSobol1.bytes[3][i >> 24];
 }
 
 // 32-bit fraction to [0, 1).
 constexpr double toUnit(uint32_t x) { return double(x) * (1.0 / 4294967296.0); }
 
-// Point `index` of the padded, scrambled sequence `sequence`, in dimension pair `pair`.
-inline Vec2 sobolPair(uint64_t sequence, uint32_t index, uint32_t pair) {
-    const uint64_t h = hashValues({sequence, pair});
-    const uint32_t shuffled = owenScramble(index, uint32_t(h));
-    return {toUnit(owenScramble(sobol0(shuffled), uint32_t(h >> 32))),
-            toUnit(owenScramble(sobol1(shuffled), uint32_t(mixBits(h) >> 32)))};
+// The scramble of one dimension pair of one sequence: an index shuffle and a scramble
+// per coordinate, from a hash of (sequence, pair). Computed once per sampler point.
+struct PairScramble {
+    uint32_t shuffle = 0, x = 0, y = 0;
+    PairScramble() = default;
+    PairScramble(uint64_t sequence, uint32_t pair) {
+        const uint64_t h = hashValues({sequence, pair});
+        shuffle = uint32_t(h), x = uint32_t(h >> 32), y = uint32_t(mixBits(h) >> 32);
+    }
+};
+
+// Point `index` of a scrambled pair.
+inline Vec2 sobolPair(const PairScramble& s, uint32_t index) {
+    const uint32_t shuffled = owenScramble(index, s.shuffle);
+    return {toUnit(owenScramble(sobol0(shuffled), s.x)), toUnit(owenScramble(sobol1(shuffled), s.y))};
 }
+
+// Point `index` of the padded, scrambled sequence `sequence`, in dimension pair `pair`.
+inline Vec2 sobolPair(uint64_t sequence, uint32_t index, uint32_t pair) { return sobolPair(PairScramble(sequence, pair), index); }
 
 }  // namespace luxplan

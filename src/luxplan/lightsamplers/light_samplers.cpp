@@ -129,6 +129,13 @@ MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& op
         const PlacedSampler& sampler = *placed[size_t(w.sampler)];
         const bool shares = sampler.sharesPaths();
         WorkResult& r = done[index];
+        // The item's low-discrepancy sequence (one per fold for types that compare folds).
+        const bool folds = sampler.independentFolds();
+        std::vector<PathSamples::Sequence> sequences;
+        if (options.lowDiscrepancy)
+            for (int g = 0; g < (folds ? kFolds : 1); ++g)
+                sequences.emplace_back(hashValues({options.seed, kSequenceTag, uint64_t(w.sampler), uint64_t(w.item),
+                                                   folds ? uint64_t(g) : uint64_t(kFolds)}));
         for (int path = from; path < to; ++path) {
             const PathCache::Record* cached = cache ? cache->reuse(index, path) : nullptr;
             PathContributions c(w.item);
@@ -136,11 +143,9 @@ MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& op
                 c = cached->contributions;
             } else {
                 Rng rng(hashValues({options.seed, uint64_t(w.sampler), uint64_t(w.item), uint64_t(path)}));
-                const bool folds = sampler.independentFolds();
-                const uint64_t sequence = hashValues(
-                    {options.seed, kSequenceTag, uint64_t(w.sampler), uint64_t(w.item), folds ? uint64_t(path % kFolds) : kFolds});
                 PathSamples samples = options.lowDiscrepancy
-                                          ? PathSamples(rng, sequence, uint32_t(folds ? path / kFolds : path))
+                                          ? PathSamples(rng, sequences[folds ? size_t(path % kFolds) : 0],
+                                                        uint32_t(folds ? path / kFolds : path))
                                           : PathSamples(rng);
                 PathCache::Record record;
                 if (cache) r.stats.footprint = &record.footprint;

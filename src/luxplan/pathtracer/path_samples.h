@@ -9,6 +9,7 @@
 // uniform whatever the layout: estimates stay unbiased.
 #pragma once
 
+#include <array>
 #include <cstdint>
 
 #include <luxplan/core/low_discrepancy.h>
@@ -21,15 +22,23 @@ public:
     enum Slot : uint32_t { EmitterChoice, EmitterPoint, SunDisk, SunPoint, SkyPoint, Lobe, Direction, Roulette, kSlots };
     static constexpr int kDepths = 2;
 
+    // One sequence's scrambles, shared by the paths of a sampler point.
+    struct Sequence {
+        std::array<PairScramble, kDepths * kSlots> pairs;
+        explicit Sequence(uint64_t key) {
+            for (uint32_t p = 0; p < pairs.size(); ++p) pairs[p] = PairScramble(key, p);
+        }
+    };
+
     // Pseudo-random only.
     explicit PathSamples(Rng& rng) : rng_(rng) {}
-    // Point `index` of sequence `sequence` for the first vertices.
-    PathSamples(Rng& rng, uint64_t sequence, uint32_t index) : rng_(rng), sequence_(sequence), index_(index), qmc_(true) {}
+    // Point `index` of `sequence` for the first vertices.
+    PathSamples(Rng& rng, const Sequence& sequence, uint32_t index) : rng_(rng), sequence_(&sequence), index_(index) {}
 
     void setDepth(int depth) { depth_ = depth; }
-    double get1D(Slot slot) { return fromSequence() ? sobolPair(sequence_, index_, pair(slot)).x : rng_.uniform(); }
+    double get1D(Slot slot) { return fromSequence() ? sobolPair(sequence_->pairs[pair(slot)], index_).x : rng_.uniform(); }
     Vec2 get2D(Slot slot) {
-        if (fromSequence()) return sobolPair(sequence_, index_, pair(slot));
+        if (fromSequence()) return sobolPair(sequence_->pairs[pair(slot)], index_);
         double u = rng_.uniform();
         return {u, rng_.uniform()};
     }
@@ -37,13 +46,12 @@ public:
     Rng& rng() { return rng_; }
 
 private:
-    bool fromSequence() const { return qmc_ && depth_ < kDepths; }
+    bool fromSequence() const { return sequence_ && depth_ < kDepths; }
     uint32_t pair(Slot slot) const { return uint32_t(depth_) * kSlots + slot; }
 
     Rng& rng_;
-    uint64_t sequence_ = 0;
+    const Sequence* sequence_ = nullptr;
     uint32_t index_ = 0;
-    bool qmc_ = false;
     int depth_ = 0;
 };
 
