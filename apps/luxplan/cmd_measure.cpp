@@ -105,7 +105,7 @@ void registerMeasureCommand(CLI::App& app, int& threads) {
                   "Stop each sampler once value +- 3 standard errors lies inside one linear piece of its penalty "
                   "(--paths is then the most per point)");
     cmd->add_flag("--flat", args->flat, "Measure in the flattened scene (read the layout_flat.json of optimize --flat)");
-    cmd->callback([args] { runMeasure(*args); });
+    cmd->callback([args] { namingScene(args->scene, [&] { runMeasure(*args); }); });
 }
 
 }  // namespace luxplan::cli

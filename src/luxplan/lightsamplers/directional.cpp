@@ -258,7 +258,7 @@ std::shared_ptr<const SamplerType> directionalSampler(Vec3 origin, Vec3 directio
 
 std::shared_ptr<const SamplerType> readDirectionalSampler(const json::Fields& f) {
     auto s = std::make_shared<Directional>();
-    s->origin = f.vec3("origin", true).value_or(Vec3());
+    s->origin = f.vec3("origin", true, json::coordinateRange()).value_or(Vec3());
     s->direction = f.direction("direction", true).value_or(Vec3(0, -1, 0));
     s->fovDeg = f.number("fov_deg", 60.0, json::Range{0, 180, true, true, "deg"});
     s->strata = f.integer("strata", json::Range::closed(1, 256)).value_or(8);
