@@ -3,12 +3,14 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <set>
 #include <sys/stat.h>
 
 #include <nlohmann/json.hpp>
 
 #include <luxplan/core/error.h>
 #include <luxplan/core/limits.h>
+#include <luxplan/emitters/emitter_shape.h>
 #include <luxplan/io/layout_io.h>
 #include <luxplan/io/scene_loader.h>
 #include "support/temp_files.h"

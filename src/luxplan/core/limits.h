@@ -46,6 +46,10 @@ inline constexpr int kMaxGltfNodeDepth = 64;
 // ---- light ----
 // A luminaire's flux, lm (a stadium floodlight gives about 2e5 lm).
 inline constexpr double kMaxFluxLm = 1e9;
+// Sky and sun illuminance, lx (direct sunlight is about 1.3e5 lx), and a uniform
+// sky's luminance, cd/m2 (the sun's disk is about 1.6e9).
+inline constexpr double kMaxIlluminanceLx = 1e7;
+inline constexpr double kMaxLuminanceNits = 1e10;
 
 // Candela values in one IES file (horizontal x vertical angles; EULUMDAT's own
 // bounds, 3600 x 1801 planes, are below it).

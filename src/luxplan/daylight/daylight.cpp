@@ -79,12 +79,18 @@ std::vector<Diagnostic> validateDaylight(const DaylightParams& p, const Site& si
         else if (!(*p.horizontalIlluminanceLx > 0) || !std::isfinite(*p.horizontalIlluminanceLx))
             add("/daylight/sky/horizontal_illuminance_lx",
                 "horizontal_illuminance_lx " + num(*p.horizontalIlluminanceLx) + " must be > 0");
+        else if (*p.horizontalIlluminanceLx > limits::kMaxIlluminanceLx)
+            add("/daylight/sky/horizontal_illuminance_lx", "horizontal_illuminance_lx " + num(*p.horizontalIlluminanceLx) +
+                                                               " exceeds the limit of " + num(limits::kMaxIlluminanceLx));
     }
     if (p.model == SkyModelType::Uniform) {
         if (!p.luminanceNits)
             add("/daylight/sky", "sky model \"uniform\" needs \"luminance_nits\"");
         else if (!(*p.luminanceNits >= 0) || !std::isfinite(*p.luminanceNits))
             add("/daylight/sky/luminance_nits", "luminance_nits " + num(*p.luminanceNits) + " must be >= 0");
+        else if (*p.luminanceNits > limits::kMaxLuminanceNits)
+            add("/daylight/sky/luminance_nits",
+                "luminance_nits " + num(*p.luminanceNits) + " exceeds the limit of " + num(limits::kMaxLuminanceNits));
     }
     if (p.model == SkyModelType::CieGeneral && (p.cieSkyType < 1 || p.cieSkyType > 15))
         add("/daylight/sky/type", "type " + std::to_string(p.cieSkyType) + " outside [1, 15]");
@@ -96,6 +102,9 @@ std::vector<Diagnostic> validateDaylight(const DaylightParams& p, const Site& si
         if (s.normalIlluminanceLx && (!(*s.normalIlluminanceLx >= 0) || !std::isfinite(*s.normalIlluminanceLx)))
             add("/daylight/sun/normal_illuminance_lx",
                 "normal_illuminance_lx " + num(*s.normalIlluminanceLx) + " must be >= 0");
+        else if (s.normalIlluminanceLx && *s.normalIlluminanceLx > limits::kMaxIlluminanceLx)
+            add("/daylight/sun/normal_illuminance_lx", "normal_illuminance_lx " + num(*s.normalIlluminanceLx) +
+                                                           " exceeds the limit of " + num(limits::kMaxIlluminanceLx));
         if (p.from || p.to) add("/daylight/sun", "only one of \"sun\" override and \"from\"/\"to\"");
     }
     if (!needsSunPosition(p.model) && p.sunEnabled() && !(p.sunOverride && p.sunOverride->normalIlluminanceLx))

@@ -7,6 +7,8 @@
 #include <optional>
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 #include <luxplan/json/fields.h>
 
 namespace luxplan::json {
