@@ -284,10 +284,10 @@ std::optional<Vec3> Fields::color(const char* key, bool required) const {
 std::optional<Vec3> Fields::direction(const char* key, bool required) const {
     auto v = vec3(key, required);
     if (!v) return std::nullopt;
-    // Scaled first: the length of (1e300, 1e300, 0) would overflow to inf and the
-    // direction normalize to zero.
+    // Scaled first where its length could overflow: that of (1e300, 1e300, 0) is inf,
+    // and the direction would normalize to zero. (Only there: results stay bit-identical.)
     double largest = std::max({std::abs(v->x), std::abs(v->y), std::abs(v->z)});
-    if (largest > 1) *v = *v * (1 / largest);
+    if (largest > 1e150) *v = *v * (1 / largest);
     if (length(*v) < 1e-12) {
         error(key, "direction must not be the zero vector");
         return std::nullopt;
