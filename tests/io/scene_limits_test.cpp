@@ -203,6 +203,10 @@ TEST(SceneLimits, SamplerPoints) {
     s["samplers"].push_back({{"name", "v"}, {"type", "volume"}, {"center", {3, 2, 1}},
                              {"axes", {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}}, {"points", 1000000}, {"target", {0, 100}}});
     EXPECT_EQ(onlyProblem(s), "/samplers/1/points: 1000000 points exceeds the limit of 65536");
+    s = smallScene();
+    s["samplers"].push_back({{"name", "d"}, {"type", "directional"}, {"origin", {3, 1, 1.2}}, {"direction", {0, 1, 0}},
+                             {"strata", 256}, {"target", {0, 100}}});
+    EXPECT_EQ(onlyProblem(s), "/samplers/1/strata: strata 256 (65536 strata) exceeds the limit of 16");
 }
 
 TEST(SceneLimits, OnlyRegularFilesOfBoundedSize) {

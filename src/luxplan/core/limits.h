@@ -59,6 +59,9 @@ inline constexpr std::int64_t kMaxPhotometryValues = 10'000'000;
 // Measurement points (or strata) of one sampler: a planar grid's nx * ny, a volume's
 // points, a directional sampler's strata^2.
 inline constexpr std::int64_t kMaxSamplerPoints = 65536;
+// A directional sampler's strata per side: each stratum's paths reach every other
+// stratum, so its estimates grow as strata^4 (16: 79 MB in all; 32: 600 MB).
+inline constexpr int kMaxDirectionalStrata = 16;
 
 // ---- daylight ----
 // Instants from..to every step_minutes (counted in floating point before any
