@@ -110,7 +110,7 @@ void registerMeasureCommand(CLI::App& app, int& threads) {
                     "Random numbers of the paths' first vertices: sobol (scrambled low-discrepancy, default) or random (PCG)")
         ->check(CLI::IsMember({"sobol", "random"}));
     cmd->add_flag("--flat", args->flat, "Measure in the flattened scene (read the layout_flat.json of optimize --flat)");
-    cmd->callback([args] { runMeasure(*args); });
+    cmd->callback([args] { namingScene(args->scene, [&] { runMeasure(*args); }); });
 }
 
 }  // namespace luxplan::cli

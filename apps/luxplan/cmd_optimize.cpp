@@ -184,7 +184,9 @@ void registerOptimizeCommand(CLI::App& app, int& threads) {
     cmd->add_option("--spp", args->spp, "Samples per pixel of render.png (default 16)")->check(CLI::PositiveNumber);
     cmd->callback([args] {
         // 130 = 128 + SIGINT, the shell's convention for a run stopped by Ctrl-C.
-        if (runOptimize(*args)) throw CLI::RuntimeError(130);
+        namingScene(args->scene, [&] {
+            if (runOptimize(*args)) throw CLI::RuntimeError(130);
+        });
     });
 }
 

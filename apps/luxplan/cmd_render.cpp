@@ -90,7 +90,7 @@ void registerRenderCommand(CLI::App& app, int& threads) {
     auto* cmd = app.add_subcommand("render", "Render a layout: render.png, plan.png and scene.glb");
     addPictureOptions(cmd, *args, threads);
     cmd->add_option("-o,--out", args->out, "Output folder")->required();
-    cmd->callback([args] { runPictures(*args, false); });
+    cmd->callback([args] { namingScene(args->scene, [&] { runPictures(*args, false); }); });
 }
 
 void registerReportCommand(CLI::App& app, int& threads) {
@@ -98,7 +98,7 @@ void registerReportCommand(CLI::App& app, int& threads) {
     auto* cmd = app.add_subcommand("report", "Measure a layout and write every picture, scene.glb and report.html");
     addPictureOptions(cmd, *args, threads);
     cmd->add_option("-o,--out", args->out, "Output folder")->required();
-    cmd->callback([args] { runPictures(*args, true); });
+    cmd->callback([args] { namingScene(args->scene, [&] { runPictures(*args, true); }); });
 }
 
 }  // namespace luxplan::cli

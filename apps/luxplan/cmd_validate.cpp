@@ -99,8 +99,10 @@ void registerValidateCommand(CLI::App& app) {
     cmd->add_option("scene", *scene, "Scene JSON file")->required();
     cmd->add_option("--layout", *layout, "Also check a layout.json against the scene");
     cmd->callback([scene, layout] {
-        Scene s = io::loadScene(*scene);
-        if (!layout->empty()) io::readLayout(*layout, s);
+        namingScene(*scene, [&] {
+            Scene s = io::loadScene(*scene);
+            if (!layout->empty()) io::readLayout(*layout, s);
+        });
         std::cout << *scene << ": valid\n";
     });
 }
@@ -109,7 +111,7 @@ void registerInfoCommand(CLI::App& app) {
     auto* cmd = app.add_subcommand("info", "Validate a scene and print a summary of it");
     auto scene = std::make_shared<std::string>();
     cmd->add_option("scene", *scene, "Scene JSON file")->required();
-    cmd->callback([scene] { printSummary(io::loadScene(*scene), std::cout); });
+    cmd->callback([scene] { namingScene(*scene, [&] { printSummary(io::loadScene(*scene), std::cout); }); });
 }
 
 }  // namespace luxplan::cli

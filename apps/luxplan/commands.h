@@ -5,7 +5,28 @@
 
 #include <CLI/CLI.hpp>
 
+#include <luxplan/core/error.h>
+
 namespace luxplan::cli {
+
+// Runs a command on the scene file `scene`: an exception that names no file (a
+// library's, or a problem found after loading) is reported as SCENE: /: message, so
+// that every refusal names its file. Scene errors, I/O errors (which name their file)
+// and CLI11's exits pass unchanged.
+template <class Fn>
+void namingScene(const std::string& scene, Fn&& fn) {
+    try {
+        fn();
+    } catch (const SceneError&) {
+        throw;
+    } catch (const IoError&) {
+        throw;
+    } catch (const CLI::Error&) {
+        throw;
+    } catch (const std::exception& e) {
+        throw SceneError({{scene, "", e.what()}});
+    }
+}
 
 void registerValidateCommand(CLI::App& app);
 void registerInfoCommand(CLI::App& app);

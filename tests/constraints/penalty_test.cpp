@@ -1,7 +1,10 @@
 // The penalty function of Eq. 2 at its boundaries, and the lighting term (Eq. 3).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <stdexcept>
+
+#include <luxplan/core/error.h>
 
 #include <luxplan/constraints/penalty.h>
 
@@ -55,6 +58,30 @@ TEST(LightingCost, WeightedMeanOfLinearPenalties) {
     EXPECT_EQ(lightingCost(scene, {400, 50}), 0);
     EXPECT_THROW(lightingCost(scene, {1}), std::invalid_argument);
     EXPECT_EQ(lightingCost(Scene(), {}), 0);
+}
+
+TEST(Penalty, NonFiniteValuesAreNeverOnTarget) {
+    // A NaN once scored 0: every comparison with it is false.
+    EXPECT_EQ(penalty(std::nan(""), 1, 2, 0.5, 1), kInf);
+    EXPECT_EQ(penalty(kInf, 1, kInf, 0.5, 1), kInf);
+    EXPECT_EQ(penalty(-kInf, -kInf, 1, 0.5, 2), kInf);
+}
+
+TEST(LightingPenalty, NonFiniteValueIsAnErrorNamingTheSampler) {
+    LightSamplerSpec s;
+    s.name = "desk";
+    s.jsonPath = "/samplers/2";
+    s.file = "office.json";
+    s.targetMin = 300, s.targetMax = 500, s.tolerance = 100;
+    try {
+        lightingPenalty(s, std::nan(""));
+        ADD_FAILURE() << "a NaN was scored";
+    } catch (const SceneError& e) {
+        EXPECT_EQ(std::string(e.what()),
+                  "office.json: /samplers/2: sampler \"desk\" measured nan, not a finite number: it cannot be scored");
+    }
+    EXPECT_THROW(lightingPenalty(s, kInf), SceneError);
+    EXPECT_EQ(lightingPenalty(s, 400), 0);
 }
 
 }  // namespace

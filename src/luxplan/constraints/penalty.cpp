@@ -1,12 +1,20 @@
 // The lighting term of Eq. 3 from Eq. 2 penalties.
 #include <luxplan/constraints/penalty.h>
 
+#include <cmath>
 #include <stdexcept>
+
+#include <luxplan/core/error.h>
 #include <string>
 
 namespace luxplan {
 
 double lightingPenalty(const LightSamplerSpec& sampler, double value) {
+    // A NaN would otherwise score as on target (every comparison with it is false).
+    if (!std::isfinite(value))
+        throw SceneError({{sampler.file.empty() ? std::string("scene") : sampler.file, sampler.jsonPath,
+                           "sampler \"" + sampler.name + "\" measured " + (std::isnan(value) ? "nan" : "an infinite value") +
+                               ", not a finite number: it cannot be scored"}});
     return penalty(value, sampler.targetMin, sampler.targetMax, sampler.tolerance, kLightingStiffness);
 }
 

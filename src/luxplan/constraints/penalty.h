@@ -19,6 +19,7 @@ inline constexpr double kLightingStiffness = 1.0;
 inline bool rejects(double geometricPenalty) { return geometricPenalty > 1.0; }
 
 // Eq. 3 for one sampler: P(value, target min, target max, tolerance, 1). Never rejects.
+// A non-finite value throws SceneError naming the sampler (FILE: /json/path).
 double lightingPenalty(const LightSamplerSpec& sampler, double value);
 
 // Eq. 3: L = sum_k w_k P_k / sum_k w_k, i.e. the paper's (1/N_S) sum_k w_k P_k with

@@ -39,6 +39,15 @@ class IoError : public std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
+// A problem at a place inside a file that is not a scene (a mesh, a photometric
+// file): what() is "FILE:LINE: message" (a text format), "FILE: /json/path: message"
+// (a glTF) or "FILE: message" (the file as a whole).
+class FileError : public IoError {
+public:
+    FileError(const std::string& file, const std::string& where, const std::string& message)
+        : IoError(file + (where.empty() ? "" : where[0] == '/' ? ": " + where : ":" + where) + ": " + message) {}
+};
+
 // Embree reported an error through its device callback.
 class EmbreeError : public std::runtime_error {
     using std::runtime_error::runtime_error;

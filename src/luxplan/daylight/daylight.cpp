@@ -36,10 +36,12 @@ bool usesTurbidity(const DaylightParams& p) {
 // Does the sky's shape depend on where the sun is?
 bool needsSunPosition(SkyModelType m) { return m == SkyModelType::Preetham || m == SkyModelType::CieGeneral; }
 
-// Number of instants from..to every step (to included when on the grid).
-long long stepCount(const DateTime& from, const DateTime& to, double stepMinutes) {
+// Number of instants from..to every step (to included when on the grid), in floating
+// point: a tiny step gives a count beyond any integer, compared with the limit before
+// it is converted or allocated.
+double stepCount(const DateTime& from, const DateTime& to, double stepMinutes) {
     const double spanMinutes = (to.julianDayUT() - from.julianDayUT()) * 1440.0;
-    return (long long)std::floor(spanMinutes / stepMinutes + 1e-9) + 1;
+    return std::floor(spanMinutes / stepMinutes + 1e-9) + 1;
 }
 
 }  // namespace
@@ -77,12 +79,18 @@ std::vector<Diagnostic> validateDaylight(const DaylightParams& p, const Site& si
         else if (!(*p.horizontalIlluminanceLx > 0) || !std::isfinite(*p.horizontalIlluminanceLx))
             add("/daylight/sky/horizontal_illuminance_lx",
                 "horizontal_illuminance_lx " + num(*p.horizontalIlluminanceLx) + " must be > 0");
+        else if (*p.horizontalIlluminanceLx > limits::kMaxIlluminanceLx)
+            add("/daylight/sky/horizontal_illuminance_lx", "horizontal_illuminance_lx " + num(*p.horizontalIlluminanceLx) +
+                                                               " exceeds the limit of " + num(limits::kMaxIlluminanceLx));
     }
     if (p.model == SkyModelType::Uniform) {
         if (!p.luminanceNits)
             add("/daylight/sky", "sky model \"uniform\" needs \"luminance_nits\"");
         else if (!(*p.luminanceNits >= 0) || !std::isfinite(*p.luminanceNits))
             add("/daylight/sky/luminance_nits", "luminance_nits " + num(*p.luminanceNits) + " must be >= 0");
+        else if (*p.luminanceNits > limits::kMaxLuminanceNits)
+            add("/daylight/sky/luminance_nits",
+                "luminance_nits " + num(*p.luminanceNits) + " exceeds the limit of " + num(limits::kMaxLuminanceNits));
     }
     if (p.model == SkyModelType::CieGeneral && (p.cieSkyType < 1 || p.cieSkyType > 15))
         add("/daylight/sky/type", "type " + std::to_string(p.cieSkyType) + " outside [1, 15]");
@@ -94,6 +102,9 @@ std::vector<Diagnostic> validateDaylight(const DaylightParams& p, const Site& si
         if (s.normalIlluminanceLx && (!(*s.normalIlluminanceLx >= 0) || !std::isfinite(*s.normalIlluminanceLx)))
             add("/daylight/sun/normal_illuminance_lx",
                 "normal_illuminance_lx " + num(*s.normalIlluminanceLx) + " must be >= 0");
+        else if (s.normalIlluminanceLx && *s.normalIlluminanceLx > limits::kMaxIlluminanceLx)
+            add("/daylight/sun/normal_illuminance_lx", "normal_illuminance_lx " + num(*s.normalIlluminanceLx) +
+                                                           " exceeds the limit of " + num(limits::kMaxIlluminanceLx));
         if (p.from || p.to) add("/daylight/sun", "only one of \"sun\" override and \"from\"/\"to\"");
     }
     if (!needsSunPosition(p.model) && p.sunEnabled() && !(p.sunOverride && p.sunOverride->normalIlluminanceLx))
@@ -109,10 +120,10 @@ std::vector<Diagnostic> validateDaylight(const DaylightParams& p, const Site& si
     else if (p.from && p.to) {
         if (p.to->julianDayUT() < p.from->julianDayUT())
             add("/daylight/to", "\"to\" " + p.to->str() + " is before \"from\" " + p.from->str());
-        else if (stepCount(*p.from, *p.to, p.stepMinutes) > kMaxDaylightSteps)
+        else if (!(stepCount(*p.from, *p.to, p.stepMinutes) <= kMaxDaylightSteps))
             add("/daylight/step_minutes", "from..to every " + num(p.stepMinutes) + " minutes is " +
-                                              std::to_string(stepCount(*p.from, *p.to, p.stepMinutes)) +
-                                              " time steps, more than " + std::to_string(kMaxDaylightSteps));
+                                              num(stepCount(*p.from, *p.to, p.stepMinutes)) +
+                                              " time steps, which exceeds the limit of " + std::to_string(kMaxDaylightSteps));
     }
     range("/daylight/ground_reflectance", "ground_reflectance", p.groundReflectance, 0, 1);
     if (!(p.pressureMbar > 0) || !std::isfinite(p.pressureMbar))
@@ -146,7 +157,7 @@ std::vector<DaylightInstant> daylightInstants(const DaylightParams& p, const Sit
         observer.longitudeDeg = site.longitudeDeg;
         observer.pressureMbar = p.pressureMbar;
         observer.temperatureC = p.temperatureC;
-        const long long n = p.to ? stepCount(*p.from, *p.to, p.stepMinutes) : 1;
+        const long long n = p.to ? (long long)stepCount(*p.from, *p.to, p.stepMinutes) : 1;  // validated above
         out.reserve(size_t(n));
         for (long long k = 0; k < n; ++k) {
             DaylightInstant i;

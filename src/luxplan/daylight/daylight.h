@@ -10,6 +10,7 @@
 #include <vector>
 
 #include <luxplan/core/error.h>
+#include <luxplan/core/limits.h>
 #include <luxplan/daylight/daylight_params.h>
 #include <luxplan/daylight/environment.h>
 #include <luxplan/daylight/solar_position.h>
@@ -30,7 +31,8 @@ std::vector<Diagnostic> validateDaylight(const DaylightParams& params, const Sit
 
 // Upper bound on the number of time steps (a year hourly is 8760; baking costs ~16 ms per
 // daytime step on one core at 512 x 256).
-inline constexpr int kMaxDaylightSteps = 10000;
+// The limit is core/limits.h's kMaxTimeSteps.
+inline constexpr int kMaxDaylightSteps = int(limits::kMaxTimeSteps);
 
 // One time step of the average (or the fixed sun): the sun's position and direct normal
 // illuminance (0 when it is below the horizon or disabled).

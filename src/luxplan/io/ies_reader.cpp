@@ -127,6 +127,9 @@ PhotometricTable readIes(const std::string& text, const std::string& name) {
     int nGamma = in.count("the number of vertical angles");
     if (nGamma < 2) fail(name, in.lastReadLine(), "needs at least two vertical angles, got 1");
     int nC = in.count("the number of horizontal angles");
+    if (int64_t(nC) * nGamma > limits::kMaxPhotometryValues)
+        fail(name, in.lastReadLine(), std::to_string(int64_t(nC) * nGamma) + " candela values exceed the limit of " +
+                                          std::to_string(limits::kMaxPhotometryValues));
     double type = in.number("the photometric type");
     if (type != 1) {
         std::string which = type == 2 ? " (type B)" : type == 3 ? " (type A)" : "";
@@ -164,6 +167,8 @@ PhotometricTable readIes(const std::string& text, const std::string& name) {
         for (int g = 0; g < nGamma; ++g) {
             double v = in.number("a candela value (" + std::to_string(nC * nGamma) + " in all)");
             if (v < 0) fail(name, in.lastReadLine(), "negative candela value " + formatNumber(v));
+            if (!std::isfinite(v * factor))
+                fail(name, in.lastReadLine(), "candela value " + formatNumber(v) + " times the multipliers is not finite");
             t.candela.push_back(v * factor);
         }
     return t;

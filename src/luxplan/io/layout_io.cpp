@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include <luxplan/json/fields.h>
+#include <luxplan/json/parse.h>
 
 namespace luxplan::io {
 
@@ -30,23 +31,10 @@ void writeLayout(const std::filesystem::path& file, const Scene& scene, const La
     if (!out) throw IoError("cannot write " + file.string());
 }
 
-Layout readLayout(const std::filesystem::path& file, const Scene& scene) {
-    DiagnosticSink sink;
-    sink.file = file.string();
-    std::ifstream in(file);
-    if (!in) {
-        sink.error("", "cannot open the file");
-        throw SceneError(sink.diagnostics);
-    }
-    std::stringstream text;
-    text << in.rdbuf();
-    Json root;
-    try {
-        root = Json::parse(text.str());
-    } catch (const Json::parse_error& e) {
-        sink.error("", std::string("malformed JSON: ") + e.what());
-        throw SceneError(sink.diagnostics);
-    }
+namespace {
+
+// The entities of a parsed layout; problems go to `sink`.
+Layout readEntities(DiagnosticSink& sink, const Json& root, const Scene& scene) {
     Layout layout = initialLayout(scene);
     Fields top(sink, root, "", "a layout object");
     if (top.valid() && !top.has("entities")) top.missing("entities");
@@ -71,7 +59,8 @@ Layout readLayout(const std::filesystem::path& file, const Scene& scene) {
                 Placement& p = layout.placements[index];
                 if (f.has("position")) {
                     const Json& pos = f.get("position");
-                    auto n = readNumbers(sink, pos, f.at("position"), pos.is_array() && pos.size() == 2 ? 2 : 3);
+                    auto n = readNumbers(sink, pos, f.at("position"), pos.is_array() && pos.size() == 2 ? 2 : 3,
+                                         coordinateRange());
                     if (n) p.position = Vec3((*n)[0], (*n)[1], n->size() == 3 ? (*n)[2] : e.position.z);
                 }
                 p.rotationDeg = f.number("rotation", p.rotationDeg);
@@ -89,6 +78,26 @@ Layout readLayout(const std::filesystem::path& file, const Scene& scene) {
             }
     }
     top.finish();
+    return layout;
+}
+
+}  // namespace
+
+Layout readLayout(const std::filesystem::path& file, const Scene& scene) {
+    DiagnosticSink sink;
+    sink.file = file.string();
+    auto text = readInputFile(sink, file, limits::kMaxJsonFileBytes);
+    if (!text) throw SceneError(sink.diagnostics);
+    auto parsed = parseJson(*text, sink);
+    if (!parsed) throw SceneError(sink.diagnostics);
+    const Json& root = *parsed;
+    Layout layout;
+    try {
+        layout = readEntities(sink, root, scene);
+    } catch (const std::exception& e) {
+        // A library's exception still names the file.
+        sink.error("", std::string("cannot read the layout: ") + e.what());
+    }
     if (sink.count()) throw SceneError(sink.diagnostics);
     return layout;
 }

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include <luxplan/core/error.h>
+#include <luxplan/core/limits.h>
 
 namespace luxplan::io {
 
@@ -16,7 +17,13 @@ std::shared_ptr<const IntensityDistribution> loadPhotometry(const std::filesyste
     if (ext != ".ies" && ext != ".ldt")
         throw IoError(name + ": unsupported photometry format \"" + ext + "\" (use .ies or .ldt)");
     std::error_code ec;
-    if (!std::filesystem::is_regular_file(file, ec)) throw IoError(name + ": no such file");
+    if (!std::filesystem::exists(file, ec)) throw IoError(name + ": no such file");
+    // Never opened otherwise: a FIFO would block, a device such as /dev/zero never end.
+    if (!std::filesystem::is_regular_file(file, ec))
+        throw IoError(name + ": not a regular file (a folder, FIFO or device cannot be read)");
+    if (auto size = std::filesystem::file_size(file, ec); !ec && size > limits::kMaxPhotometryFileBytes)
+        throw IoError(name + ": file of " + std::to_string(size) + " bytes exceeds the limit of " +
+                      std::to_string(limits::kMaxPhotometryFileBytes) + " bytes");
     std::ifstream in(file, std::ios::binary);
     if (!in) throw IoError(name + ": cannot open the file");
     std::stringstream buffer;

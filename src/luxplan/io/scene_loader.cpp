@@ -16,6 +16,8 @@
 #include <luxplan/emitters/emitter_shape.h>
 #include <luxplan/emitters/photometric_emitter.h>
 #include <luxplan/json/fields.h>
+#include <luxplan/json/parse.h>
+#include <luxplan/core/limits.h>
 #include <luxplan/lightsamplers/sampler_type.h>
 #include <luxplan/io/mesh_io.h>
 #include <luxplan/io/photometry_io.h>
@@ -33,80 +35,12 @@ using json::formatNumber;
 using json::pointer;
 using json::typeName;
 
-// ---- JSON parsing with duplicate-key detection and line/column for syntax errors ----
-
-struct ParseState {
-    struct Frame {
-        bool isArray = false;
-        size_t index = 0;
-        std::string key;
-        std::set<std::string> keys;
-    };
-    std::vector<Frame> stack;
-    std::vector<std::string> duplicates;  // JSON Pointers of repeated keys
-
-    std::string pathOfTop() const {
-        std::string p;
-        for (size_t i = 0; i + 1 < stack.size(); ++i)
-            p = stack[i].isArray ? pointer(p, stack[i].index) : pointer(p, stack[i].key);
-        return p;
-    }
-    void elementDone() {
-        if (!stack.empty() && stack.back().isArray) ++stack.back().index;
-    }
-};
-
-std::pair<size_t, size_t> lineColumn(const std::string& text, size_t byte) {
-    size_t line = 1, col = 1;
-    for (size_t i = 0; i < byte && i < text.size(); ++i) {
-        if (text[i] == '\n') ++line, col = 1;
-        else ++col;
-    }
-    return {line, col};
-}
-
-std::optional<Json> parseJson(const std::string& text, DiagnosticSink& sink) {
-    ParseState state;
-    auto callback = [&](int, Json::parse_event_t event, Json& parsed) {
-        switch (event) {
-            case Json::parse_event_t::object_start: state.stack.emplace_back(); break;
-            case Json::parse_event_t::array_start:
-                state.stack.emplace_back();
-                state.stack.back().isArray = true;
-                break;
-            case Json::parse_event_t::key: {
-                auto& top = state.stack.back();
-                top.key = parsed.get<std::string>();
-                if (!top.keys.insert(top.key).second) state.duplicates.push_back(pointer(state.pathOfTop(), top.key));
-                break;
-            }
-            case Json::parse_event_t::object_end:
-            case Json::parse_event_t::array_end:
-                state.stack.pop_back();
-                state.elementDone();
-                break;
-            case Json::parse_event_t::value: state.elementDone(); break;
-        }
-        return true;
-    };
-    try {
-        Json root = Json::parse(text, callback, /*allow_exceptions=*/true, /*ignore_comments=*/false);
-        for (const auto& d : state.duplicates) sink.error(d, "duplicate key (JSON objects need unique keys)");
-        return root;
-    } catch (const Json::parse_error& e) {
-        auto [line, col] = lineColumn(text, e.byte > 0 ? e.byte - 1 : 0);
-        std::string what = e.what();
-        // nlohmann's message starts with "[json.exception.parse_error.101] parse error at line ..., column ...: ".
-        auto colon = what.find(": ", what.find("parse error"));
-        std::string detail = colon == std::string::npos ? what : what.substr(colon + 2);
-        sink.error("", "malformed JSON at line " + std::to_string(line) + ", column " + std::to_string(col) + ": " +
-                           detail);
-        return std::nullopt;
-    }
-}
-
 const Range kUnit = Range::closed(0, 1);
 const Range kNonNegative = Range::atLeast(0);
+const Range kCoordinate = json::coordinateRange();
+const Range kLength = json::lengthRange();
+const Range kOffset = json::offsetRange();
+const Range kScale = Range::positive().limitedTo(limits::kMaxScale);
 
 // "a rect emitter", "an alignment constraint".
 std::string article(const std::string& noun) {
@@ -130,18 +64,21 @@ public:
     }
 
     Scene load() {
-        std::ifstream in(scene_.file, std::ios::binary);
-        if (!in) {
-            sink_.error("", "cannot open the file");
-            throw SceneError(sink_.diagnostics);
-        }
-        std::stringstream buffer;
-        buffer << in.rdbuf();
-        auto root = parseJson(buffer.str(), sink_);
+        auto text = json::readInputFile(sink_, scene_.file, limits::kMaxJsonFileBytes);
+        if (!text) throw SceneError(sink_.diagnostics);
+        auto root = json::parseJson(*text, sink_);
         if (!root) throw SceneError(sink_.diagnostics);
-        readRoot(*root);
+        try {
+            readRoot(*root);
+            if (!sink_.count()) checkScene();
+            if (!sink_.count()) buildVoxels();
+        } catch (const SceneError&) {
+            throw;
+        } catch (const std::exception& e) {
+            // A library's exception (or one of ours) still names the file.
+            sink_.error("", std::string("cannot load the scene: ") + e.what());
+        }
         if (sink_.count()) throw SceneError(sink_.diagnostics);
-        buildVoxels();
         return std::move(scene_);
     }
 
@@ -192,7 +129,7 @@ private:
         Fields o(sink_, j, path);
         OptimizerSettings& s = scene_.optimizer;
         s.iterations = o.integer("iterations", Range::atLeast(0)).value_or(10000);
-        s.seed = uint64_t(o.integer("seed", Range::atLeast(0)).value_or(1));
+        s.seed = o.unsignedInteger("seed").value_or(1);
         auto paths = o.integer("paths_per_point", Range::atLeast(1));
         s.pathsPerPoint = paths.value_or(1000);
         s.searchPathsPerPoint = paths.value_or(64);
@@ -373,13 +310,14 @@ private:
         Vec3 scale(1, 1, 1);
         if (f.has("scale")) {
             if (f.get("scale").is_number()) {
-                double s = f.number("scale", 1.0, Range::positive());
+                double s = f.number("scale", 1.0, kScale);
                 scale = Vec3(s, s, s);
             } else {
-                scale = f.vec3("scale", false, Range::positive()).value_or(scale);
+                scale = f.vec3("scale", false, kScale).value_or(scale);
             }
         }
-        Transform t = Transform::placement(f.vec3("translate").value_or(Vec3()), f.number("rotate_deg", 0.0)) *
+        Transform t = Transform::placement(f.vec3("translate", false, kCoordinate).value_or(Vec3()),
+                                           f.number("rotate_deg", 0.0)) *
                       Transform::scale(scale);
         f.finish();
         return t;
@@ -391,14 +329,29 @@ private:
         std::filesystem::path file = std::filesystem::path(*rel).is_absolute() ? std::filesystem::path(*rel) : dir_ / *rel;
         try {
             return loadMeshFile(file, material);
+        } catch (const FileError& e) {
+            f.error(key, std::string("cannot read mesh: ") + e.what());
         } catch (const IoError& e) {
             f.error(key, "cannot read mesh \"" + file.string() + "\": " + e.what());
         }
         return {};
     }
 
+    // A mesh after its transform: every vertex within the coordinate limit (a
+    // vertex at 1e9 m, or a scale of 1e4 on one at 1e5, would reach Embree).
+    void checkMeshPlace(const Fields& f, const char* key, const TriangleMesh& mesh) {
+        for (const Vec3& p : mesh.positions)
+            if (!(std::abs(p.x) <= limits::kMaxCoordinate && std::abs(p.y) <= limits::kMaxCoordinate &&
+                  std::abs(p.z) <= limits::kMaxCoordinate)) {
+                f.error(key, "mesh vertex (" + formatNumber(p.x) + ", " + formatNumber(p.y) + ", " + formatNumber(p.z) +
+                                 ") after its transform lies outside [-" + formatNumber(limits::kMaxCoordinate) + ", " +
+                                 formatNumber(limits::kMaxCoordinate) + "] m");
+                return;
+            }
+    }
+
     std::optional<Bounds3> readMinMax(const Fields& f, const char* what) {
-        auto lo = f.vec3("min", true), hi = f.vec3("max", true);
+        auto lo = f.vec3("min", true, kCoordinate), hi = f.vec3("max", true, kCoordinate);
         f.finish();
         if (!lo || !hi) return std::nullopt;
         for (int a = 0; a < 3; ++a)
@@ -426,6 +379,7 @@ private:
                 uint32_t m = materialRef(f, "material", !item.invisible).value_or(0);
                 Transform t = readTransform(f, "transform");
                 item.mesh.append(readMeshFile(f, "mesh", m), t);
+                checkMeshPlace(f, "mesh", item.mesh);
                 break;
             }
         }
@@ -489,13 +443,13 @@ private:
     // The keys of a wall opening (along the wall) or a ceiling one (a rectangle).
     static void readOpeningPlace(const Fields& f, bool ceiling, Opening& o) {
         if (ceiling) {
-            o.center = f.vec2("center", true).value_or(Vec2());
-            o.size = f.vec2("size", true, Range::positive("m")).value_or(Vec2(1, 1));
+            o.center = f.vec2("center", true, kCoordinate).value_or(Vec2());
+            o.size = f.vec2("size", true, kLength).value_or(Vec2(1, 1));
         } else {
-            o.offset = f.number("offset", kNonNegative, true).value_or(0);
-            o.width = f.number("width", Range::positive("m"), true).value_or(1);
-            o.sill = f.number("sill", 0.0, kNonNegative);
-            o.height = f.number("height", Range::positive("m"), true).value_or(1);
+            o.offset = f.number("offset", kOffset, true).value_or(0);
+            o.width = f.number("width", kLength, true).value_or(1);
+            o.sill = f.number("sill", 0.0, kOffset);
+            o.height = f.number("height", kLength, true).value_or(1);
         }
     }
 
@@ -562,7 +516,7 @@ private:
                                  listNames(emitterShapeNames()) + ")");
         if (entry) e.shape = entry->read(f);
         auto photometry = f.string("photometry");
-        auto flux = f.number("flux_lm", kNonNegative, /*required=*/!photometry);
+        auto flux = f.number("flux_lm", kNonNegative.limitedTo(limits::kMaxFluxLm), /*required=*/!photometry);
         e.fluxLm = flux.value_or(0);
         e.cctK = f.number("cct_k", 4000.0, Range::closed(1000, 40000, "K"));
         auto c0 = f.direction("c0");
@@ -609,7 +563,7 @@ private:
         Fields f(sink_, j, path);
         if (!f.valid()) return std::nullopt;
         Region r;
-        auto lo = f.vec2("min", true), hi = f.vec2("max", true);
+        auto lo = f.vec2("min", true, kCoordinate), hi = f.vec2("max", true, kCoordinate);
         if (lo && hi) {
             r.lo = *lo, r.hi = *hi;
             for (int a = 0; a < 2; ++a)
@@ -660,7 +614,7 @@ private:
             e.path = parent >= 0 ? scene_.entities[parent].path + "." + e.name : e.name;
             if (f.has("position")) {
                 const Json& p = f.get("position");
-                auto n = json::readNumbers(sink_, p, f.at("position"), p.is_array() && p.size() == 3 ? 3 : 2);
+                auto n = json::readNumbers(sink_, p, f.at("position"), p.is_array() && p.size() == 3 ? 3 : 2, kCoordinate);
                 if (n) e.position = Vec3((*n)[0], (*n)[1], n->size() == 3 ? (*n)[2] : 0.0);
             }
             e.rotationDeg = f.number("rotation", 0.0);
@@ -699,8 +653,17 @@ private:
             for (size_t i = 0; i < emitters->size(); ++i) readEmitter((*emitters)[i], pointer(f.at("emitters"), i), index);
         if (auto* samplers = f.array("samplers"))
             for (size_t i = 0; i < samplers->size(); ++i) readSampler((*samplers)[i], pointer(f.at("samplers"), i), index);
-        if (auto* children = f.array("children"))
-            for (size_t i = 0; i < children->size(); ++i) readEntity((*children)[i], pointer(f.at("children"), i), index);
+        if (auto* children = f.array("children")) {
+            // Checked before recursing: a deep nesting is refused at its first level too
+            // many, without the stack or the paths of every level below.
+            int depth = 1;
+            for (int p = parent; p >= 0; p = scene_.entities[p].parent) ++depth;
+            if (depth + 1 > limits::kMaxEntityDepth && !children->empty())
+                f.error("children", "entities nested " + std::to_string(depth + 1) + " deep exceed the limit of " +
+                                        std::to_string(limits::kMaxEntityDepth));
+            else
+                for (size_t i = 0; i < children->size(); ++i) readEntity((*children)[i], pointer(f.at("children"), i), index);
+        }
         f.finish();
     }
 
@@ -714,8 +677,8 @@ private:
                 info.material = materialRef(f, "material", true).value_or(0);
                 if (!f.has("box")) return;
                 Fields b(sink_, f.get("box"), f.at("box"));
-                auto size = b.vec3("size", true, Range::positive("m"));
-                auto center = b.vec3("center");
+                auto size = b.vec3("size", true, kLength);
+                auto center = b.vec3("center", false, kCoordinate);
                 b.finish();
                 if (!size) return;
                 Vec3 c = center.value_or(Vec3(0, 0, size->z / 2));
@@ -727,6 +690,7 @@ private:
                 info.material = materialRef(f, "material", true).value_or(0);
                 Transform t = readTransform(f, "transform");
                 mesh.append(readMeshFile(f, "mesh", info.material), t);
+                checkMeshPlace(f, "mesh", mesh);
                 return;
             }
             case PartKind::Preset: readPreset(f, mesh, info); return;
@@ -744,8 +708,8 @@ private:
         std::map<std::string, uint32_t> slots;
         bool hasSlots = f.has("materials");
         auto body = materialRef(f, "material", preset && !hasSlots);
-        Vec3 size = f.vec3("size", false, Range::positive("m")).value_or(preset ? preset->defaultSize : Vec3(1, 1, 1));
-        Vec3 center = f.vec3("center").value_or(Vec3(0, 0, size.z / 2));
+        Vec3 size = f.vec3("size", false, kLength).value_or(preset ? preset->defaultSize : Vec3(1, 1, 1));
+        Vec3 center = f.vec3("center", false, kCoordinate).value_or(Vec3(0, 0, size.z / 2));
         if (!preset) {
             if (hasSlots) f.get("materials");  // not checked against an unknown preset's slots
             return;
@@ -802,6 +766,7 @@ private:
         }();
         LightSamplerSpec s;
         s.jsonPath = path;
+        s.file = sink_.file;
         s.entity = entity;
         s.name = f.string("name", true).value_or("");
         auto type = f.string("type", true);
@@ -956,6 +921,16 @@ private:
         for (const auto& e : scene_.emitters) unique("emitter", e.name, e.jsonPath);
         for (const auto& e : scene_.entities) unique("entity", e.path, e.jsonPath);
         for (const auto& s : scene_.samplers) unique("sampler", s.name, s.jsonPath);
+    }
+
+    // What only the whole scene shows: its triangle count.
+    void checkScene() {
+        uint64_t triangles = 0;
+        for (const auto& g : scene_.geometry) triangles += g.mesh.triangleCount();
+        for (const auto& e : scene_.entities) triangles += e.mesh.triangleCount();
+        if (triangles > limits::kMaxSceneTriangles)
+            sink_.error("", "the scene's " + std::to_string(triangles) + " triangles exceed the limit of " +
+                                std::to_string(limits::kMaxSceneTriangles));
     }
 
     void buildVoxels() {

@@ -36,6 +36,12 @@ std::string Range::describe() const {
     return std::string(loOpen ? "(" : "[") + formatNumber(lo) + ", " + formatNumber(hi) + (hiOpen ? ")" : "]") + u;
 }
 
+std::string Range::limitProblem(double v) const {
+    if (withinLimit(v)) return "";
+    std::string u = *unit ? std::string(" ") + unit : "";
+    return "value " + formatNumber(v) + " exceeds the limit of " + (v < 0 ? "-" : "") + formatNumber(limit) + u;
+}
+
 std::string typeName(const Json& v) {
     switch (v.type()) {
         case Json::value_t::null: return "null";
@@ -120,6 +126,10 @@ static bool checkNumber(DiagnosticSink& sink, const Json& v, const std::string& 
         sink.error(path, "value " + formatNumber(d) + " outside " + range.describe());
         return false;
     }
+    if (!range.withinLimit(d)) {
+        sink.error(path, range.limitProblem(d));
+        return false;
+    }
     *out = d;
     return true;
 }
@@ -163,6 +173,29 @@ std::optional<int> Fields::integer(const char* key, Range range, bool required) 
         return std::nullopt;
     }
     return int(d);
+}
+
+std::optional<uint64_t> Fields::unsignedInteger(const char* key, bool required) const {
+    if (!has(key)) {
+        if (required && valid_) missing(key);
+        return std::nullopt;
+    }
+    const Json& v = get(key);
+    if (v.is_number_unsigned()) return v.get<uint64_t>();
+    if (v.is_number_integer()) {
+        error(key, "value " + std::to_string(v.get<int64_t>()) + " outside [0, 18446744073709551615]");
+        return std::nullopt;
+    }
+    // 3.0 is a whole number too, as long as a double holds it exactly (below 2^53).
+    if (v.is_number_float()) {
+        double d = v.get<double>();
+        if (d == std::floor(d) && d >= 0 && d <= 9007199254740992.0) return uint64_t(d);
+        error(key, "expected a whole number in [0, 2^64 - 1], got " + formatNumber(d) +
+                       (d == std::floor(d) && d > 0 ? " (write a number above 2^53 without a fraction or exponent)" : ""));
+        return std::nullopt;
+    }
+    error(key, "expected an integer, got " + typeName(v));
+    return std::nullopt;
 }
 
 std::optional<bool> Fields::boolean(const char* key, bool required) const {
@@ -251,6 +284,10 @@ std::optional<Vec3> Fields::color(const char* key, bool required) const {
 std::optional<Vec3> Fields::direction(const char* key, bool required) const {
     auto v = vec3(key, required);
     if (!v) return std::nullopt;
+    // Scaled first where its length could overflow: that of (1e300, 1e300, 0) is inf,
+    // and the direction would normalize to zero. (Only there: results stay bit-identical.)
+    double largest = std::max({std::abs(v->x), std::abs(v->y), std::abs(v->z)});
+    if (largest > 1e150) *v = *v * (1 / largest);
     if (length(*v) < 1e-12) {
         error(key, "direction must not be the zero vector");
         return std::nullopt;

@@ -14,6 +14,7 @@
 #include <nlohmann/json_fwd.hpp>
 
 #include <luxplan/core/error.h>
+#include <luxplan/core/limits.h>
 #include <luxplan/core/math.h>
 
 namespace luxplan::json {
@@ -37,14 +38,34 @@ struct Range {
     double lo = -kInf, hi = kInf;
     bool loOpen = false, hiOpen = false;
     const char* unit = "";
+    // A bound on the magnitude from core/limits.h, reported apart from the range:
+    // "value 1e+308 exceeds the limit of 100000 m".
+    double limit = kInf;
     static Range atLeast(double lo, const char* unit = "") { return {lo, kInf, false, false, unit}; }
     static Range positive(const char* unit = "") { return {0, kInf, true, false, unit}; }
     static Range closed(double lo, double hi, const char* unit = "") { return {lo, hi, false, false, unit}; }
     bool contains(double v) const {
         return (loOpen ? v > lo : v >= lo) && (hiOpen ? v < hi : v <= hi);
     }
+    bool withinLimit(double v) const { return std::abs(v) <= limit; }
+    Range limitedTo(double l) const {
+        Range r = *this;
+        r.limit = l;
+        return r;
+    }
     std::string describe() const;
+    // "value 1e+308 exceeds the limit of 100000 m" (or "" when within the limit).
+    std::string limitProblem(double v) const;
 };
+
+// The ranges of core/limits.h: every coordinate (positions, centres, corners) and
+// every size (lengths, radii), in metres.
+inline Range coordinateRange() { return Range{-kInf, kInf, false, false, "m"}.limitedTo(limits::kMaxCoordinate); }
+// A signed length (a side vector's component).
+inline Range signedLengthRange() { return Range{-kInf, kInf, false, false, "m"}.limitedTo(limits::kMaxLength); }
+inline Range lengthRange() { return Range::positive("m").limitedTo(limits::kMaxLength); }
+// A non-negative length (an offset along a wall, a sill).
+inline Range offsetRange() { return Range::atLeast(0).limitedTo(limits::kMaxLength); }
 
 // One JSON object being read. Construction checks it is an object; the accessors
 // report wrong types, missing keys and bad ranges, and mark their key as read.
@@ -64,6 +85,9 @@ public:
     std::optional<double> number(const char* key, Range range = {}, bool required = false) const;
     double number(const char* key, double fallback, Range range = {}) const;
     std::optional<int> integer(const char* key, Range range = {}, bool required = false) const;
+    // A whole number in [0, 2^64 - 1] (a seed): read as uint64, never through a double
+    // or an int, so that distinct seeds stay distinct.
+    std::optional<uint64_t> unsignedInteger(const char* key, bool required = false) const;
     std::optional<bool> boolean(const char* key, bool required = false) const;
     std::optional<std::string> string(const char* key, bool required = false) const;
     std::optional<Vec2> vec2(const char* key, bool required = false, Range range = {}) const;

@@ -80,7 +80,7 @@ std::shared_ptr<const SamplerType> cylindricalSampler(Vec3 center) {
 
 std::shared_ptr<const SamplerType> readCylindricalSampler(const json::Fields& f) {
     auto s = std::make_shared<Cylindrical>();
-    s->center = f.vec3("center", true).value_or(Vec3());
+    s->center = f.vec3("center", true, json::coordinateRange()).value_or(Vec3());
     return s;
 }
 

@@ -245,7 +245,9 @@ public:
 std::shared_ptr<const SamplerType> directionalSampler(Vec3 origin, Vec3 direction, Vec3 up, double fovDeg, int strata) {
     if (length(direction) < 1e-12 || length(up) < 1e-12) throw std::invalid_argument("directional sampler: zero direction");
     if (!(fovDeg > 0 && fovDeg < 180)) throw std::invalid_argument("directional sampler: fov_deg must lie in (0, 180)");
-    if (strata < 1 || strata > 256) throw std::invalid_argument("directional sampler: strata must lie in [1, 256]");
+    if (strata < 1 || strata > limits::kMaxDirectionalStrata)
+        throw std::invalid_argument("directional sampler: strata must lie in [1, " +
+                                    std::to_string(limits::kMaxDirectionalStrata) + "]");
     auto s = std::make_shared<Directional>();
     s->origin = origin;
     s->direction = normalize(direction);
@@ -259,10 +261,15 @@ std::shared_ptr<const SamplerType> directionalSampler(Vec3 origin, Vec3 directio
 
 std::shared_ptr<const SamplerType> readDirectionalSampler(const json::Fields& f) {
     auto s = std::make_shared<Directional>();
-    s->origin = f.vec3("origin", true).value_or(Vec3());
+    s->origin = f.vec3("origin", true, json::coordinateRange()).value_or(Vec3());
     s->direction = f.direction("direction", true).value_or(Vec3(0, -1, 0));
     s->fovDeg = f.number("fov_deg", 60.0, json::Range{0, 180, true, true, "deg"});
-    s->strata = f.integer("strata", json::Range::closed(1, 256)).value_or(8);
+    s->strata = f.integer("strata", json::Range::atLeast(1)).value_or(8);
+    if (s->strata > limits::kMaxDirectionalStrata) {
+        f.error("strata", "strata " + std::to_string(s->strata) + " (" + std::to_string(int64_t(s->strata) * s->strata) +
+                              " strata) exceeds the limit of " + std::to_string(limits::kMaxDirectionalStrata));
+        s->strata = 8;
+    }
     Vec3 fallbackUp = std::abs(s->direction.z) > 0.999 ? Vec3(0, 1, 0) : Vec3(0, 0, 1);
     s->up = f.direction("up").value_or(fallbackUp);
     if (length(cross(s->up, s->direction)) < 1e-6) f.error("up", "\"up\" is parallel to \"direction\"");

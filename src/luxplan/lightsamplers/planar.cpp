@@ -83,6 +83,9 @@ std::shared_ptr<const SamplerType> planarSampler(Vec3 center, Vec3 normal, Vec3 
     if (size.x <= 0 || size.y <= 0) throw std::invalid_argument("planar sampler has zero area");
     if (grid[0] < 1 || grid[1] < 1 || grid[0] > 1024 || grid[1] > 1024)
         throw std::invalid_argument("planar sampler: grid counts must lie in [1, 1024]");
+    if (int64_t(grid[0]) * grid[1] > limits::kMaxSamplerPoints)
+        throw std::invalid_argument("planar sampler: " + std::to_string(int64_t(grid[0]) * grid[1]) +
+                                    " points exceeds the limit of " + std::to_string(limits::kMaxSamplerPoints));
     s->size = size;
     s->grid = grid;
     return s;
@@ -90,15 +93,17 @@ std::shared_ptr<const SamplerType> planarSampler(Vec3 center, Vec3 normal, Vec3 
 
 std::shared_ptr<const SamplerType> readPlanarSampler(const json::Fields& f) {
     auto s = std::make_shared<Planar>();
-    s->center = f.vec3("center", true).value_or(Vec3());
+    s->center = f.vec3("center", true, json::coordinateRange()).value_or(Vec3());
     s->normal = f.direction("normal").value_or(Vec3(0, 0, 1));
     s->up = f.direction("up").value_or(Vec3(0, 1, 0));
     if (length(cross(s->up, s->normal)) < 1e-6) f.error(f.has("up") ? "up" : "normal", "\"up\" is parallel to \"normal\"");
-    s->size = f.vec2("size", true).value_or(Vec2(1, 1));
+    s->size = f.vec2("size", true, json::signedLengthRange()).value_or(Vec2(1, 1));
     if (f.has("size") && (s->size.x <= 0 || s->size.y <= 0))
         f.error("size", "sampler has zero area: size " + json::formatNumber(s->size.x) + " x " + json::formatNumber(s->size.y));
     if (auto g = f.numbers("grid", 2, json::Range::closed(1, 1024))) {
         if ((*g)[0] != std::floor((*g)[0]) || (*g)[1] != std::floor((*g)[1])) f.error("grid", "grid counts must be whole numbers");
+        else if (const double n = (*g)[0] * (*g)[1]; n > double(limits::kMaxSamplerPoints))
+            f.error("grid", json::formatNumber(n) + " points exceeds the limit of " + std::to_string(limits::kMaxSamplerPoints));
         s->grid = {int((*g)[0]), int((*g)[1])};
     }
     return s;

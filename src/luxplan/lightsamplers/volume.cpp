@@ -79,7 +79,8 @@ public:
 std::shared_ptr<const SamplerType> volumeSampler(Vec3 center, std::array<Vec3, 3> axes, int points) {
     if (std::abs(dot(cross(axes[0], axes[1]), axes[2])) < 1e-12)
         throw std::invalid_argument("volume sampler: the box has zero volume (side vectors are degenerate)");
-    if (points < 1 || points > 1000000) throw std::invalid_argument("volume sampler: points must lie in [1, 1000000]");
+    if (points < 1 || points > limits::kMaxSamplerPoints)
+        throw std::invalid_argument("volume sampler: points must lie in [1, " + std::to_string(limits::kMaxSamplerPoints) + "]");
     auto s = std::make_shared<Volume>();
     s->center = center;
     s->axes = axes;
@@ -89,14 +90,15 @@ std::shared_ptr<const SamplerType> volumeSampler(Vec3 center, std::array<Vec3, 3
 
 std::shared_ptr<const SamplerType> readVolumeSampler(const json::Fields& f) {
     auto s = std::make_shared<Volume>();
-    s->center = f.vec3("center", true).value_or(Vec3());
+    s->center = f.vec3("center", true, json::coordinateRange()).value_or(Vec3());
     if (const json::Json* axes = f.array("axes", true)) {
         if (axes->size() != 3) {
             f.error("axes", "expected three side vectors, got " + std::to_string(axes->size()));
         } else {
             bool ok = true;
             for (size_t i = 0; i < 3; ++i) {
-                auto n = json::readNumbers(f.sink(), (*axes)[i], json::pointer(f.at("axes"), i), 3);
+                auto n = json::readNumbers(f.sink(), (*axes)[i], json::pointer(f.at("axes"), i), 3,
+                                           json::signedLengthRange());
                 if (n) s->axes[i] = Vec3((*n)[0], (*n)[1], (*n)[2]);
                 else ok = false;
             }
@@ -104,7 +106,11 @@ std::shared_ptr<const SamplerType> readVolumeSampler(const json::Fields& f) {
                 f.error("axes", "the box has zero volume (side vectors are degenerate)");
         }
     }
-    s->points = f.integer("points", json::Range::closed(1, 1000000)).value_or(200);
+    s->points = f.integer("points", json::Range::atLeast(1)).value_or(200);
+    if (s->points > limits::kMaxSamplerPoints) {
+        f.error("points", std::to_string(s->points) + " points exceeds the limit of " + std::to_string(limits::kMaxSamplerPoints));
+        s->points = 200;
+    }
     return s;
 }
 

@@ -70,6 +70,7 @@ class SamplerType;  // lightsamplers/sampler_type.h
 struct LightSamplerSpec {
     std::string name;
     std::string jsonPath;
+    std::string file;  // the scene file it was read from, for errors found later ("" if built in code)
     std::shared_ptr<const SamplerType> type;  // planar, directional, volume (lightsamplers/)
     double targetMin = 0, targetMax = kInf;   // in the type's unit
     double tolerance = 1;  // the paper's L_rej (same unit as the target)

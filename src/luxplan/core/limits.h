@@ -1,0 +1,75 @@
+// Every limit on what an input file may ask for, in one place: beyond these a file is
+// refused with a clear error (FILE: /json/path: N things exceeds the limit of M), so
+// that no input can crash, hang or exhaust the machine. docs/scene-format.md
+// ("Limits") lists them; change both together.
+#pragma once
+
+#include <cstdint>
+
+namespace luxplan::limits {
+
+// ---- files ----
+// A scene or layout JSON file: far above any real scene (the bundled ones are < 100 kB).
+inline constexpr std::uintmax_t kMaxJsonFileBytes = 64ull << 20;
+// A mesh file (OBJ, glTF, GLB) and each external glTF buffer: a 2-million-triangle
+// OBJ is about 150 MB.
+inline constexpr std::uintmax_t kMaxMeshFileBytes = 512ull << 20;
+// An IES or EULUMDAT file (real ones are a few kB; a dense one a few hundred).
+inline constexpr std::uintmax_t kMaxPhotometryFileBytes = 16ull << 20;
+
+// ---- JSON structure ----
+// Arrays and objects nested inside each other in a scene or layout file; checked
+// while parsing, before any of it is built.
+inline constexpr int kMaxJsonDepth = 128;
+// Entities nested through "children" (a group of groups ...), checked before
+// recursing into the next level.
+inline constexpr int kMaxEntityDepth = 32;
+
+// ---- geometry ----
+// Every coordinate (positions, centres, corners, translations, region bounds, mesh
+// vertices after their transform) lies in [-kMaxCoordinate, kMaxCoordinate] m: 100 km,
+// where single-precision ray tracing still resolves millimetres well enough.
+inline constexpr double kMaxCoordinate = 1e5;
+// Every size (lengths, widths, radii, side vectors) is positive and at most this, m.
+inline constexpr double kMaxLength = 1e5;
+// A mesh transform's scale factor lies in (0, kMaxScale].
+inline constexpr double kMaxScale = 1e4;
+// Triangles in one mesh file (after glTF instancing) and in the whole scene.
+inline constexpr std::uint64_t kMaxMeshTriangles = 4'000'000;
+inline constexpr std::uint64_t kMaxSceneTriangles = 8'000'000;
+// glTF node instances (a node reached through several parents counts once per path):
+// bounds a scene graph whose nodes share children, which can grow exponentially.
+inline constexpr std::uint64_t kMaxGltfNodeInstances = 100'000;
+// glTF node hierarchy depth (deeper is taken for a cycle).
+inline constexpr int kMaxGltfNodeDepth = 64;
+
+// ---- light ----
+// A luminaire's flux, lm (a stadium floodlight gives about 2e5 lm).
+inline constexpr double kMaxFluxLm = 1e9;
+// Sky and sun illuminance, lx (direct sunlight is about 1.3e5 lx), and a uniform
+// sky's luminance, cd/m2 (the sun's disk is about 1.6e9).
+inline constexpr double kMaxIlluminanceLx = 1e7;
+inline constexpr double kMaxLuminanceNits = 1e10;
+
+// Candela values in one IES file (horizontal x vertical angles; EULUMDAT's own
+// bounds, 3600 x 1801 planes, are below it).
+inline constexpr std::int64_t kMaxPhotometryValues = 10'000'000;
+
+// ---- samplers ----
+// Measurement points (or strata) of one sampler: a planar grid's nx * ny, a volume's
+// points, a directional sampler's strata^2.
+inline constexpr std::int64_t kMaxSamplerPoints = 65536;
+// A directional sampler's strata per side: each stratum's paths reach every other
+// stratum, so its estimates grow as strata^4 (16: 79 MB in all; 32: 600 MB).
+inline constexpr int kMaxDirectionalStrata = 16;
+
+// ---- daylight ----
+// Instants from..to every step_minutes (counted in floating point before any
+// allocation). The daylight module's kMaxDaylightSteps is this value.
+inline constexpr std::int64_t kMaxTimeSteps = 10000;
+
+// ---- integers ----
+// Counts read from JSON (iterations, paths) must fit an int; seeds are 64-bit.
+inline constexpr std::int64_t kMaxCount = 2147483647;
+
+}  // namespace luxplan::limits

@@ -1,0 +1,270 @@
+// Scenes and layouts that once crashed, hung, exhausted memory or were wrongly
+// accepted (issue 15): each limit of core/limits.h refused as FILE: /json/path: message.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <set>
+#include <sys/stat.h>
+
+#include <nlohmann/json.hpp>
+
+#include <luxplan/core/error.h>
+#include <luxplan/core/limits.h>
+#include <luxplan/emitters/emitter_shape.h>
+#include <luxplan/io/layout_io.h>
+#include <luxplan/io/scene_loader.h>
+#include "support/temp_files.h"
+
+namespace luxplan {
+namespace {
+
+using nlohmann::json;
+
+json smallScene() {
+    return json::parse(R"({
+      "luxplan": 1,
+      "materials": {"wall": {"type": "diffuse", "reflectance": 0.6}},
+      "geometry": [{"name": "room", "room": {"min": [0,0,0], "max": [6,4,3]},
+                    "materials": {"floor": "wall", "walls": "wall", "ceiling": "wall"}}],
+      "luminaires": [{"name": "panel", "shape": "rect", "center": [3,2,2.99], "normal": [0,0,-1], "size": [0.6,0.6], "flux_lm": 3200}],
+      "entities": [{"name": "desk", "position": [2, 2],
+                    "placement": {"regions": [{"min": [1,1], "max": [5,3], "rotations": [0, 90]}]},
+                    "parts": [{"box": {"size": [1.2,0.6,0.75]}, "material": "wall"}]}],
+      "samplers": [{"name": "top", "type": "planar", "center": [3,2,0.8], "size": [1,1], "target": [300,500]}]
+    })");
+}
+
+// The diagnostics of loading `text` as "path: message", each checked to name the file.
+std::vector<std::string> problemsIn(const std::string& text, test::TempDir& dir, const std::string& name = "scene.json") {
+    auto file = dir.write(name, text);
+    try {
+        io::loadScene(file);
+    } catch (const SceneError& e) {
+        std::vector<std::string> out;
+        for (const auto& d : e.diagnostics()) {
+            EXPECT_EQ(d.file, file.string());
+            out.push_back((d.jsonPath.empty() ? "/" : d.jsonPath) + ": " + d.message);
+        }
+        return out;
+    }
+    return {};
+}
+
+std::string onlyProblem(const json& scene) {
+    test::TempDir dir;
+    auto p = problemsIn(scene.dump(), dir);
+    EXPECT_EQ(p.size(), 1u) << (p.empty() ? "no problems" : p.front() + (p.size() > 1 ? " | " + p[1] : ""));
+    return p.empty() ? "" : p.front();
+}
+
+TEST(SceneLimits, DeepChildrenAreRefusedQuickly) {
+    // 10^4 levels of children (a 330 kB file) once took 2.8 GB and overflowed the stack.
+    std::string text = R"({"luxplan": 1, "entities": [)";
+    const int depth = 10000;
+    for (int i = 0; i < depth; ++i) text += R"({"name": "e", "children": [)";
+    for (int i = 0; i < depth; ++i) text += "]}";
+    text += "]}";
+    test::TempDir dir;
+    auto start = std::chrono::steady_clock::now();
+    auto p = problemsIn(text, dir);
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 2.0);
+    ASSERT_EQ(p.size(), 1u);
+    EXPECT_NE(p[0].find("exceeds the limit of " + std::to_string(limits::kMaxJsonDepth)), std::string::npos) << p[0];
+    EXPECT_EQ(p[0].rfind("/entities/0/children/0/children/0/", 0), 0u) << p[0].substr(0, 200);
+}
+
+TEST(SceneLimits, EntityNestingDepth) {
+    json s = smallScene();
+    json leaf = {{"name", "e"}};
+    for (int i = 0; i < limits::kMaxEntityDepth; ++i) leaf = {{"name", "e"}, {"children", {leaf}}};
+    s["entities"].push_back(leaf);  // 33 levels
+    std::string path = "/entities/1";
+    for (int i = 1; i < limits::kMaxEntityDepth; ++i) path += "/children/0";
+    EXPECT_EQ(onlyProblem(s), path + "/children: entities nested 33 deep exceed the limit of 32");
+    // 32 levels load.
+    s = smallScene();
+    s["entities"].push_back(leaf["children"][0]);
+    test::TempDir dir;
+    EXPECT_TRUE(problemsIn(s.dump(), dir).empty());
+}
+
+TEST(SceneLimits, CoordinatesAndSizesAreBounded) {
+    json s = smallScene();
+    s["geometry"][0]["room"]["max"][0] = 1e308;
+    EXPECT_EQ(onlyProblem(s), "/geometry/0/room/max/0: value 1e+308 exceeds the limit of 100000 m");
+    s = smallScene();
+    s["entities"][0]["position"][0] = 1e9;
+    EXPECT_EQ(onlyProblem(s), "/entities/0/position/0: value 1000000000 exceeds the limit of 100000 m");
+    s = smallScene();
+    s["entities"][0]["parts"][0]["box"]["size"][2] = 1e308;
+    EXPECT_EQ(onlyProblem(s), "/entities/0/parts/0/box/size/2: value 1e+308 exceeds the limit of 100000 m");
+    s = smallScene();
+    s["entities"][0]["placement"]["regions"][0]["max"][1] = -1e9;
+    EXPECT_EQ(onlyProblem(s), "/entities/0/placement/regions/0/max/1: value -1000000000 exceeds the limit of -100000 m");
+    s = smallScene();
+    s["luminaires"][0]["center"][2] = 1e300;
+    EXPECT_EQ(onlyProblem(s), "/luminaires/0/center/2: value 1e+300 exceeds the limit of 100000 m");
+    s = smallScene();
+    s["luminaires"][0]["size"][0] = 1e300;
+    EXPECT_EQ(onlyProblem(s), "/luminaires/0/size/0: value 1e+300 exceeds the limit of 100000 m");
+    s = smallScene();
+    s["luminaires"][0]["flux_lm"] = 1e300;
+    EXPECT_EQ(onlyProblem(s), "/luminaires/0/flux_lm: value 1e+300 exceeds the limit of 1000000000");
+    s = smallScene();
+    s["samplers"][0]["center"][0] = 1e9;
+    EXPECT_EQ(onlyProblem(s), "/samplers/0/center/0: value 1000000000 exceeds the limit of 100000 m");
+    s = smallScene();
+    s["samplers"][0]["size"][0] = 1e9;
+    EXPECT_EQ(onlyProblem(s), "/samplers/0/size/0: value 1000000000 exceeds the limit of 100000 m");
+}
+
+TEST(SceneLimits, HugeDirectionsStayDirections) {
+    json s = smallScene();
+    s["luminaires"][0]["normal"] = {0, 0, -1e308};  // its length overflows
+    test::TempDir dir;
+    EXPECT_TRUE(problemsIn(s.dump(), dir).empty());
+    Scene scene = io::loadScene(dir.write("n.json", s.dump()));
+    ASSERT_TRUE(scene.emitters[0].shape->normal());
+    EXPECT_NEAR(scene.emitters[0].shape->normal()->z, -1, 1e-12);
+}
+
+TEST(SceneLimits, MeshVerticesAfterTheirTransform) {
+    test::TempDir dir;
+    dir.write("tri.obj", "v 0 0 0\nv 1000 0 0\nv 0 1 0\nf 1 2 3\n");
+    json s = smallScene();
+    s["geometry"].push_back({{"name", "m"}, {"mesh", "tri.obj"}, {"material", "wall"}, {"transform", {{"scale", 1000}}}});
+    auto p = problemsIn(s.dump(), dir);
+    ASSERT_EQ(p.size(), 1u);
+    EXPECT_EQ(p[0], "/geometry/1/mesh: mesh vertex (1000000, 0, 0) after its transform lies outside [-100000, 100000] m");
+    s["geometry"][1]["transform"]["scale"] = 1e300;
+    p = problemsIn(s.dump(), dir);
+    ASSERT_EQ(p.size(), 1u);
+    EXPECT_EQ(p[0], "/geometry/1/transform/scale: value 1e+300 exceeds the limit of 10000");
+}
+
+TEST(SceneLimits, MeshErrorsNameTheSceneAndTheMeshLine) {
+    test::TempDir dir;
+    auto obj = dir.write("bad.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 99\n");
+    json s = smallScene();
+    s["geometry"].push_back({{"name", "m"}, {"mesh", "bad.obj"}, {"material", "wall"}});
+    auto p = problemsIn(s.dump(), dir);
+    ASSERT_EQ(p.size(), 1u);
+    EXPECT_EQ(p[0].rfind("/geometry/1/mesh: cannot read mesh: " + obj.string() + ":4: face vertex index 99 is out of range", 0), 0u)
+        << p[0];
+}
+
+TEST(SceneLimits, NumbersBeyondADouble) {
+    test::TempDir dir;
+    std::string text = smallScene().dump();
+    text.replace(text.find("3200"), 4, "1e400");
+    auto p = problemsIn(text, dir);
+    ASSERT_EQ(p.size(), 1u);
+    EXPECT_EQ(p[0], "/luminaires/0/flux_lm: number overflow parsing '1e400' (the largest number is about 1.8e308)");
+    p = problemsIn(R"({"luxplan": 1, "entities": [{"name": "a", "position": [1, -1e400]}]})", dir);
+    ASSERT_EQ(p.size(), 1u);
+    EXPECT_EQ(p[0].rfind("/entities/0/position/1: number overflow parsing '-1e400'", 0), 0u) << p[0];
+}
+
+TEST(SceneLimits, IntegersAndSeeds) {
+    json s = smallScene();
+    s["optimizer"] = {{"paths_per_point", 2147483648LL}};
+    EXPECT_EQ(onlyProblem(s), "/optimizer/paths_per_point: value 2147483648 exceeds the limit of 2147483647");
+    s["optimizer"] = {{"iterations", 1e300}};
+    EXPECT_EQ(onlyProblem(s), "/optimizer/iterations: expected an integer, got 1e+300");
+    // Seeds above 2^31 stay distinct (they once all became one).
+    test::TempDir dir;
+    std::set<uint64_t> seeds;
+    for (uint64_t seed : {2147483648ull, 2147483649ull, 4294967296ull, 18446744073709551615ull}) {
+        s["optimizer"] = {{"seed", seed}};
+        seeds.insert(io::loadScene(dir.write("s.json", s.dump())).optimizer.seed);
+    }
+    EXPECT_EQ(seeds.size(), 4u);
+    EXPECT_TRUE(seeds.count(18446744073709551615ull));
+    s["optimizer"] = {{"seed", -1}};
+    EXPECT_EQ(onlyProblem(s), "/optimizer/seed: value -1 outside [0, 18446744073709551615]");
+    s["optimizer"] = {{"seed", 1e30}};
+    EXPECT_EQ(onlyProblem(s).rfind("/optimizer/seed: expected a whole number in [0, 2^64 - 1], got 1e+30", 0), 0u);
+}
+
+TEST(SceneLimits, TinyTimeStep) {
+    json s = smallScene();
+    s["site"] = {{"latitude", 38}, {"longitude", 23.7}};
+    s["daylight"] = {{"sky", {{"model", "preetham"}}},
+                     {"from", "2026-06-21T09:00+03:00"}, {"to", "2026-06-21T12:00+03:00"}, {"step_minutes", 1e-20}};
+    EXPECT_EQ(onlyProblem(s), "/daylight/step_minutes: from..to every 1e-20 minutes is 1.8e+22 time steps, which exceeds "
+                              "the limit of 10000");
+}
+
+TEST(SceneLimits, SamplerPoints) {
+    json s = smallScene();
+    s["samplers"][0]["grid"] = {1024, 1024};
+    EXPECT_EQ(onlyProblem(s), "/samplers/0/grid: 1048576 points exceeds the limit of 65536");
+    s = smallScene();
+    s["samplers"].push_back({{"name", "v"}, {"type", "volume"}, {"center", {3, 2, 1}},
+                             {"axes", {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}}, {"points", 1000000}, {"target", {0, 100}}});
+    EXPECT_EQ(onlyProblem(s), "/samplers/1/points: 1000000 points exceeds the limit of 65536");
+    s = smallScene();
+    s["samplers"].push_back({{"name", "d"}, {"type", "directional"}, {"origin", {3, 1, 1.2}}, {"direction", {0, 1, 0}},
+                             {"strata", 256}, {"target", {0, 100}}});
+    EXPECT_EQ(onlyProblem(s), "/samplers/1/strata: strata 256 (65536 strata) exceeds the limit of 16");
+}
+
+TEST(SceneLimits, OnlyRegularFilesOfBoundedSize) {
+    test::TempDir dir;
+    auto fifo = dir.path() / "scene.json";
+    ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+    try {
+        io::loadScene(fifo);
+        ADD_FAILURE() << "a FIFO loaded";
+    } catch (const SceneError& e) {
+        EXPECT_EQ(std::string(e.what()), fifo.string() + ": /: not a regular file (a folder, FIFO or device cannot be read)");
+    }
+    try {
+        io::loadScene("/dev/zero");
+        ADD_FAILURE() << "/dev/zero loaded";
+    } catch (const SceneError& e) {
+        EXPECT_EQ(std::string(e.what()), "/dev/zero: /: not a regular file (a folder, FIFO or device cannot be read)");
+    }
+    // A mesh named in the scene that is a FIFO.
+    ASSERT_EQ(mkfifo((dir.path() / "pipe.obj").c_str(), 0600), 0);
+    json s = smallScene();
+    s["geometry"].push_back({{"name", "m"}, {"mesh", "pipe.obj"}, {"material", "wall"}});
+    auto p = problemsIn(s.dump(), dir, "with_fifo.json");
+    ASSERT_EQ(p.size(), 1u);
+    EXPECT_EQ(p[0], "/geometry/1/mesh: cannot read mesh \"" + (dir.path() / "pipe.obj").string() +
+                        "\": not a regular file (a folder, FIFO or device cannot be read)");
+}
+
+TEST(LayoutLimits, PositionsAndNumbers) {
+    test::TempDir dir;
+    Scene scene = io::loadScene(dir.write("scene.json", smallScene().dump()));
+    auto layoutProblem = [&](const std::string& text) {
+        auto file = dir.write("layout.json", text);
+        try {
+            io::readLayout(file, scene);
+        } catch (const SceneError& e) {
+            EXPECT_EQ(e.diagnostics().size(), 1u) << e.what();
+            EXPECT_EQ(e.diagnostics().front().file, file.string());
+            return e.diagnostics().front().jsonPath + ": " + e.diagnostics().front().message;
+        }
+        ADD_FAILURE() << "accepted " << text;
+        return std::string();
+    };
+    EXPECT_EQ(layoutProblem(R"({"entities": {"desk": {"position": [1e9, 2, 0]}}})"),
+              "/entities/desk/position/0: value 1000000000 exceeds the limit of 100000 m");
+    EXPECT_EQ(layoutProblem(R"({"entities": {"desk": {"position": [2, 2, 1e400]}}})"),
+              "/entities/desk/position/2: number overflow parsing '1e400' (the largest number is about 1.8e308)");
+    EXPECT_EQ(layoutProblem(R"({"entities": {"desk": {"rotation": 0, "rotation": 90}}})"),
+              "/entities/desk/rotation: duplicate key (JSON objects need unique keys)");
+    auto fifo = dir.path() / "fifo.json";
+    ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+    try {
+        io::readLayout(fifo, scene);
+        ADD_FAILURE() << "a FIFO layout loaded";
+    } catch (const SceneError& e) {
+        EXPECT_EQ(std::string(e.what()), fifo.string() + ": /: not a regular file (a folder, FIFO or device cannot be read)");
+    }
+}
+
+}  // namespace
+}  // namespace luxplan
