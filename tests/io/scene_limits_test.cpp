@@ -206,7 +206,7 @@ TEST(SceneLimits, SamplerPoints) {
     s = smallScene();
     s["samplers"].push_back({{"name", "d"}, {"type", "directional"}, {"origin", {3, 1, 1.2}}, {"direction", {0, 1, 0}},
                              {"strata", 256}, {"target", {0, 100}}});
-    EXPECT_EQ(onlyProblem(s), "/samplers/1/strata: strata 256 (65536 strata) exceeds the limit of 16");
+    EXPECT_EQ(onlyProblem(s), "/samplers/1/strata: strata 256 (65536 strata) exceeds the limit of 32");
 }
 
 TEST(SceneLimits, OnlyRegularFilesOfBoundedSize) {

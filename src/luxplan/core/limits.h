@@ -61,7 +61,7 @@ inline constexpr std::int64_t kMaxPhotometryValues = 10'000'000;
 inline constexpr std::int64_t kMaxSamplerPoints = 65536;
 // A directional sampler's strata per side: each stratum's paths reach every other
 // stratum, so its estimates grow as strata^4 (16: 79 MB in all; 32: 600 MB).
-inline constexpr int kMaxDirectionalStrata = 16;
+inline constexpr int kMaxDirectionalStrata = 32;
 
 // ---- daylight ----
 // Instants from..to every step_minutes (counted in floating point before any
