@@ -13,6 +13,7 @@
 #include <luxplan/emitters/emitter_shape.h>
 #include <luxplan/io/layout_io.h>
 #include <luxplan/io/scene_loader.h>
+#include "support/load_problems.h"
 #include "support/temp_files.h"
 
 namespace luxplan {
@@ -34,25 +35,10 @@ json smallScene() {
     })");
 }
 
-// The diagnostics of loading `text` as "path: message", each checked to name the file.
-std::vector<std::string> problemsIn(const std::string& text, test::TempDir& dir, const std::string& name = "scene.json") {
-    auto file = dir.write(name, text);
-    try {
-        io::loadScene(file);
-    } catch (const SceneError& e) {
-        std::vector<std::string> out;
-        for (const auto& d : e.diagnostics()) {
-            EXPECT_EQ(d.file, file.string());
-            out.push_back((d.jsonPath.empty() ? "/" : d.jsonPath) + ": " + d.message);
-        }
-        return out;
-    }
-    return {};
-}
-
+// The single problem's text, failing the test if there is not exactly one.
 std::string onlyProblem(const json& scene) {
     test::TempDir dir;
-    auto p = problemsIn(scene.dump(), dir);
+    auto p = test::loadProblems(scene.dump(), dir);
     EXPECT_EQ(p.size(), 1u) << (p.empty() ? "no problems" : p.front() + (p.size() > 1 ? " | " + p[1] : ""));
     return p.empty() ? "" : p.front();
 }
@@ -66,7 +52,7 @@ TEST(SceneLimits, DeepChildrenAreRefusedQuickly) {
     text += "]}";
     test::TempDir dir;
     auto start = std::chrono::steady_clock::now();
-    auto p = problemsIn(text, dir);
+    auto p = test::loadProblems(text, dir);
     EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 2.0);
     ASSERT_EQ(p.size(), 1u);
     EXPECT_NE(p[0].find("exceeds the limit of " + std::to_string(limits::kMaxJsonDepth)), std::string::npos) << p[0];
@@ -85,7 +71,7 @@ TEST(SceneLimits, EntityNestingDepth) {
     s = smallScene();
     s["entities"].push_back(leaf["children"][0]);
     test::TempDir dir;
-    EXPECT_TRUE(problemsIn(s.dump(), dir).empty());
+    EXPECT_TRUE(test::loadProblems(s.dump(), dir).empty());
 }
 
 TEST(SceneLimits, CoordinatesAndSizesAreBounded) {
@@ -122,7 +108,7 @@ TEST(SceneLimits, HugeDirectionsStayDirections) {
     json s = smallScene();
     s["luminaires"][0]["normal"] = {0, 0, -1e308};  // its length overflows
     test::TempDir dir;
-    EXPECT_TRUE(problemsIn(s.dump(), dir).empty());
+    EXPECT_TRUE(test::loadProblems(s.dump(), dir).empty());
     Scene scene = io::loadScene(dir.write("n.json", s.dump()));
     ASSERT_TRUE(scene.emitters[0].shape->normal());
     EXPECT_NEAR(scene.emitters[0].shape->normal()->z, -1, 1e-12);
@@ -133,11 +119,11 @@ TEST(SceneLimits, MeshVerticesAfterTheirTransform) {
     dir.write("tri.obj", "v 0 0 0\nv 1000 0 0\nv 0 1 0\nf 1 2 3\n");
     json s = smallScene();
     s["geometry"].push_back({{"name", "m"}, {"mesh", "tri.obj"}, {"material", "wall"}, {"transform", {{"scale", 1000}}}});
-    auto p = problemsIn(s.dump(), dir);
+    auto p = test::loadProblems(s.dump(), dir);
     ASSERT_EQ(p.size(), 1u);
     EXPECT_EQ(p[0], "/geometry/1/mesh: mesh vertex (1000000, 0, 0) after its transform lies outside [-100000, 100000] m");
     s["geometry"][1]["transform"]["scale"] = 1e300;
-    p = problemsIn(s.dump(), dir);
+    p = test::loadProblems(s.dump(), dir);
     ASSERT_EQ(p.size(), 1u);
     EXPECT_EQ(p[0], "/geometry/1/transform/scale: value 1e+300 exceeds the limit of 10000");
 }
@@ -147,7 +133,7 @@ TEST(SceneLimits, MeshErrorsNameTheSceneAndTheMeshLine) {
     auto obj = dir.write("bad.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 99\n");
     json s = smallScene();
     s["geometry"].push_back({{"name", "m"}, {"mesh", "bad.obj"}, {"material", "wall"}});
-    auto p = problemsIn(s.dump(), dir);
+    auto p = test::loadProblems(s.dump(), dir);
     ASSERT_EQ(p.size(), 1u);
     EXPECT_EQ(p[0].rfind("/geometry/1/mesh: cannot read mesh: " + obj.string() + ":4: face vertex index 99 is out of range", 0), 0u)
         << p[0];
@@ -157,10 +143,10 @@ TEST(SceneLimits, NumbersBeyondADouble) {
     test::TempDir dir;
     std::string text = smallScene().dump();
     text.replace(text.find("3200"), 4, "1e400");
-    auto p = problemsIn(text, dir);
+    auto p = test::loadProblems(text, dir);
     ASSERT_EQ(p.size(), 1u);
     EXPECT_EQ(p[0], "/luminaires/0/flux_lm: number overflow parsing '1e400' (the largest number is about 1.8e308)");
-    p = problemsIn(R"({"luxplan": 1, "entities": [{"name": "a", "position": [1, -1e400]}]})", dir);
+    p = test::loadProblems(R"({"luxplan": 1, "entities": [{"name": "a", "position": [1, -1e400]}]})", dir);
     ASSERT_EQ(p.size(), 1u);
     EXPECT_EQ(p[0].rfind("/entities/0/position/1: number overflow parsing '-1e400'", 0), 0u) << p[0];
 }
@@ -229,7 +215,7 @@ TEST(SceneLimits, OnlyRegularFilesOfBoundedSize) {
     ASSERT_EQ(mkfifo((dir.path() / "pipe.obj").c_str(), 0600), 0);
     json s = smallScene();
     s["geometry"].push_back({{"name", "m"}, {"mesh", "pipe.obj"}, {"material", "wall"}});
-    auto p = problemsIn(s.dump(), dir, "with_fifo.json");
+    auto p = test::loadProblems(s.dump(), dir, "with_fifo.json");
     ASSERT_EQ(p.size(), 1u);
     EXPECT_EQ(p[0], "/geometry/1/mesh: cannot read mesh \"" + (dir.path() / "pipe.obj").string() +
                         "\": not a regular file (a folder, FIFO or device cannot be read)");

@@ -7,6 +7,7 @@
 #include <luxplan/core/error.h>
 #include <luxplan/emitters/emitter_shape.h>
 #include <luxplan/io/scene_loader.h>
+#include "support/load_problems.h"
 #include "support/temp_files.h"
 
 namespace luxplan {
@@ -43,23 +44,7 @@ json validScene() {
     })");
 }
 
-// Loads `scene` from a temp file; returns the diagnostics as "path: message" lines.
-std::vector<std::string> problemsInText(const std::string& text, test::TempDir& dir) {
-    auto file = dir.write("scene.json", text);
-    try {
-        io::loadScene(file);
-    } catch (const SceneError& e) {
-        std::vector<std::string> out;
-        for (const auto& d : e.diagnostics()) {
-            EXPECT_EQ(d.file, file.string());
-            EXPECT_EQ(d.str(), file.string() + ": " + (d.jsonPath.empty() ? "/" : d.jsonPath) + ": " + d.message);
-            out.push_back((d.jsonPath.empty() ? "/" : d.jsonPath) + ": " + d.message);
-        }
-        return out;
-    }
-    return {};
-}
-std::vector<std::string> problems(const json& scene, test::TempDir& dir) { return problemsInText(scene.dump(2), dir); }
+std::vector<std::string> problems(const json& scene, test::TempDir& dir) { return test::loadProblems(scene.dump(2), dir); }
 
 // The single problem's text, failing the test if there is not exactly one.
 std::string onlyProblem(const json& scene) {
@@ -88,7 +73,7 @@ TEST(SceneLoader, ValidSceneLoads) {
 
 TEST(SceneLoader, MalformedJsonGivesLineAndColumn) {
     test::TempDir dir;
-    auto p = problemsInText("{\n  \"luxplan\": 1,\n  \"name\": oops\n}", dir);
+    auto p = test::loadProblems("{\n  \"luxplan\": 1,\n  \"name\": oops\n}", dir);
     ASSERT_EQ(p.size(), 1u);
     EXPECT_TRUE(startsWith(p[0], "/: malformed JSON at line 3, column")) << p[0];
 }
@@ -118,7 +103,7 @@ TEST(SceneLoader, DuplicateJsonKey) {
     std::string text = validScene().dump();
     text.insert(text.find("\"name\": \"t\"") != std::string::npos ? 1 : 1, "\"name\": \"again\", ");
     test::TempDir dir;
-    auto p = problemsInText(text, dir);
+    auto p = test::loadProblems(text, dir);
     ASSERT_EQ(p.size(), 1u);
     EXPECT_EQ(p[0], "/name: duplicate key (JSON objects need unique keys)");
 }
