@@ -157,18 +157,24 @@ TEST(PathCache, AnUnmovedLayoutReusesEveryPath) {
     EXPECT_EQ(measureSamplers(*lab.tracer, o, &cache).reusedPaths, 0u);
 }
 
-TEST(PathCache, MovingTheCabinetRetracesOnlyThePathsThatMetIt) {
+// The studio measured and committed at its initial layout, then measured again with
+// one entity moved by dx along x.
+MeasureResult afterMoving(const char* entity, double dx, int paths) {
     SceneLab lab(studio());
     MeasureOptions o;
-    o.pathsPerPoint = 32;
+    o.pathsPerPoint = paths;
     PathCache cache(lab.scene);
     measureSamplers(*lab.tracer, o, &cache);
     cache.commit();
     Layout layout = initialLayout(lab.scene);
-    layout.placements[size_t(entityNamed(lab.scene, "cabinet"))].position.x -= 0.3;
+    layout.placements[size_t(entityNamed(lab.scene, entity))].position.x += dx;
     lab.rt->setLayout(layout);
     lab.tracer->updateLayout();
-    MeasureResult moved = measureSamplers(*lab.tracer, o, &cache);
+    return measureSamplers(*lab.tracer, o, &cache);
+}
+
+TEST(PathCache, MovingTheCabinetRetracesOnlyThePathsThatMetIt) {
+    MeasureResult moved = afterMoving("cabinet", -0.3, 32);
     // A 0.8 x 0.4 x 1.2 m cabinet in a corner of a 6 x 4 x 3 m room.
     EXPECT_GT(double(moved.reusedPaths), 0.5 * double(moved.paths));
     EXPECT_LT(moved.reusedPaths, moved.paths);
@@ -176,18 +182,8 @@ TEST(PathCache, MovingTheCabinetRetracesOnlyThePathsThatMetIt) {
 }
 
 TEST(PathCache, MovingTheLampRetracesEveryPathThatChoseAnEmitter) {
-    SceneLab lab(studio());
-    MeasureOptions o;
-    o.pathsPerPoint = 8;
-    PathCache cache(lab.scene);
-    measureSamplers(*lab.tracer, o, &cache);
-    cache.commit();
-    Layout layout = initialLayout(lab.scene);
-    layout.placements[size_t(entityNamed(lab.scene, "lamp"))].position.x += 0.1;
-    lab.rt->setLayout(layout);
-    lab.tracer->updateLayout();
     // Every path samples an emitter at its first vertex (the scene has two).
-    EXPECT_EQ(measureSamplers(*lab.tracer, o, &cache).reusedPaths, 0u);
+    EXPECT_EQ(afterMoving("lamp", 0.1, 8).reusedPaths, 0u);
 }
 
 TEST(PathCache, AMemoryBoundOnlyCostsTime) {
