@@ -7,10 +7,14 @@
 #include <chrono>
 #include <csignal>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
+#include <iterator>
 #include <unistd.h>
 
 #include "commands.h"
+#include <luxplan/core/atomic_file.h>
+#include <luxplan/core/error.h>
 #include <luxplan/daylight/daylight.h>
 #include <luxplan/io/layout_io.h>
 #include <luxplan/io/scene_loader.h>
@@ -23,8 +27,33 @@
 namespace luxplan::cli {
 namespace {
 
+// SIGINT (Ctrl-C), SIGTERM and SIGHUP stop the search; the best layout is written and
+// the exit status is 128 + the signal, the shell's convention (130, 143, 129).
 std::atomic<bool> interrupted{false};
-extern "C" void onInterrupt(int) { interrupted.store(true); }
+std::atomic<int> stopSignal{0};
+extern "C" void onInterrupt(int signal) {
+    stopSignal.store(signal);
+    interrupted.store(true);
+}
+constexpr int kStopSignals[] = {SIGINT, SIGTERM, SIGHUP};
+
+// Catches the stop signals for its lifetime.
+class StopSignals {
+public:
+    StopSignals() {
+        interrupted.store(false);
+        stopSignal.store(0);
+        for (size_t k = 0; k < std::size(kStopSignals); ++k) previous_[k] = std::signal(kStopSignals[k], onInterrupt);
+    }
+    ~StopSignals() {
+        for (size_t k = 0; k < std::size(kStopSignals); ++k) std::signal(kStopSignals[k], previous_[k]);
+    }
+    StopSignals(const StopSignals&) = delete;
+    StopSignals& operator=(const StopSignals&) = delete;
+
+private:
+    void (*previous_[std::size(kStopSignals)])(int) = {};
+};
 
 struct OptimizeArgs {
     std::string scene, out;
@@ -62,9 +91,22 @@ void showProgress(const Progress& p, bool tty) {
     std::cerr << (tty ? "\r" : "") << line << (tty ? "\033[K" : "\n") << std::flush;
 }
 
-// Returns true when the run was interrupted (Ctrl-C) after writing its outputs.
-bool runOptimize(const OptimizeArgs& args) {
+// Fails now, not after the search, when the output folder cannot take files.
+void checkOutputFolder(const std::filesystem::path& folder) {
+    std::error_code ec;
+    std::filesystem::create_directories(folder, ec);
+    if (ec) throw IoError(folder.string() + ": cannot create the output folder (" + ec.message() + ")");
+    const std::filesystem::path probe = folder / ".luxplan-write-check";
+    writeFileAtomically(probe, "");
+    std::filesystem::remove(probe, ec);
+}
+
+// Returns the signal that interrupted the run after its outputs were written, or 0.
+int runOptimize(const OptimizeArgs& args) {
+    // From the start, so that a signal during loading still ends in written outputs.
+    StopSignals stopSignals;
     const Scene original = io::loadScene(args.scene);
+    checkOutputFolder(args.out);
     std::optional<DaylightEnvironment> daylight;
     if (original.daylight) daylight = buildDaylight(*original.daylight, original.site);
 
@@ -98,13 +140,10 @@ bool runOptimize(const OptimizeArgs& args) {
     Optimizer optimizer(scene, options, lighting && scene.objective.lightingWeight > 0 ? lighting.get() : nullptr);
     optimizer.initialize();
     Layout start = optimizer.current();  // the comparison picture's left side
-    interrupted.store(false);
-    auto previous = std::signal(SIGINT, onInterrupt);
     bool tty = !args.quiet && isatty(STDERR_FILENO);
     ProgressCallback progress;
     if (!args.quiet) progress = [tty](const Progress& p) { showProgress(p, tty); };
     OptimizerResult result = optimizer.run(progress, &interrupted);
-    std::signal(SIGINT, previous);
     if (tty) std::cerr << "\n";
     if (result.stop == StopReason::Cancelled) std::cerr << "interrupted: writing the best layout found so far\n";
 
@@ -152,7 +191,7 @@ bool runOptimize(const OptimizeArgs& args) {
         std::cout << "  lighting: " << lighting->evaluations() << " evaluations, "
                   << lighting->rays().closest + lighting->rays().shadow << " rays, " << lighting->tracedPaths()
                   << " paths traced, " << lighting->reusedPaths() << " reused from earlier layouts\n";
-    return result.stop == StopReason::Cancelled;
+    return result.stop == StopReason::Cancelled ? stopSignal.load() : 0;
 }
 
 }  // namespace
@@ -183,9 +222,8 @@ void registerOptimizeCommand(CLI::App& app, int& threads) {
     cmd->add_flag("--no-pictures", args->noPictures, "Skip the pictures, scene.glb and report.html");
     cmd->add_option("--spp", args->spp, "Samples per pixel of render.png (default 16)")->check(CLI::PositiveNumber);
     cmd->callback([args] {
-        // 130 = 128 + SIGINT, the shell's convention for a run stopped by Ctrl-C.
         namingScene(args->scene, [&] {
-            if (runOptimize(*args)) throw CLI::RuntimeError(130);
+            if (int signal = runOptimize(*args)) throw CLI::RuntimeError(128 + signal);
         });
     });
 }

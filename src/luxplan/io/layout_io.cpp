@@ -1,10 +1,10 @@
 #include <luxplan/io/layout_io.h>
 
-#include <fstream>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
 
+#include <luxplan/core/atomic_file.h>
 #include <luxplan/json/fields.h>
 #include <luxplan/json/parse.h>
 
@@ -26,9 +26,7 @@ std::string layoutToJson(const Scene& scene, const Layout& layout) {
 }
 
 void writeLayout(const std::filesystem::path& file, const Scene& scene, const Layout& layout) {
-    std::ofstream out(file);
-    out << layoutToJson(scene, layout);
-    if (!out) throw IoError("cannot write " + file.string());
+    writeFileAtomically(file, layoutToJson(scene, layout));
 }
 
 namespace {

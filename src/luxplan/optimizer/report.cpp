@@ -2,11 +2,12 @@
 #include <luxplan/optimizer/report.h>
 
 #include <cmath>
-#include <fstream>
+#include <sstream>
 
 #include <nlohmann/json.hpp>
 
 #include <luxplan/constraints/constraint_type.h>
+#include <luxplan/core/atomic_file.h>
 #include <luxplan/core/error.h>
 #include <luxplan/constraints/penalty.h>
 #include <luxplan/lightsamplers/sampler_type.h>
@@ -136,13 +137,11 @@ std::string reportJson(const Scene& scene, const OptimizerResult& r) {
 }
 
 void writeReport(const std::filesystem::path& file, const Scene& scene, const OptimizerResult& result) {
-    std::ofstream out(file);
-    out << reportJson(scene, result);
-    if (!out) throw IoError("cannot write " + file.string());
+    writeFileAtomically(file, reportJson(scene, result));
 }
 
 void writeTrace(const std::filesystem::path& file, const OptimizerResult& result) {
-    std::ofstream out(file);
+    std::ostringstream out;
     out.precision(10);
     out << "iteration,current,best,feasible\n";
     for (const TracePoint& t : result.trace) {
@@ -150,7 +149,7 @@ void writeTrace(const std::filesystem::path& file, const OptimizerResult& result
         if (std::isfinite(t.best)) out << t.best;
         out << ',' << (t.feasible ? 1 : 0) << '\n';
     }
-    if (!out) throw IoError("cannot write " + file.string());
+    writeFileAtomically(file, out.str());
 }
 
 void writeOptimizerOutputs(const std::filesystem::path& folder, const Scene& scene, const OptimizerResult& result) {

@@ -5,14 +5,15 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-#include <fstream>
 #include <limits>
 #include <map>
+#include <sstream>
 #include <string>
 #include <vector>
 
 #include <tiny_gltf.h>
 
+#include <luxplan/core/atomic_file.h>
 #include <luxplan/core/error.h>
 #include <luxplan/emitters/emitter_shape.h>
 
@@ -303,12 +304,10 @@ void writeGlb(const std::filesystem::path& file, const Scene& scene, const Layou
     // WriteGltfSceneToStream(binary) writes what WriteGltfSceneToFile(embedImages,
     // embedBuffers, binary) would; the stream is ours so that a file that cannot be
     // opened or written is reported (tinygltf 2.7's file writer does not check).
-    std::ofstream out(file, std::ios::binary);
-    if (!out) throw IoError("cannot write " + file.string());
+    std::ostringstream out(std::ios::binary);
     tinygltf::TinyGLTF writer;
-    bool ok = writer.WriteGltfSceneToStream(&glb.model(), out, false, true);
-    out.close();
-    if (!ok || !out) throw IoError("cannot write " + file.string());
+    if (!writer.WriteGltfSceneToStream(&glb.model(), out, false, true)) throw IoError("cannot write " + file.string());
+    writeFileAtomically(file, out.str());
 }
 
 }  // namespace luxplan

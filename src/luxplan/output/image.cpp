@@ -2,11 +2,11 @@
 // anti-aliasing), the built-in 5x7 font, and PNG through Debian's libstb.
 #include <luxplan/output/image.h>
 
-#include <fstream>
 
 #include <stb_image.h>
 #include <stb_image_write.h>
 
+#include <luxplan/core/atomic_file.h>
 #include <luxplan/core/error.h>
 
 namespace luxplan {
@@ -262,11 +262,7 @@ std::vector<uint8_t> encodePng(const Image& image) {
 
 void writePng(const Image& image, const std::filesystem::path& file) {
     std::vector<uint8_t> bytes = encodePng(image);
-    std::ofstream out(file, std::ios::binary | std::ios::trunc);
-    if (!out) throw IoError(file.string() + ": cannot open for writing");
-    out.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
-    out.close();
-    if (!out) throw IoError(file.string() + ": write failed");
+    writeFileAtomically(file, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
 }
 
 Image readPng(const std::filesystem::path& file) {

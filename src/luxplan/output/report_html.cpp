@@ -4,10 +4,10 @@
 
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <sstream>
 
 #include <luxplan/constraints/constraint_type.h>
+#include <luxplan/core/atomic_file.h>
 #include <luxplan/core/error.h>
 #include <luxplan/constraints/penalty.h>
 #include <luxplan/lightsamplers/sampler_type.h>
@@ -308,10 +308,7 @@ std::string reportHtml(const std::filesystem::path& folder, const Scene& scene, 
 
 void writeReportHtml(const std::filesystem::path& folder, const Scene& scene, const OptimizerResult* result,
                      const ReportData& data) {
-    std::string html = reportHtml(folder, scene, result, data);
-    std::ofstream out(folder / "report.html", std::ios::binary);
-    out << html;
-    if (!out) throw IoError("cannot write " + (folder / "report.html").string());
+    writeFileAtomically(folder / "report.html", reportHtml(folder, scene, result, data));
 }
 
 }  // namespace luxplan

@@ -1,0 +1,67 @@
+// A long run stopped by SIGINT, SIGTERM or SIGHUP writes its best layout, whole, and
+// exits with 128 + the signal; an output folder that cannot take files is refused
+// before the search starts.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <csignal>
+#include <filesystem>
+#include <fstream>
+#include <thread>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <nlohmann/json.hpp>
+
+#include "run_cli.h"
+#include "support/temp_files.h"
+
+namespace luxplan {
+namespace {
+
+const std::string kScene = std::string(LUXPLAN_SOURCE_DIR) + "/scenes/paper/fig7-office-morning.json";  // never reaches C = 0
+
+TEST(CliSignals, EachStopSignalWritesTheBestLayout) {
+    for (int signal : {SIGINT, SIGTERM, SIGHUP}) {
+        test::TempDir dir;
+        const std::string out = (dir.path() / "out").string();
+        const pid_t pid = fork();
+        ASSERT_GE(pid, 0);
+        if (pid == 0) {
+            std::freopen("/dev/null", "w", stdout);
+            std::freopen("/dev/null", "w", stderr);
+            execl(LUXPLAN_CLI, "luxplan", "optimize", kScene.c_str(), "-o", out.c_str(), "--iterations", "100000000", "--paths",
+                  "4", "--threads", "1", "-q", "--no-pictures", static_cast<char*>(nullptr));
+            _exit(127);
+        }
+        // Signal once the signals are caught (the output folder is made after that), at
+        // whatever stage the run is.
+        for (int k = 0; k < 200 && !std::filesystem::exists(out); ++k) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+        std::this_thread::sleep_for(std::chrono::milliseconds(300));
+        kill(pid, signal);
+        int status = 0;
+        ASSERT_EQ(waitpid(pid, &status, 0), pid);
+        ASSERT_TRUE(WIFEXITED(status)) << "signal " << signal;
+        EXPECT_EQ(WEXITSTATUS(status), 128 + signal);
+        for (const char* name : {"layout.json", "report.json"}) {
+            std::ifstream in(std::filesystem::path(out) / name);
+            ASSERT_TRUE(in) << name;
+            EXPECT_TRUE(nlohmann::json::accept(in)) << name << " is not whole";
+        }
+        for (const auto& entry : std::filesystem::directory_iterator(out))
+            EXPECT_EQ(entry.path().string().find(".part-"), std::string::npos) << entry.path();
+    }
+}
+
+TEST(CliSignals, AnUnwritableOutputFolderIsRefusedFirst) {
+    test::TempDir dir;
+    const auto file = dir.write("a-file", "x");
+    const auto started = std::chrono::steady_clock::now();
+    test::CliResult r = test::runCli("optimize " + kScene + " -o " + (file / "out").string() + " --iterations 100000000 -q");
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_NE(r.output.find((file / "out").string() + ": cannot create the output folder"), std::string::npos) << r.output;
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count(), 30.0);
+}
+
+}  // namespace
+}  // namespace luxplan
