@@ -32,7 +32,8 @@ namespace {
 std::atomic<bool> interrupted{false};
 std::atomic<int> stopSignal{0};
 extern "C" void onInterrupt(int signal) {
-    stopSignal.store(signal);
+    int none = 0;
+    stopSignal.compare_exchange_strong(none, signal);  // the first one sets the exit status
     interrupted.store(true);
 }
 constexpr int kStopSignals[] = {SIGINT, SIGTERM, SIGHUP};
@@ -181,17 +182,24 @@ int runOptimize(const OptimizeArgs& args) {
         OutputOptions pictures;
         pictures.seed = options.seed;
         pictures.initialLabel = "start";
+        // A (second) stop signal from now on skips the pictures still to make.
+        interrupted.store(false);
+        pictures.cancel = &interrupted;
         if (args.spp > 0) pictures.renderSamplesPerPixel = args.spp;
         RunOutputs outputs = writeRunOutputs(args.out, scene, start, result.best, &result, daylight ? &*daylight : nullptr, pictures);
-        std::cout << "  wrote";
-        for (const auto& f : outputs.files) std::cout << " " << f.filename().string();
-        std::cout << " in " << duration(outputs.seconds) << "\n";
+        if (outputs.files.empty() && outputs.cancelled) {
+            std::cout << "  pictures: stopped before the first was written\n";
+        } else {
+            std::cout << "  wrote";
+            for (const auto& f : outputs.files) std::cout << " " << f.filename().string();
+            std::cout << " in " << duration(outputs.seconds) << (outputs.cancelled ? " (stopped: the rest skipped)" : "") << "\n";
+        }
     }
     if (lighting)
         std::cout << "  lighting: " << lighting->evaluations() << " evaluations, "
                   << lighting->rays().closest + lighting->rays().shadow << " rays, " << lighting->tracedPaths()
                   << " paths traced, " << lighting->reusedPaths() << " reused from earlier layouts\n";
-    return result.stop == StopReason::Cancelled ? stopSignal.load() : 0;
+    return result.stop == StopReason::Cancelled || interrupted.load() ? stopSignal.load() : 0;
 }
 
 }  // namespace

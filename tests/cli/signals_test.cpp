@@ -1,6 +1,6 @@
 // A long run stopped by SIGINT, SIGTERM or SIGHUP writes its best layout, whole, and
-// exits with 128 + the signal; an output folder that cannot take files is refused
-// before the search starts.
+// exits with 128 + the signal; a second Ctrl-C skips the pictures still to make; an
+// output folder that cannot take files is refused before the search starts.
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -51,6 +51,39 @@ TEST(CliSignals, EachStopSignalWritesTheBestLayout) {
         for (const auto& entry : std::filesystem::directory_iterator(out))
             EXPECT_EQ(entry.path().string().find(".part-"), std::string::npos) << entry.path();
     }
+}
+
+TEST(CliSignals, ASecondCtrlCSkipsThePictures) {
+    test::TempDir dir;
+    const std::string out = (dir.path() / "out").string();
+    const pid_t pid = fork();
+    ASSERT_GE(pid, 0);
+    if (pid == 0) {
+        std::freopen("/dev/null", "w", stdout);
+        std::freopen("/dev/null", "w", stderr);
+        // Pictures that would take minutes: the second signal surely comes before them.
+        execl(LUXPLAN_CLI, "luxplan", "optimize", kScene.c_str(), "-o", out.c_str(), "--iterations", "100000000", "--paths", "4",
+              "--threads", "1", "-q", "--spp", "4096", static_cast<char*>(nullptr));
+        _exit(127);
+    }
+    const auto layout = std::filesystem::path(out) / "layout.json";
+    for (int k = 0; k < 200 && !std::filesystem::exists(out); ++k) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    kill(pid, SIGINT);
+    for (int k = 0; k < 600 && !std::filesystem::exists(layout); ++k) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    kill(pid, SIGINT);
+    int status = 0;
+    for (int k = 0; k < 1200 && waitpid(pid, &status, WNOHANG) == 0; ++k) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    if (waitpid(pid, &status, WNOHANG) == 0) {
+        kill(pid, SIGKILL);
+        waitpid(pid, &status, 0);
+        FAIL() << "the second Ctrl-C did not stop the pictures within 60 s";
+    }
+    ASSERT_TRUE(WIFEXITED(status));
+    EXPECT_EQ(WEXITSTATUS(status), 130);
+    std::ifstream in(layout);
+    EXPECT_TRUE(nlohmann::json::accept(in));
+    EXPECT_FALSE(std::filesystem::exists(std::filesystem::path(out) / "render.png"));
 }
 
 TEST(CliSignals, AnUnwritableOutputFolderIsRefusedFirst) {

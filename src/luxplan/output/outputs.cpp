@@ -44,6 +44,12 @@ RunOutputs writeRunOutputs(const std::filesystem::path& folder, const Scene& sce
         lap = now;
     };
     auto wrote = [&](const std::filesystem::path& file) { out.files.push_back(file); };
+    // A stop signal (options.cancel) skips every step not yet begun; what is written stays.
+    auto stopped = [&] { return out.cancelled = out.cancelled || (options.cancel && options.cancel->load()); };
+    auto finish = [&] {
+        out.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+        return out;
+    };
 
     bool fromResult = result && result->bestEvaluation.lightingEvaluated && sameLayout(finalLayout, result->best);
     bool compare = options.comparison && !sameLayout(initialLayout, finalLayout);
@@ -67,10 +73,12 @@ RunOutputs writeRunOutputs(const std::filesystem::path& folder, const Scene& sce
         out.samplers = measureSamplers(tracer, measure).samplers;
     if (!scene.samplers.empty()) finalData.samplers = out.samplers;
     if (!fromResult && !scene.samplers.empty()) timed("samplers (" + options.finalLabel + ")");
+    if (stopped()) return finish();
     if (grids) {
         finalData.workPlane = workPlane();
         timed("work plane (" + options.finalLabel + ")");
     }
+    if (stopped()) return finish();
     if (options.render) {
         RenderOptions ro;
         ro.width = options.renderWidth;
@@ -78,10 +86,14 @@ RunOutputs writeRunOutputs(const std::filesystem::path& folder, const Scene& sce
         ro.samplesPerPixel = options.renderSamplesPerPixel;
         ro.denoise = options.renderDenoise;
         ro.seed = options.seed;
-        writePng(renderPerspective(tracer, defaultCamera(scene), ro), folder / "render.png");
+        ro.cancel = options.cancel;
+        Image render = renderPerspective(tracer, defaultCamera(scene), ro);
+        if (stopped()) return finish();  // rows after the signal were not traced
+        writePng(render, folder / "render.png");
         wrote(folder / "render.png");
         timed("render.png");
     }
+    if (stopped()) return finish();
     if (options.glb) {
         writeGlb(folder / "scene.glb", scene, finalLayout);
         wrote(folder / "scene.glb");
@@ -89,6 +101,7 @@ RunOutputs writeRunOutputs(const std::filesystem::path& folder, const Scene& sce
     }
 
     // The initial layout, for the comparison.
+    if (stopped()) return finish();
     if (compare) {
         rt.setLayout(initialLayout);
         tracer.updateLayout();
@@ -98,6 +111,7 @@ RunOutputs writeRunOutputs(const std::filesystem::path& folder, const Scene& sce
     }
 
     // Plans on one colour scale, so that the two sides compare.
+    if (stopped()) return finish();
     PlanOptions plan;
     if (grids) {
         std::vector<double> values = finalData.workPlane->values;
@@ -127,6 +141,7 @@ RunOutputs writeRunOutputs(const std::filesystem::path& folder, const Scene& sce
         timed("convergence.png");
     }
 
+    if (stopped()) return finish();
     if (options.html) {
         ReportData data;
         data.title = options.title;
@@ -143,8 +158,7 @@ RunOutputs writeRunOutputs(const std::filesystem::path& folder, const Scene& sce
         wrote(folder / "report.html");
         timed("report.html");
     }
-    out.seconds = std::chrono::duration<double>(Clock::now() - start).count();
-    return out;
+    return finish();
 }
 
 }  // namespace luxplan

@@ -3,6 +3,7 @@
 // scene.glb and report.html, written into one folder.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -33,11 +34,14 @@ struct OutputOptions {
     uint64_t seed = 1;
     std::string title;              // report.html's title; empty: "luxplan: <scene name>"
     std::string initialLabel = "initial", finalLabel = "optimized";
+    // Once true (a stop signal), the steps not yet begun are skipped.
+    const std::atomic<bool>* cancel = nullptr;
 };
 
 struct RunOutputs {
     std::vector<std::filesystem::path> files;  // written, in order
     std::vector<ReportTiming> timings;         // per step
+    bool cancelled = false;                    // OutputOptions::cancel stopped it early
     std::vector<SamplerResult> samplers;       // the final layout's sampler values shown
     double seconds = 0;
 };

@@ -98,6 +98,7 @@ LuminanceImage renderLuminance(const PathTracer& tracer, const Camera& camera, c
     const CameraRays rays(camera, out.width, out.height);
 
     parallelFor(size_t(out.height), [&](size_t row) {
+        if (options.cancel && options.cancel->load(std::memory_order_relaxed)) return;
         const int y = int(row);
         RayStats stats;
         for (int x = 0; x < out.width; ++x) {

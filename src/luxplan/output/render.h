@@ -3,6 +3,7 @@
 // "initial vs optimized".
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -31,6 +32,8 @@ struct RenderOptions {
     uint64_t seed = 1;
     double exposure = 0;    // multiplies luminance before the tone curve; 0: automatic
     bool denoise = true;    // renderPerspective: edge-avoiding à-trous filter (denoise.h)
+    // Once true, rows not yet begun stay black (the caller discards the image).
+    const std::atomic<bool>* cancel = nullptr;
 };
 
 // Luminance (cd/m^2) per pixel, row-major, top row first.
