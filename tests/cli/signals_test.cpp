@@ -21,23 +21,31 @@ namespace {
 
 const std::string kScene = std::string(LUXPLAN_SOURCE_DIR) + "/scenes/paper/fig7-office-morning.json";  // never reaches C = 0
 
+// An endless search writing to `out`, started in a child process; returns once it
+// catches its stop signals (it makes the output folder after that), at whatever
+// stage the run then is.
+template <typename... Extra>
+pid_t startSearch(const std::string& out, Extra... extra) {
+    const pid_t pid = fork();
+    if (pid == 0) {
+        std::freopen("/dev/null", "w", stdout);
+        std::freopen("/dev/null", "w", stderr);
+        execl(LUXPLAN_CLI, "luxplan", "optimize", kScene.c_str(), "-o", out.c_str(), "--iterations", "100000000", "--paths", "4",
+              "--threads", "1", "-q", extra..., static_cast<char*>(nullptr));
+        _exit(127);
+    }
+    for (int k = 0; k < 200 && pid > 0 && !std::filesystem::exists(out); ++k)
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    return pid;
+}
+
 TEST(CliSignals, EachStopSignalWritesTheBestLayout) {
     for (int signal : {SIGINT, SIGTERM, SIGHUP}) {
         test::TempDir dir;
         const std::string out = (dir.path() / "out").string();
-        const pid_t pid = fork();
-        ASSERT_GE(pid, 0);
-        if (pid == 0) {
-            std::freopen("/dev/null", "w", stdout);
-            std::freopen("/dev/null", "w", stderr);
-            execl(LUXPLAN_CLI, "luxplan", "optimize", kScene.c_str(), "-o", out.c_str(), "--iterations", "100000000", "--paths",
-                  "4", "--threads", "1", "-q", "--no-pictures", static_cast<char*>(nullptr));
-            _exit(127);
-        }
-        // Signal once the signals are caught (the output folder is made after that), at
-        // whatever stage the run is.
-        for (int k = 0; k < 200 && !std::filesystem::exists(out); ++k) std::this_thread::sleep_for(std::chrono::milliseconds(50));
-        std::this_thread::sleep_for(std::chrono::milliseconds(300));
+        const pid_t pid = startSearch(out, "--no-pictures");
+        ASSERT_GT(pid, 0);
         kill(pid, signal);
         int status = 0;
         ASSERT_EQ(waitpid(pid, &status, 0), pid);
@@ -56,19 +64,10 @@ TEST(CliSignals, EachStopSignalWritesTheBestLayout) {
 TEST(CliSignals, ASecondCtrlCSkipsThePictures) {
     test::TempDir dir;
     const std::string out = (dir.path() / "out").string();
-    const pid_t pid = fork();
-    ASSERT_GE(pid, 0);
-    if (pid == 0) {
-        std::freopen("/dev/null", "w", stdout);
-        std::freopen("/dev/null", "w", stderr);
-        // Pictures that would take minutes: the second signal surely comes before them.
-        execl(LUXPLAN_CLI, "luxplan", "optimize", kScene.c_str(), "-o", out.c_str(), "--iterations", "100000000", "--paths", "4",
-              "--threads", "1", "-q", "--spp", "4096", static_cast<char*>(nullptr));
-        _exit(127);
-    }
+    // Pictures that would take minutes: the second signal surely comes before them.
+    const pid_t pid = startSearch(out, "--spp", "4096");
+    ASSERT_GT(pid, 0);
     const auto layout = std::filesystem::path(out) / "layout.json";
-    for (int k = 0; k < 200 && !std::filesystem::exists(out); ++k) std::this_thread::sleep_for(std::chrono::milliseconds(50));
-    std::this_thread::sleep_for(std::chrono::milliseconds(300));
     kill(pid, SIGINT);
     for (int k = 0; k < 600 && !std::filesystem::exists(layout); ++k) std::this_thread::sleep_for(std::chrono::milliseconds(50));
     kill(pid, SIGINT);

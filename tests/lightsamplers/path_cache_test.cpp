@@ -203,6 +203,9 @@ TEST(PathCache, AMemoryBoundOnlyCostsTime) {
 TEST(PathFootprint, SegmentsMeetBoxesAsTheSlabsSay) {
     const Bounds3 box({0, 0, 0}, {1, 1, 1});
     auto seg = [](Vec3 a, Vec3 b) { return Segment{{float(a.x), float(a.y), float(a.z)}, {float(b.x), float(b.y), float(b.z)}}; };
+    auto meets = [](const Segment& s, const Bounds3& b, double margin) {
+        return SegmentProbe(s).meets({b.lo - Vec3(margin, margin, margin), b.hi + Vec3(margin, margin, margin)});
+    };
     EXPECT_TRUE(meets(seg({-1, 0.5, 0.5}, {2, 0.5, 0.5}), box, 0));   // through
     EXPECT_TRUE(meets(seg({0.5, 0.5, 0.5}, {0.6, 0.6, 0.6}), box, 0)); // inside
     EXPECT_FALSE(meets(seg({-1, 0.5, 0.5}, {-0.1, 0.5, 0.5}), box, 0)); // stops short

@@ -13,10 +13,7 @@ OpeningPanes::OpeningPanes(const Scene& scene) {
         if (!o.material) continue;  // an open hole
         Bsdf bsdf = makeBsdf(scene.materials[*o.material]);
         if (!bsdf.hasTransmission()) continue;  // a closed opening: opaque, Embree's job
-        // The quad buildRoomShell puts in the opening.
-        WallFrame f = wallFrame(room->box, o.wall);
-        auto r = openingRect(room->box, o);
-        Rect3 rect{f.origin + f.u * r[0] + f.v * r[1], f.u * (r[2] - r[0]), f.v * (r[3] - r[1])};
+        const Rect3 rect = openingQuad(room->box, o);
         panes_.push_back({rect, rect.normal(), std::move(bsdf)});
     }
 }

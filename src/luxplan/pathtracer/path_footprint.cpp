@@ -20,11 +20,6 @@ void PathFootprint::add(const Vec3& p, const Vec3& d, double tMin, double tEnd) 
     segments.push_back({toFloat(p + d * tMin), toFloat(p + d * end)});
 }
 
-bool meets(const Segment& s, const Bounds3& b, double margin) {
-    const Vec3 m(margin, margin, margin);
-    return SegmentProbe(s).meets({b.lo - m, b.hi + m});
-}
-
 SegmentProbe::SegmentProbe(const Segment& s) {
     for (size_t axis = 0; axis < 3; ++axis) {
         from_[axis] = s.from[axis];

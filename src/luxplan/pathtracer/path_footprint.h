@@ -28,11 +28,8 @@ struct PathFootprint {
     void add(const Vec3& p, const Vec3& d, double tMin, double tEnd);
 };
 
-// Whether segment s passes within `margin` of box b (conservatively: it may say yes for a
-// segment that misses by a little more).
-bool meets(const Segment& s, const Bounds3& b, double margin);
-
-// The same test for one segment against many boxes, its divisions done once.
+// Whether a segment passes through boxes (widen a box for a margin), tested box after
+// box with its divisions done once.
 class SegmentProbe {
 public:
     explicit SegmentProbe(const Segment& s);

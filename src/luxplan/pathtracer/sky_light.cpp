@@ -20,9 +20,7 @@ SkyLight::SkyLight(const Scene& scene, const DaylightEnvironment* daylight, bool
         for (const Opening& o : room->openings) {
             // An opening closed by an opaque panel (a door, a shutter) lets no sky in.
             if (o.material && !makeBsdf(scene.materials[*o.material]).hasTransmission()) continue;
-            WallFrame f = wallFrame(room->box, o.wall);
-            auto r = openingRect(room->box, o);
-            openings_.push_back({f.origin + f.u * r[0] + f.v * r[1], f.u * (r[2] - r[0]), f.v * (r[3] - r[1])});
+            openings_.push_back(openingQuad(room->box, o));
             openingNormals_.push_back(cross(openings_.back().edgeU, openings_.back().edgeV));
         }
     }

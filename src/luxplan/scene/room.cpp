@@ -25,6 +25,12 @@ std::array<double, 4> openingRect(const Bounds3& room, const Opening& o) {
     return {o.offset, o.sill, o.offset + o.width, o.sill + o.height};
 }
 
+Rect3 openingQuad(const Bounds3& room, const Opening& o) {
+    const WallFrame f = wallFrame(room, o.wall);
+    const auto r = openingRect(room, o);
+    return {f.origin + f.u * r[0] + f.v * r[1], f.u * (r[2] - r[0]), f.v * (r[3] - r[1])};
+}
+
 namespace {
 
 void addOrientedQuad(TriangleMesh& mesh, const WallFrame& f, double u0, double v0, double u1, double v1,
