@@ -134,11 +134,12 @@ int runOptimize(const OptimizeArgs& args) {
     const int reportPaths = std::max(scene.optimizer.reportPathsPerPoint, measure.pathsPerPoint);
     if (!scene.samplers.empty()) {
         lighting = std::make_unique<PathTracedLighting>(scene, daylight ? &*daylight : nullptr, measure);
-        lighting->setConfirmPaths(reportPaths);  // before stopping at C = 0
+        lighting->setReportPaths(reportPaths);  // confirmations, the final choice and the report
         lighting->setIncremental(!args.fullEvaluation);
     }
 
-    Optimizer optimizer(scene, options, lighting && scene.objective.lightingWeight > 0 ? lighting.get() : nullptr);
+    // With lighting weight 0 the chain never calls it, but the result's report does.
+    Optimizer optimizer(scene, options, lighting.get());
     optimizer.initialize();
     Layout start = optimizer.current();  // the comparison picture's left side
     bool tty = !args.quiet && isatty(STDERR_FILENO);
@@ -148,18 +149,6 @@ int runOptimize(const OptimizeArgs& args) {
     if (tty) std::cerr << "\n";
     if (result.stop == StopReason::Cancelled) std::cerr << "interrupted: writing the best layout found so far\n";
 
-    // The report measures the best layout again with more paths, so that the sampler
-    // values it shows are accurate (the chain used paths_per_point).
-    if (lighting && result.feasible) {
-        MeasureOptions report = measure;
-        report.pathsPerPoint = reportPaths;
-        report.adaptive = false;
-        lighting->setOptions(report);
-        Evaluation& best = result.bestEvaluation;
-        best.lighting = lighting->evaluate(result.best, worldTransforms(scene, result.best), &best.samplers);
-        best.lightingEvaluated = true;
-        best.cost = scene.objective.cost(best.lighting, best.geometry);
-    }
     writeOptimizerOutputs(args.out, scene, result);
     if (flattened) {
         // layout.json in the scene file's hierarchy, so that --layout reads it back;
@@ -172,9 +161,16 @@ int runOptimize(const OptimizeArgs& args) {
     }
     std::cout << "optimize: " << result.iterations << " iterations in " << duration(result.seconds) << " ("
               << stopReasonName(result.stop) << ")";
-    if (result.feasible)
-        std::cout << "; best C " << result.bestEvaluation.cost << " (L " << result.bestEvaluation.lighting << ", G "
-                  << result.bestEvaluation.geometry << ") at iteration " << result.bestIteration;
+    if (result.feasible) {
+        const Evaluation& best = result.bestEvaluation;
+        std::cout << "; best C " << best.cost;
+        if (best.costError > 0) std::cout << " +- " << best.costError;
+        std::cout << " (L " << best.lighting << ", G " << best.geometry << ") at iteration " << result.bestIteration;
+        if (best.lightingEvaluated && result.independentMeasurements > 0)
+            std::cout << "\n  measured independently at " << reportPaths << " paths per point; the search estimated C "
+                      << result.bestSearchEvaluation.cost << " (candidate " << result.chosenCandidate + 1 << " of "
+                      << result.candidates.size() << ")";
+    }
     else
         std::cout << "; no layout passed the geometric rules";
     std::cout << "\n  wrote " << args.out << "/layout.json, report.json, trace.csv\n";
