@@ -60,7 +60,8 @@ struct OptimizeArgs {
     std::string scene, out;
     int iterations = -1, paths = 0, spp = 0;
     int64_t seed = -1;
-    bool flat = false, quiet = false, noPictures = false, fixedPaths = false, fullEvaluation = false;
+    bool flat = false, quiet = false, noPictures = false, fixedPaths = false, fullEvaluation = false,
+         freshNoise = false, noiseBlind = false;
     std::string sampling = "sobol";
 };
 
@@ -115,6 +116,7 @@ int runOptimize(const OptimizeArgs& args) {
     if (args.iterations >= 0) options.iterations = args.iterations;
     if (args.seed >= 0) options.seed = uint64_t(args.seed);
     if (args.flat) options.hierarchy = Hierarchy::Flat;
+    if (args.noiseBlind) options.noiseAware = false;
     // Flat: the same furniture without groups, kept together by cohesion constraints.
     std::optional<FlatScene> flattened;
     if (options.hierarchy == Hierarchy::Flat) {
@@ -136,6 +138,7 @@ int runOptimize(const OptimizeArgs& args) {
         lighting = std::make_unique<PathTracedLighting>(scene, daylight ? &*daylight : nullptr, measure);
         lighting->setReportPaths(reportPaths);  // confirmations, the final choice and the report
         lighting->setIncremental(!args.fullEvaluation);
+        lighting->setFreshNoise(args.freshNoise);
     }
 
     // With lighting weight 0 the chain never calls it, but the result's report does.
@@ -220,6 +223,11 @@ void registerOptimizeCommand(CLI::App& app, int& threads) {
     cmd->add_flag("--full-evaluation", args->fullEvaluation,
                   "Trace every path of every evaluated layout (default: only the paths a move can change are "
                   "traced again; the numbers are the same)");
+    cmd->add_flag("--fresh-noise", args->freshNoise,
+                  "Draw every lighting estimate anew and test with the penalty method: the chain then follows the "
+                  "true costs, at twice the evaluations and without the path cache (default: common random numbers)");
+    cmd->add_flag("--noise-blind", args->noiseBlind,
+                  "The paper's plain Metropolis test on the estimates, the temperature free to fall below their noise");
     cmd->add_flag("--flat", args->flat,
                   "Flat baseline (the paper's Figure 6): no groups, every object on its own, groups kept by cohesion constraints");
     cmd->add_flag("-q,--quiet", args->quiet, "No progress line");

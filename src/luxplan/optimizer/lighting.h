@@ -38,6 +38,11 @@ public:
         (void)seed;
         return evaluate(layout, world, out);
     }
+    // Whether two evaluations of one layout draw independent noise. The path tracer's
+    // do not (every evaluation uses the same seed: common random numbers, so its
+    // estimates are a fixed function of the layout). If they do, the chain measures
+    // its current layout again before each test, as the penalty method needs.
+    virtual bool drawsAnew() const { return false; }
     // The chain accepted (commit) or refused (revert) the layout last evaluated: an
     // evaluator that keeps work between layouts (the path cache) keeps it for the
     // accepted layout only. Evaluations measure against the last committed layout.

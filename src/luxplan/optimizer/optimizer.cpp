@@ -143,13 +143,26 @@ double Optimizer::differenceVariance(const Evaluation& a, const Evaluation& b) c
 }
 
 bool Optimizer::metropolis(const Evaluation& proposed, double logHastings, double temperature, Rng& rng) const {
-    // Metropolis-Hastings: min(1, exp(-(C' - C) / T) q(x'->x) / q(x->x')), with the
-    // penalty method's -s^2 / (2 T^2) when noise-aware: for a difference estimated
-    // with Gaussian noise of variance s^2 it keeps detailed balance for the true
-    // costs, where the plain test would favour lucky estimates.
+    // Metropolis-Hastings: min(1, exp(-(C' - C) / T) q(x'->x) / q(x->x')).
     double logA = -(proposed.cost - currentEval_.cost) / temperature + logHastings;
-    if (options_.noiseAware) logA -= differenceVariance(currentEval_, proposed) / (2 * temperature * temperature);
+    // The penalty method (Ceperley and Dewing 1999) when both ends are fresh estimates:
+    // -s^2 / (2 T^2), s^2 the variance of the estimated difference, keeps detailed
+    // balance for the true costs where the plain test favours lucky draws. With common
+    // random numbers the estimates are a fixed function of the layout, for which the
+    // plain test is exact (the chain samples exp(-C_estimated / T)) and the penalty
+    // would not be: a(d) / a(-d) = exp(-d / T) fails for |d| < s^2 / (2 T).
+    if (options_.noiseAware && lighting_ && lighting_->drawsAnew())
+        logA -= differenceVariance(currentEval_, proposed) / (2 * temperature * temperature);
     return logA >= 0 || rng.uniform() < std::exp(logA);
+}
+
+void Optimizer::refreshCurrent() {
+    // The penalty method tests a fresh estimate of the difference: both ends drawn anew.
+    Evaluation& e = currentEval_;
+    e.lighting = lighting_->evaluate(current_, worldTransforms(*scene_, current_), &e.samplers);
+    lighting_->commit();
+    e.costError = costError(e);
+    e.cost = scene_->objective.cost(e.lighting, e.geometry);
 }
 
 void Optimizer::noteNoise(const Evaluation& e) {
@@ -238,6 +251,7 @@ void Optimizer::step() {
     if (!p.valid) {
         ++stats.outside;
     } else {
+        if (lighting_ && lighting_->drawsAnew() && currentEval_.lightingEvaluated) refreshCurrent();
         e = evaluate(proposed, worldTransforms(*scene_, proposed));
         if (currentEval_.rejected) {
             // Repair (only before the first feasible state): descend on the total

@@ -61,11 +61,11 @@ struct OptimizerOptions {
     // it with an independent measurement (LightingEvaluator::measureIndependently); a
     // confirmed C above 0 replaces the best layout's estimate and the run goes on.
     bool stopAtZeroCost = true;
-    // Noise-aware acceptance: the Metropolis test is the penalty method of Ceperley and
-    // Dewing (1999), exp(-dC / T - s^2 / (2 T^2)) with s the standard error of dC, and
-    // a geometric schedule's temperature never falls below the cost's noise (the RMS
-    // standard error of the recent estimates of C). Off: the plain test on the
-    // estimates, as the paper does.
+    // Noise-aware: a geometric schedule's temperature never falls below the cost's
+    // noise (the RMS standard error of the recent estimates of C), and when the
+    // lighting evaluator draws every estimate anew the Metropolis test is the penalty
+    // method of Ceperley and Dewing (1999), exp(-dC / T - s^2 / (2 T^2)) with s the
+    // standard error of dC. Off: the plain test on the estimates, as the paper does.
     bool noiseAware = true;
     // How many distinct layouts the run keeps for its result, and what distinct means
     // (optimizer/candidates.h). At the end, each is measured again independently and
@@ -173,6 +173,7 @@ private:
     // The variance of the estimated difference of C between two evaluations.
     double differenceVariance(const Evaluation& a, const Evaluation& b) const;
     void noteNoise(const Evaluation& e);
+    void refreshCurrent();
     double costError(const Evaluation& e) const;
     // The seed of independent measurement stream `stream`: not the search's.
     uint64_t independentSeed(uint64_t stream) const;

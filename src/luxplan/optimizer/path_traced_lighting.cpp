@@ -1,13 +1,24 @@
 #include <luxplan/optimizer/path_traced_lighting.h>
 
 #include <luxplan/constraints/penalty.h>
+#include <luxplan/core/rng.h>
 
 namespace luxplan {
+namespace {
+
+constexpr uint64_t kFreshTag = 0x6672657368ULL;  // "fresh"
+
+}  // namespace
 
 PathTracedLighting::PathTracedLighting(const Scene& scene, const DaylightEnvironment* daylight, const MeasureOptions& options)
     : scene_(scene), rt_(scene, initialLayout(scene)), tracer_(rt_, daylight), options_(options), cache_(scene) {}
 
 double PathTracedLighting::evaluate(const Layout& /*layout*/, const std::vector<Transform>& world, LightingBreakdown* out) {
+    if (fresh_) {
+        MeasureOptions fresh = options_;
+        fresh.seed = hashValues({options_.seed, kFreshTag, ++freshDraws_});
+        return measure(world, fresh, nullptr, out);
+    }
     return measure(world, options_, incremental_ ? &cache_ : nullptr, out);
 }
 

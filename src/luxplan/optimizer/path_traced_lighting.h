@@ -25,6 +25,12 @@ public:
     // Whether evaluations reuse the paths a move cannot change (on by default; the
     // numbers are the same either way, lightsamplers/path_cache.h).
     void setIncremental(bool on) { incremental_ = on; }
+    // Fresh noise: every evaluation draws its own seed (from the seed and a count of
+    // evaluations, so a run still repeats), without the path cache. The optimizer then
+    // measures its current layout again before each test and uses the penalty method:
+    // exact for the true costs, at twice the evaluations, none of them incremental.
+    void setFreshNoise(bool on) { fresh_ = on; }
+    bool drawsAnew() const override { return fresh_; }
 
     // The full measurement of the last evaluated layout (per-point values, errors).
     const MeasureResult& lastMeasurement() const { return last_; }
@@ -45,6 +51,8 @@ private:
     int reportPaths_ = 0;  // 0: options_.pathsPerPoint
     PathCache cache_;
     bool incremental_ = true;
+    bool fresh_ = false;
+    uint64_t freshDraws_ = 0;
     MeasureResult last_;
     uint64_t evaluations_ = 0;
     RayStats rays_;
