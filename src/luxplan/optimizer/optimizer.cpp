@@ -108,6 +108,11 @@ Evaluation Optimizer::evaluate(const Layout& layout, const std::vector<Transform
         e.lighting = lighting_->evaluate(layout, world, &e.samplers);
         e.lightingEvaluated = true;
         e.costError = costError(e);
+        const auto& measured = e.samplers.samplers;
+        if (measured.size() == scene_->samplers.size()) {
+            samplerRanges_.resize(measured.size());
+            for (size_t k = 0; k < measured.size(); ++k) samplerRanges_[k].add(scene_->samplers[k], measured[k].value, measured[k].standardError);
+        }
     }
     e.cost = scene_->objective.cost(e.lighting, e.geometry);
     return e;
@@ -178,6 +183,7 @@ double Optimizer::temperature() const {
 }
 
 void Optimizer::initialize() {
+    samplerRanges_.clear();
     for (size_t i = 0; i < levels_.size(); ++i) {
         rngs_[i] = Rng(hashValues({options_.seed, kStreamTag, streams_[i]}));
         stats_[i].moves = {};
@@ -364,6 +370,8 @@ OptimizerResult Optimizer::run(const ProgressCallback& progress, const std::atom
     r.iterations = iteration_;
     r.confirmations = confirmations_;
     r.independentMeasurements = independentMeasurements_;
+    r.samplerRanges = samplerRanges_;
+    r.samplerRanges.resize(scene_->samplers.size());
     r.seconds = seconds();
     r.stop = stop;
     r.feasible = feasible_;

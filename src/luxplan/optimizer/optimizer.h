@@ -17,6 +17,7 @@
 #include <luxplan/optimizer/evaluation.h>
 #include <luxplan/optimizer/lighting.h>
 #include <luxplan/optimizer/moves.h>
+#include <luxplan/optimizer/reach.h>
 
 namespace luxplan {
 
@@ -123,6 +124,9 @@ struct OptimizerResult {
     std::vector<Candidate> candidates;
     int chosenCandidate = 0;
     uint64_t reportSeed = 0;  // the seed bestEvaluation's lighting was measured with (0: none)
+    // Per sampler (Scene::samplers order): its range over every layout the search
+    // measured, for the verdict on whether its target can be met (optimizer/reach.h).
+    std::vector<SamplerRange> samplerRanges;
     GeometryResult bestGeometry;  // with every term (per-constraint penalties)
     Evaluation startEvaluation;
     int iterations = 0;  // proposals made
@@ -197,6 +201,7 @@ private:
     std::vector<TracePoint> trace_;
     Candidates candidates_;
     double noiseVariance_ = 0;  // moving mean of costError^2 over lighting evaluations
+    std::vector<SamplerRange> samplerRanges_;
 };
 
 }  // namespace luxplan

@@ -12,6 +12,7 @@
 #include <luxplan/core/error.h>
 #include <luxplan/constraints/penalty.h>
 #include <luxplan/lightsamplers/sampler_type.h>
+#include <luxplan/optimizer/reach.h>
 
 namespace luxplan {
 namespace {
@@ -120,6 +121,15 @@ std::string reportJson(const Scene& scene, const OptimizerResult& r) {
                   {"value", number(m.value)}, {"std_error", number(m.standardError)}, {"target", {number(s.targetMin), number(s.targetMax)}},
                   {"tolerance", s.tolerance}, {"weight", s.weight}, {"penalty", number(lightingPenalty(s, m.value))}};
         if (!m.points.empty()) e["points"] = m.points;
+        if (k < r.samplerRanges.size()) {
+            const SamplerRange& range = r.samplerRanges[k];
+            const ReachVerdict verdict = reachVerdict(s, range, m.value);
+            e["reach"] = {{"verdict", reachName(verdict.reach)},
+                          {"lowest_seen", number(range.lowest)},
+                          {"highest_seen", number(range.highest)},
+                          {"layouts_measured", range.layouts}};
+            if (!verdict.reason.empty()) e["reach"]["reason"] = verdict.reason;
+        }
         samplers.push_back(e);
     }
     j["samplers"] = samplers;
