@@ -172,6 +172,19 @@ TEST(SceneLimits, IntegersAndSeeds) {
     EXPECT_EQ(onlyProblem(s).rfind("/optimizer/seed: expected a whole number in [0, 2^64 - 1], got 1e+30", 0), 0u);
 }
 
+TEST(SceneLimits, HierarchySchedule) {
+    json s = smallScene();
+    test::TempDir dir;
+    s["optimizer"] = {{"inner_iterations", 0}, {"nested", true}};
+    const Scene scene = io::loadScene(dir.write("s.json", s.dump()));
+    EXPECT_EQ(scene.optimizer.innerIterations, 0);  // by degrees of freedom
+    EXPECT_TRUE(scene.optimizer.nested);
+    s["optimizer"] = {{"inner_iterations", -1}};
+    EXPECT_EQ(onlyProblem(s), "/optimizer/inner_iterations: value -1 outside [0, 1000]");
+    s["optimizer"] = {{"nested", "yes"}};
+    EXPECT_EQ(onlyProblem(s).rfind("/optimizer/nested: ", 0), 0u) << onlyProblem(s);
+}
+
 TEST(SceneLimits, TinyTimeStep) {
     json s = smallScene();
     s["site"] = {{"latitude", 38}, {"longitude", 23.7}};
