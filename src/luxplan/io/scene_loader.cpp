@@ -256,6 +256,22 @@ private:
                 break;
             case MaterialType::Glass: m.transmittance = f.number("transmittance", 0.88, kUnit); break;
             case MaterialType::Mirror: m.reflectance = f.color("reflectance").value_or(Vec3(0.9, 0.9, 0.9)); break;
+            case MaterialType::Translucent: {
+                auto r = f.color("reflectance", true), t = f.color("transmittance", true);
+                m.reflectance = r.value_or(Vec3(0.5, 0.5, 0.5));
+                m.diffuseTransmittance = t.value_or(Vec3(0, 0, 0));
+                if (!r || !t) break;
+                // More out than in would create light.
+                static const char* const channels[3] = {"red", "green", "blue"};
+                for (int c = 0; c < 3; ++c)
+                    if ((*r)[c] + (*t)[c] > 1) {
+                        f.error("transmittance", "reflectance + transmittance must be at most 1, got " +
+                                                     formatNumber((*r)[c]) + " + " + formatNumber((*t)[c]) + " in the " +
+                                                     channels[c] + " channel");
+                        break;
+                    }
+                break;
+            }
         }
     }
 
