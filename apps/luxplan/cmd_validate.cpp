@@ -85,7 +85,8 @@ void printSummary(const Scene& s, std::ostream& out) {
     for (const auto& c : s.constraints)
         out << "    " << c.kind->name() << " " << entityName(s, c.a) << " - " << entityName(s, c.b) << ": "
             << c.kind->describe() << "\n";
-    out << "  overlap rule: tolerance " << s.overlap.tolerance << " of the smaller volume, weight " << s.overlap.weight << "\n";
+    out << "  overlap rule: tolerance " << s.overlap.tolerance << " of the smaller volume, weight " << s.overlap.weight
+        << "; walls, static geometry and blockers at most " << 1e3 * s.overlap.wallTolerance << " l\n";
     out << "  objective: lighting weight " << s.objective.lightingWeight << "; optimizer: " << s.optimizer.iterations
         << " iterations, seed " << s.optimizer.seed << ", " << s.optimizer.pathsPerPoint << " paths per point\n";
 }
