@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.h"
+#include <luxplan/constraints/geometry_cost.h>
 #include <luxplan/constraints/penalty.h>
 #include <luxplan/daylight/daylight.h>
 #include <luxplan/io/layout_io.h>
@@ -44,6 +45,13 @@ void runMeasure(const MeasureArgs& args) {
     options.adaptive = args.adaptive;
     options.lowDiscrepancy = args.sampling == "sobol";
     MeasureResult result = measureSamplers(tracer, options);
+    // The objective of Eq. 1 for this layout, as optimize reports it (report.json's C).
+    std::vector<double> values;
+    for (const SamplerResult& r : result.samplers) values.push_back(r.value);
+    const double lighting = lightingCost(scene, values), lightingError = lightingCostError(scene, result.samplers);
+    const GeometryResult geometry = GeometryEvaluator(scene).evaluate(worldTransforms(scene, layout));
+    const double w = scene.objective.lightingWeight;
+    const double cost = scene.objective.cost(lighting, geometry.cost);
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
     if (args.json) {
@@ -68,6 +76,9 @@ void runMeasure(const MeasureArgs& args) {
                               {"paths_per_point", options.pathsPerPoint},
                               {"adaptive", options.adaptive}, {"sampling", args.sampling},
                               {"seed", options.seed},
+                              {"L", lighting}, {"L_std_error", lightingError},
+                              {"G", geometry.cost}, {"C", cost}, {"C_std_error", w * lightingError},
+                              {"geometric_rules_pass", !geometry.rejected},
                               {"seconds", seconds}};
         std::cout << out.dump(2) << "\n";
         return;
@@ -86,7 +97,10 @@ void runMeasure(const MeasureArgs& args) {
                   << s.type->unit() << std::setw(22) << target.str() << std::setprecision(3) << std::setw(10) << penalty
                   << (penalty > 0 ? "  MISSED" : "  ok") << "\n";
     }
-    std::cout << std::setprecision(2) << result.paths << " paths (" << (options.adaptive ? "adaptive, at most " : "")
+    std::cout << std::defaultfloat << std::setprecision(4) << "C " << cost << " +- " << w * lightingError << " (L "
+              << lighting << " +- " << lightingError << ", G " << geometry.cost
+              << (geometry.rejected ? ", rejected by the geometric rules: " + geometry.rejectedBy : std::string()) << ")\n";
+    std::cout << std::fixed << std::setprecision(2) << result.paths << " paths (" << (options.adaptive ? "adaptive, at most " : "")
               << options.pathsPerPoint << " per point), "
               << result.rays.closest + result.rays.shadow << " rays in " << seconds << " s\n";
 }

@@ -60,6 +60,30 @@ TEST(LightingCost, WeightedMeanOfLinearPenalties) {
     EXPECT_EQ(lightingCost(Scene(), {}), 0);
 }
 
+TEST(LightingCostError, SecantOfEachPenaltyAddedInQuadrature) {
+    Scene scene;
+    LightSamplerSpec a, b;
+    a.targetMin = 300, a.targetMax = 500, a.tolerance = 200, a.weight = 1;
+    b.targetMin = 0, b.targetMax = 100, b.tolerance = 50, b.weight = 3;
+    scene.samplers = {a, b};
+    auto result = [](double value, double se) {
+        SamplerResult r;
+        r.value = value, r.standardError = se;
+        return r;
+    };
+    // Below the band: the linear piece's slope 1/200, times the weight share 1/4.
+    EXPECT_NEAR(lightingTermError(scene, 0, result(200, 10)), 0.25 * 10 / 200, 1e-12);
+    // Well inside the band: no error reaches L.
+    EXPECT_EQ(lightingTermError(scene, 0, result(400, 10)), 0);
+    // At the band's edge: half the interval crosses it, so half the slope.
+    EXPECT_NEAR(lightingTermError(scene, 0, result(500, 10)), 0.25 * 0.5 * 10 / 200, 1e-12);
+    // Above b's band: slope 1/50 with the weight share 3/4.
+    const double ea = 0.25 * 10 / 200, eb = 0.75 * 5 / 50.0;
+    EXPECT_NEAR(lightingCostError(scene, {result(200, 10), result(150, 5)}), std::hypot(ea, eb), 1e-12);
+    EXPECT_EQ(lightingCostError(scene, {result(200, 0), result(50, 5)}), 0);
+    EXPECT_THROW(lightingCostError(scene, {result(1, 1)}), std::invalid_argument);
+}
+
 TEST(Penalty, NonFiniteValuesAreNeverOnTarget) {
     // A NaN once scored 0: every comparison with it is false.
     EXPECT_EQ(penalty(std::nan(""), 1, 2, 0.5, 1), kInf);

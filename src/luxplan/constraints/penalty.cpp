@@ -30,4 +30,38 @@ double lightingCost(const Scene& scene, const std::vector<double>& values) {
     return weights > 0 ? sum / weights : 0.0;
 }
 
+namespace {
+
+double totalWeight(const Scene& scene) {
+    double weights = 0;
+    for (const LightSamplerSpec& s : scene.samplers) weights += s.weight;
+    return weights;
+}
+
+double termError(const LightSamplerSpec& s, const SamplerResult& r, double weights) {
+    if (weights <= 0 || r.standardError <= 0) return 0.0;
+    const double up = lightingPenalty(s, r.value + r.standardError);
+    const double down = lightingPenalty(s, r.value - r.standardError);
+    return s.weight / weights * std::abs(up - down) / 2;
+}
+
+}  // namespace
+
+double lightingTermError(const Scene& scene, size_t k, const SamplerResult& result) {
+    return termError(scene.samplers.at(k), result, totalWeight(scene));
+}
+
+double lightingCostError(const Scene& scene, const std::vector<SamplerResult>& results) {
+    if (results.size() != scene.samplers.size())
+        throw std::invalid_argument("lightingCostError: " + std::to_string(results.size()) + " results for " +
+                                    std::to_string(scene.samplers.size()) + " samplers");
+    const double weights = totalWeight(scene);
+    double variance = 0;
+    for (size_t k = 0; k < results.size(); ++k) {
+        const double e = termError(scene.samplers[k], results[k], weights);
+        variance += e * e;
+    }
+    return std::sqrt(variance);
+}
+
 }  // namespace luxplan

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include <luxplan/core/penalty.h>  // penalty(c, bmin, bmax, brej, alpha): Eq. 2, infinite bounds open
+#include <luxplan/lightsamplers/sampler_result.h>
 #include <luxplan/scene/scene.h>
 
 namespace luxplan {
@@ -26,5 +27,14 @@ double lightingPenalty(const LightSamplerSpec& sampler, double value);
 // the weights normalized to a mean of 1; 0 when there are no samplers or all
 // weights are 0. `values[k]` is the measurement of scene.samplers[k].
 double lightingCost(const Scene& scene, const std::vector<double>& values);
+
+// The standard error of sampler k's term of L: its weight share times the secant of
+// its penalty over value +- standard error, halved (the delta method, with a secant
+// instead of the slope so that a value near its band's edge counts the part of its
+// error that crosses it; 0 well inside the band).
+double lightingTermError(const Scene& scene, size_t k, const SamplerResult& result);
+// The standard error of L: samplers are independent estimates, so their terms'
+// errors add in quadrature. `results[k]` is the measurement of scene.samplers[k].
+double lightingCostError(const Scene& scene, const std::vector<SamplerResult>& results);
 
 }  // namespace luxplan
