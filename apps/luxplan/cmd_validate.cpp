@@ -1,9 +1,11 @@
-// `luxplan validate SCENE` (exit 0, or every problem as FILE: /json/path: message)
-// and `luxplan info SCENE` (a summary of what the scene holds).
+// `luxplan validate SCENE` (exit 0, or every problem as FILE: /json/path: message;
+// warnings, checks/scene_warnings.h, on stderr either way) and `luxplan info SCENE`
+// (a summary of what the scene holds).
 #include <iomanip>
 #include <iostream>
 
 #include "commands.h"
+#include <luxplan/checks/scene_warnings.h>
 #include <luxplan/constraints/constraint_type.h>
 #include <luxplan/io/layout_io.h>
 #include <luxplan/io/scene_loader.h>
@@ -85,7 +87,8 @@ void printSummary(const Scene& s, std::ostream& out) {
     for (const auto& c : s.constraints)
         out << "    " << c.kind->name() << " " << entityName(s, c.a) << " - " << entityName(s, c.b) << ": "
             << c.kind->describe() << "\n";
-    out << "  overlap rule: tolerance " << s.overlap.tolerance << " of the smaller volume, weight " << s.overlap.weight << "\n";
+    out << "  overlap rule: tolerance " << s.overlap.tolerance << " of the smaller volume, weight " << s.overlap.weight
+        << "; walls, static geometry and blockers at most " << 1e3 * s.overlap.wallTolerance << " l\n";
     out << "  objective: lighting weight " << s.objective.lightingWeight << "; optimizer: " << s.optimizer.iterations
         << " iterations, seed " << s.optimizer.seed << ", " << s.optimizer.pathsPerPoint << " paths per point\n";
 }
@@ -102,6 +105,11 @@ void registerValidateCommand(CLI::App& app) {
         namingScene(*scene, [&] {
             Scene s = io::loadScene(*scene);
             if (!layout->empty()) io::readLayout(*layout, s);
+            // Valid, but maybe not what was meant: said, without failing.
+            for (Diagnostic w : sceneWarnings(s)) {
+                w.message = "warning: " + w.message;
+                std::cerr << w.str() << "\n";
+            }
         });
         std::cout << *scene << ": valid\n";
     });

@@ -84,9 +84,14 @@ TEST_F(Overlap, WhichPairsCount) {
     EXPECT_FALSE(find(o, OverlapTarget::Static, id("a"), 0));  // the room shell is the walls pair
     EXPECT_TRUE(find(o, OverlapTarget::Walls, id("a"), -1));
     EXPECT_FALSE(find(o, OverlapTarget::Walls, id("fixed1"), -1));
-    // V_ref: 5% of the smaller volume.
+    // V_ref: 5% of the smaller volume between entities; the hard limit (1 litre) against
+    // the walls and static items.
     EXPECT_NEAR(find(o, OverlapTarget::Entity, id("a"), id("set.desk"))->reference, 0.05 * 0.6 * 0.4 * 0.7, 1e-9);
-    EXPECT_NEAR(find(o, OverlapTarget::Walls, id("a"), -1)->reference, 0.05, 1e-9);
+    EXPECT_FALSE(find(o, OverlapTarget::Entity, id("a"), id("set.desk"))->hard());
+    EXPECT_EQ(find(o, OverlapTarget::Walls, id("a"), -1)->reference, 0.001);
+    EXPECT_TRUE(find(o, OverlapTarget::Walls, id("a"), -1)->hard());
+    EXPECT_EQ(find(o, OverlapTarget::Static, id("a"), 1)->reference, 0.001);
+    EXPECT_TRUE(find(o, OverlapTarget::Static, id("a"), 1)->hard());
 }
 
 TEST_F(Overlap, TwoBoxesWithAKnownIntersection) {
@@ -115,14 +120,20 @@ TEST_F(Overlap, RotatedBoxes) {
 }
 
 TEST_F(Overlap, BoxAgainstTheWalls) {
-    place("a", 0.48, 1.5);  // 2 cm through the west wall
+    place("a", 0.48, 1.5);  // 2 cm through the west wall: 20 litres, past the hard limit of 1
     PenaltyTerm t = overlapTerm(OverlapTarget::Walls, id("a"), -1);
     EXPECT_NEAR(t.value, 0.02, 1e-9);
-    EXPECT_FALSE(t.rejects);
+    EXPECT_TRUE(t.rejects);
+    EXPECT_TRUE(t.hardOverlap());
+    EXPECT_EQ(t.walls, wallBit(RoomSide::West));
+    EXPECT_NEAR(t.penalty, 1 + std::pow((0.02 - 0.001) / kHardOverlapScale, 2), 1e-6);
+    EXPECT_EQ(describe(scene, t), "overlap \"a\" / the west wall: 0.02 m3 shared, hard limit 0.001 m3, P = 362");
     place("a", 0.26, 5.88);  // 0.24 through the west wall, 0.38 through the north one
     t = overlapTerm(OverlapTarget::Walls, id("a"), -1);
     EXPECT_NEAR(t.value, 1 - 0.76 * 0.62, 1e-9);
     EXPECT_TRUE(t.rejects);
+    EXPECT_EQ(t.walls, wallBit(RoomSide::West) | wallBit(RoomSide::North));
+    EXPECT_NE(describe(scene, t).find("/ the west wall and the north wall:"), std::string::npos) << describe(scene, t);
     EXPECT_NEAR(volumeOutside(scene.entities[id("a")].voxels, Transform::translate({3, 3, 2.6}),
                               {Bounds3({0, 0, 0}, {6, 6, 3})}),
                 0.6, 1e-9);  // through the ceiling
@@ -133,9 +144,38 @@ TEST_F(Overlap, BoxAgainstStaticGeometry) {
     PenaltyTerm t = overlapTerm(OverlapTarget::Static, id("a"), 1);
     EXPECT_NEAR(t.value, 0.2, 1e-9);
     EXPECT_TRUE(t.rejects);
+    EXPECT_EQ(describe(scene, t).rfind("overlap \"a\" / geometry \"walkway\": 0.2 m3 shared, hard limit 0.001 m3", 0), 0u)
+        << describe(scene, t);
     place("a", 1.0, 5.4);  // against the pillar: 0.3 x 0.6 x 1
     t = overlapTerm(OverlapTarget::Static, id("a"), 2);
     EXPECT_NEAR(t.value, 0.18, 1e-9);
+    EXPECT_TRUE(t.rejects);
+}
+
+TEST_F(Overlap, HardLimitsRejectOnlyBeyondTheirToleranceAndAreNoPartOfG) {
+    // Between entities Eq. 6 is soft (0.02 of a 0.05 V_ref: P = 0.16 in G); into a wall or
+    // a blocker nothing counts within the limit, and anything beyond it rejects.
+    scene.overlap.wallTolerance = 0.025;
+    scene.entities[id("a")].inRoom = false;  // the footprint rule apart (footprint_test.cpp)
+    place("a", 0.48, 1.5);   // 20 litres into the west wall
+    place("b", 3.72, 4.5);   // x [3.22, 4.22]: 220 litres into the walkway [4, 5]
+    PenaltyTerm wall = overlapTerm(OverlapTarget::Walls, id("a"), -1);
+    EXPECT_NEAR(wall.value, 0.02, 1e-9);
+    EXPECT_EQ(wall.reference, 0.025);
+    EXPECT_EQ(wall.penalty, 0);
+    EXPECT_FALSE(wall.rejects);
+    GeometryEvaluator g(scene);
+    GeometryResult r = g.evaluate(worldTransforms(scene, layout), true);
+    EXPECT_TRUE(r.rejected);
+    EXPECT_EQ(r.rejectedBy.rfind("overlap \"b\" / geometry \"walkway\"", 0), 0u) << r.rejectedBy;
+    EXPECT_NEAR(r.violation, std::pow((0.22 - 0.025) / kHardOverlapScale, 2), 1e-3);
+    EXPECT_EQ(r.overlapPenalty, 0);  // no pair of entities overlaps
+    EXPECT_EQ(r.cost, 0);
+    place("b", 3.5, 1.5);
+    r = g.evaluate(worldTransforms(scene, layout), true);
+    EXPECT_FALSE(r.rejected) << r.rejectedBy;
+    EXPECT_EQ(r.cost, 0);  // 20 litres in the wall, within its limit, cost nothing
+    EXPECT_EQ(r.violation, 0);
 }
 
 TEST_F(Overlap, MembersOfAGroupButNotParentAndChild) {

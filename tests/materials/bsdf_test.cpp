@@ -1,5 +1,6 @@
-// Statistical tests of the diffuse and glossy BSDFs: sampling against the pdf
-// (chi-square), pdf normalization, reciprocity and white-furnace energy balance.
+// Statistical tests of the diffuse, glossy and translucent BSDFs: sampling against
+// the pdf (chi-square), pdf normalization, reciprocity and white-furnace energy
+// balance (translucent_test.cpp has the translucent model's own).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -107,6 +108,12 @@ std::vector<SamplingCase> samplingCases() {
     cases.push_back({"coat only alpha 0.3 theta 80", Bsdf::glossy({0.9, 0.8, 0.7}, {0, 0, 0}, 0.3), direction(80, 250)});
     cases.push_back({"glossy back side alpha 0.3", Bsdf::glossy({0.05, 0.05, 0.05}, {0.6, 0.6, 0.6}, 0.3),
                      direction(120, 10)});
+    // Both sides: reflection on wo's, transmission on the other.
+    Bsdf shade = Bsdf::translucent({0.5, 0.45, 0.4}, {0.3, 0.35, 0.2});
+    for (double theta : {0.0, 70.0, 160.0})
+        cases.push_back({"translucent theta " + std::to_string(theta), shade, direction(theta, 200)});
+    cases.push_back({"translucent mostly transmitting", Bsdf::translucent({0.05, 0.05, 0.05}, {0.9, 0.9, 0.9}),
+                     direction(30, 0)});
     return cases;
 }
 
@@ -122,7 +129,7 @@ const std::vector<Histogram>& caseHistograms() {
     return histograms;
 }
 
-TEST(BsdfSampling, DiffuseAndGlossyMatchTheirPdf) {
+TEST(BsdfSampling, NonDeltaModelsMatchTheirPdf) {
     std::vector<SamplingCase> cases = samplingCases();
     double alpha = test::sidakAlpha(kFamilyAlpha, int(cases.size()));
     for (size_t k = 0; k < cases.size(); ++k) {
@@ -154,7 +161,7 @@ TEST(BsdfPdf, IntegratesToTheFractionOfSamplesProduced) {
         double tol = kSigmas * std::sqrt(std::max(p * (1 - p), 1 / n) / n) + 2 * quadratureError;
         EXPECT_NEAR(h.pdfIntegralFine, p, tol) << c.name;
         EXPECT_LE(h.pdfIntegralFine, 1 + 2 * quadratureError + 1e-12) << c.name;
-        if (c.bsdf.type() == BsdfType::Diffuse) {
+        if (c.bsdf.type() == BsdfType::Diffuse || c.bsdf.type() == BsdfType::Translucent) {
             EXPECT_NEAR(h.pdfIntegralFine, 1.0, 2 * quadratureError + 1e-9) << c.name;
         }
     }
@@ -167,8 +174,11 @@ TEST(BsdfSampling, SampleAgreesWithEvalAndPdf) {
             auto s = c.bsdf.sample(c.wo, rng.uniform(), {rng.uniform(), rng.uniform()});
             if (!s) continue;
             ASSERT_FALSE(s->isDelta);
-            ASSERT_FALSE(s->isTransmission);
-            ASSERT_GT(s->wi.z * c.wo.z, 0) << c.name;
+            // Only the translucent model crosses the surface, and says so.
+            ASSERT_EQ(s->isTransmission, s->wi.z * c.wo.z < 0) << c.name;
+            if (c.bsdf.type() != BsdfType::Translucent) {
+                ASSERT_GT(s->wi.z * c.wo.z, 0) << c.name;
+            }
             ASSERT_NEAR(length(s->wi), 1.0, 1e-12);
             double pdf = c.bsdf.pdf(c.wo, s->wi);
             ASSERT_NEAR(s->pdf, pdf, 1e-12 * pdf) << c.name;

@@ -112,7 +112,7 @@ TEST(ThinGlass, EnergyIsConservedAndTransmittanceFallsAtGrazingAngles) {
 TEST(ThinGlassBsdf, DeltaReflectionAndTransmissionInProportion) {
     Bsdf glass = Bsdf::thinGlass(0.88);
     EXPECT_TRUE(glass.isDelta());
-    EXPECT_TRUE(glass.hasTransmission());
+    EXPECT_TRUE(glass.passesStraight());
     Rng rng(5);
     for (double theta : {0.0, 40.0, 70.0, 85.0}) {
         for (bool below : {false, true}) {
@@ -155,7 +155,7 @@ TEST(MirrorBsdf, DeltaReflectionScaledByReflectance) {
     Vec3 rho(0.9, 0.85, 0.8);
     Bsdf mirror = Bsdf::mirror(rho);
     EXPECT_TRUE(mirror.isDelta());
-    EXPECT_FALSE(mirror.hasTransmission());
+    EXPECT_FALSE(mirror.passesStraight());
     EXPECT_EQ(mirror.straightTransmittance(1.0), 0.0);
     for (double theta : {0.0, 30.0, 80.0, 100.0, 170.0}) {
         Vec3 wo = direction(theta, 200);

@@ -61,6 +61,19 @@ TEST(Interchangeable, AnyDifferenceTheCostSeesMakesThemDistinct) {
     }
 }
 
+TEST(Interchangeable, HeldToOtherBoundsTheyAreDistinct) {
+    // A region bounding the footprint, or a footprint free to leave the room, is a rule
+    // of its own: a swap with such an entity is a real move.
+    for (int variant : {0, 1}) {
+        Scene s = tables(0);
+        const int t1 = s.findEntity("t1"), t2 = s.findEntity("t2"), t3 = s.findEntity("t3");
+        if (variant == 0) s.entities[size_t(t3)].regions[0].bound = RegionBound::Footprint;
+        else s.entities[size_t(t3)].inRoom = false;
+        EXPECT_TRUE(interchangeable(s, t1, t2)) << "variant " << variant;
+        EXPECT_FALSE(interchangeable(s, t1, t3)) << "variant " << variant;
+    }
+}
+
 TEST(Interchangeable, DirectedRulesMustMapOntoThemselves) {
     // t1 faces t2 and t2 faces t1: symmetric under the trade; t1 faces t3 alone is not.
     SceneBuilder b;

@@ -50,6 +50,14 @@ Material glass(double transmittance) {
     return m;
 }
 
+Material translucent(double reflectance, double transmittance) {
+    Material m;
+    m.type = MaterialType::Translucent;
+    m.reflectance = Vec3(reflectance, reflectance, reflectance);
+    m.diffuseTransmittance = Vec3(transmittance, transmittance, transmittance);
+    return m;
+}
+
 SceneBuilder& SceneBuilder::name(const std::string& name) {
     name_ = name;
     return *this;

@@ -26,6 +26,7 @@ Material glossy(double reflectance, double roughness, double base);
 Material glossy(double reflectance, double roughness, Vec3 base);
 Material glass(double transmittance);
 Material mirror(double reflectance);
+Material translucent(double reflectance, double transmittance);
 
 class SceneBuilder {
 public:

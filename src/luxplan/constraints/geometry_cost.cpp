@@ -6,7 +6,8 @@
 
 namespace luxplan {
 
-GeometryEvaluator::GeometryEvaluator(const Scene& scene) : scene_(&scene), info_(scene), overlap_(scene, info_) {}
+GeometryEvaluator::GeometryEvaluator(const Scene& scene)
+    : scene_(&scene), info_(scene), overlap_(scene, info_), footprint_(scene, info_) {}
 
 GeometryResult GeometryEvaluator::evaluate(const std::vector<Transform>& world, bool breakdown) {
     GeometryResult r;
@@ -33,17 +34,31 @@ GeometryResult GeometryEvaluator::evaluate(const std::vector<Transform>& world, 
     for (const auto& pair : overlap_.pairs()) {
         if (pair.volume <= 0) continue;
         PenaltyTerm t;
-        // Eq. 6: P(V_s n V_t, 0, 0, V_ref, 2)
-        t.a = pair.a, t.b = pair.b, t.target = pair.target;
+        t.a = pair.a, t.b = pair.b, t.target = pair.target, t.walls = pair.walls;
         t.value = pair.volume;
         t.reference = pair.reference;
-        t.penalty = penalty(pair.volume, 0.0, 0.0, pair.reference, kGeometricStiffness);
         t.weight = scene_->overlap.weight;
-        t.rejects = rejects(t.penalty);
-        r.overlapPenalty += t.penalty;
+        if (pair.hard()) {
+            // A hard limit: nothing within it, rejected beyond (a volume a hair over it
+            // too, so the test is on the volume, not on P).
+            t.rejects = pair.volume > pair.reference;
+            double excess = (pair.volume - pair.reference) / kHardOverlapScale;
+            t.penalty = t.rejects ? 1 + excess * excess : 0.0;
+        } else {
+            // Eq. 6: P(V_s n V_t, 0, 0, V_ref, 2)
+            t.penalty = penalty(pair.volume, 0.0, 0.0, pair.reference, kGeometricStiffness);
+            t.rejects = rejects(t.penalty);
+            r.overlapPenalty += t.penalty;
+        }
         r.violation += std::max(0.0, t.penalty - 1.0);
         if (t.rejects) reject(t);
         if (breakdown) r.terms.push_back(t);
+    }
+    for (const FootprintTerm& f : footprint_.evaluate(world)) {
+        r.violation += f.penalty - 1;
+        if (!r.rejected) r.rejectedBy = describe(*scene_, f);
+        r.rejected = true;
+        if (breakdown) r.footprints.push_back(f);
     }
     sum += scene_->overlap.weight * r.overlapPenalty;
     weights += scene_->overlap.weight;

@@ -94,6 +94,29 @@ double outside(const VoxelGrid& grid, const Transform& worldFromGrid, const Tran
 
 }  // namespace
 
+unsigned sidesCrossed(const Bounds3& room, const Bounds3& box) {
+    unsigned sides = 0;
+    const RoomSide low[3] = {RoomSide::West, RoomSide::South, RoomSide::Floor};
+    const RoomSide high[3] = {RoomSide::East, RoomSide::North, RoomSide::Ceiling};
+    for (int axis = 0; axis < 3; ++axis) {
+        if (box.lo[axis] < room.lo[axis]) sides |= wallBit(low[axis]);
+        if (box.hi[axis] > room.hi[axis]) sides |= wallBit(high[axis]);
+    }
+    return sides;
+}
+
+std::string describeSides(unsigned sides) {
+    static const char* const names[6] = {"the west wall", "the east wall", "the south wall",
+                                         "the north wall", "the floor", "the ceiling"};
+    std::vector<std::string> parts;
+    for (int s = 0; s < 6; ++s)
+        if (sides & (1u << s)) parts.push_back(names[s]);
+    if (parts.empty()) return "the walls";
+    std::string out = parts[0];
+    for (size_t i = 1; i < parts.size(); ++i) out += (i + 1 == parts.size() ? " and " : ", ") + parts[i];
+    return out;
+}
+
 double sharedVolume(const VoxelGrid& a, const Transform& worldFromA, const VoxelGrid& b, const Transform& worldFromB) {
     return shared(a, worldFromA, worldFromA.inverse(), worldFromA.apply(a.bounds), b, worldFromB, worldFromB.inverse(),
                   worldFromB.apply(b.bounds));
@@ -110,7 +133,7 @@ OverlapEvaluator::OverlapEvaluator(const Scene& scene, const EntityInfo& info)
     std::vector<int> solid;
     for (size_t i = 0; i < scene.entities.size(); ++i)
         if (!scene.entities[i].voxels.empty()) solid.push_back(int(i));
-    const double tolerance = scene.overlap.tolerance;
+    const double tolerance = scene.overlap.tolerance, hard = scene.overlap.wallTolerance;
     auto add = [&](Pair p) {
         pairsOf_[p.a].push_back(int(pairs_.size()));
         if (p.target == OverlapTarget::Entity) pairsOf_[p.b].push_back(int(pairs_.size()));
@@ -126,9 +149,8 @@ OverlapEvaluator::OverlapEvaluator(const Scene& scene, const EntityInfo& info)
         }
         if (!info.canMove(a)) continue;
         for (size_t g = 0; g < scene.geometry.size(); ++g)
-            if (!scene.geometry[g].voxels.empty())
-                add({OverlapTarget::Static, a, int(g), tolerance * std::min(va, scene.geometry[g].voxels.volume())});
-        if (!rooms_.empty()) add({OverlapTarget::Walls, a, -1, tolerance * va});
+            if (!scene.geometry[g].voxels.empty()) add({OverlapTarget::Static, a, int(g), hard});
+        if (!rooms_.empty()) add({OverlapTarget::Walls, a, -1, hard});
     }
     stamp_.assign(pairs_.size(), 0);
 }
@@ -151,6 +173,18 @@ double OverlapEvaluator::compute(const Pair& p) const {
     return 0;
 }
 
+unsigned OverlapEvaluator::sides(const Pair& p) const {
+    // Against the room the entity's box overlaps most (the only one, usually).
+    const Bounds3& box = cache_[p.a].box;
+    const Bounds3* best = nullptr;
+    double most = -1;
+    for (const Bounds3& r : rooms_) {
+        Vec3 s = max(Vec3(), min(r.hi, box.hi) - max(r.lo, box.lo));
+        if (s.x * s.y * s.z > most) most = s.x * s.y * s.z, best = &r;
+    }
+    return best ? sidesCrossed(*best, box) : 0;
+}
+
 void OverlapEvaluator::update(const std::vector<Transform>& world) {
     ++epoch_;
     recomputed_ = 0;
@@ -170,8 +204,9 @@ void OverlapEvaluator::update(const std::vector<Transform>& world) {
         for (int p : pairsOf_[e]) {
             if (stamp_[p] == epoch_) continue;
             stamp_[p] = epoch_;
-            pairUndo_.push_back({p, pairs_[p].volume});
+            pairUndo_.push_back({p, pairs_[p].volume, pairs_[p].walls});
             pairs_[p].volume = compute(pairs_[p]);
+            if (pairs_[p].target == OverlapTarget::Walls) pairs_[p].walls = pairs_[p].volume > 0 ? sides(pairs_[p]) : 0;
             ++recomputed_;
         }
 }
@@ -182,7 +217,10 @@ void OverlapEvaluator::commit() {
 }
 
 void OverlapEvaluator::revert() {
-    for (auto it = pairUndo_.rbegin(); it != pairUndo_.rend(); ++it) pairs_[it->first].volume = it->second;
+    for (auto it = pairUndo_.rbegin(); it != pairUndo_.rend(); ++it) {
+        pairs_[it->pair].volume = it->volume;
+        pairs_[it->pair].walls = it->walls;
+    }
     for (auto it = entityUndo_.rbegin(); it != entityUndo_.rend(); ++it) cache_[it->first] = it->second;
     commit();
 }

@@ -2,6 +2,7 @@
 #include <luxplan/constraints/terms.h>
 
 #include <luxplan/constraints/constraint_type.h>
+#include <luxplan/constraints/overlap.h>
 #include <luxplan/constraints/relational.h>
 
 namespace luxplan {
@@ -21,9 +22,10 @@ std::string describe(const Scene& scene, const PenaltyTerm& t) {
     if (t.overlap()) {
         if (t.target == OverlapTarget::Entity) s += quoted(scene.entities[t.b].path);
         else if (t.target == OverlapTarget::Static) s.append("geometry ").append(quoted(scene.geometry[t.b].name));
-        else s += "walls";
+        else s += describeSides(t.walls);
         if (!scene.overlap.jsonPath.empty()) s.append(" (").append(scene.overlap.jsonPath).append(1, ')');
-        s += ": " + describeNumber(t.value) + " m3 shared, tolerance " + describeNumber(t.reference) + " m3";
+        s += ": " + describeNumber(t.value) + " m3 shared, " + (t.hardOverlap() ? "hard limit " : "tolerance ") +
+             describeNumber(t.reference) + " m3";
     } else {
         s += t.b == kRoomEntity ? std::string("room") : quoted(scene.entities[t.b].path);
         s.append(" (").append(scene.constraints[t.constraint].jsonPath).append("): ");

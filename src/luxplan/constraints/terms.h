@@ -19,8 +19,10 @@ struct PenaltyTerm {
     int b = -1;           // entity, kRoomEntity (alignment with the room), geometry index (overlap
                           // with static geometry) or -1 (overlap with the walls)
     OverlapTarget target = OverlapTarget::Entity;
+    unsigned walls = 0;    // overlap with the walls: the room sides crossed (overlap.h: wallBit())
     double value = 0;      // angle (rad), distance (m) or overlap volume (m^3)
-    double reference = 0;  // the bound it is held to: tolerance angle (rad), max distance (m), V_ref (m^3)
+    double reference = 0;  // the bound it is held to: tolerance angle (rad), max distance (m), V_ref or
+                           // the hard limit (m^3)
     double penalty = 0;    // P (Eq. 2); for conversation G_C of Eq. 8
     double weight = 1;
     bool rejects = false;  // a geometric penalty (or, for a term made of parts, one of them) above 1
@@ -29,6 +31,8 @@ struct PenaltyTerm {
     std::vector<double> parts;
 
     bool overlap() const { return kind == nullptr; }
+    // Overlap with the walls or a static item: a hard limit, no part of G.
+    bool hardOverlap() const { return overlap() && target != OverlapTarget::Entity; }
 };
 
 // The scene file's name of the term's rule: its constraint type, or "overlap".

@@ -257,6 +257,22 @@ private:
                 break;
             case MaterialType::Glass: m.transmittance = f.number("transmittance", 0.88, kUnit); break;
             case MaterialType::Mirror: m.reflectance = f.color("reflectance").value_or(Vec3(0.9, 0.9, 0.9)); break;
+            case MaterialType::Translucent: {
+                auto r = f.color("reflectance", true), t = f.color("transmittance", true);
+                m.reflectance = r.value_or(Vec3(0.5, 0.5, 0.5));
+                m.diffuseTransmittance = t.value_or(Vec3(0, 0, 0));
+                if (!r || !t) break;
+                // More out than in would create light.
+                static const char* const channels[3] = {"red", "green", "blue"};
+                for (int c = 0; c < 3; ++c)
+                    if ((*r)[c] + (*t)[c] > 1) {
+                        f.error("transmittance", "reflectance + transmittance must be at most 1, got " +
+                                                     formatNumber((*r)[c]) + " + " + formatNumber((*t)[c]) + " in the " +
+                                                     channels[c] + " channel");
+                        break;
+                    }
+                break;
+            }
         }
     }
 
@@ -596,6 +612,11 @@ private:
         } else {
             r.rotationsDeg = {initialRotation};  // no rotation given: the entity keeps its initial one
         }
+        static const EnumNames<RegionBound> bounds{{{RegionBound::Origin, "origin"}, {RegionBound::Footprint, "footprint"}}};
+        if (auto bound = f.string("bound")) {
+            if (auto parsed = bounds.parse(*bound)) r.bound = *parsed;
+            else f.error("bound", bounds.unknown("region bound", *bound));
+        }
         f.finish();
         return r;
     }
@@ -620,13 +641,22 @@ private:
             }
             e.rotationDeg = f.number("rotation", 0.0);
         }
-        if (parent >= 0) scene_.entities[parent].children.push_back(index);
+        if (parent >= 0) {
+            scene_.entities[parent].children.push_back(index);
+            scene_.entities[index].inRoom = scene_.entities[parent].inRoom;
+        }
 
         bool fixed = f.boolean("fixed").value_or(false);
         if (f.has("placement")) {
             Fields p(sink_, f.get("placement"), f.at("placement"));
             // A fixed entity keeps its placement: its regions are not read.
             if (!fixed) {
+                if (auto inRoom = p.boolean("in_room")) {
+                    if (parent >= 0)
+                        p.error("in_room", "\"in_room\" applies to top-level entities: a member's footprint is part of its group's");
+                    else
+                        scene_.entities[index].inRoom = *inRoom;
+                }
                 if (auto* regions = p.array("regions", true)) {
                     if (regions->empty()) p.error("regions", "placement has no regions");
                     for (size_t i = 0; i < regions->size(); ++i)
@@ -875,8 +905,11 @@ private:
         if (c.a >= 0 && c.a == c.b) f.error("b", "a constraint needs two different entities");
     }
 
-    // The overlap rule's key: a rule of the scene, set by a "constraints" entry.
-    static double readOverlapTolerance(const Fields& f) { return f.number("tolerance", 0.05, Range{0, 1, true, false}); }
+    // The overlap rule's keys: a rule of the scene, set by a "constraints" entry.
+    static void readOverlapRule(const Fields& f, OverlapRule& rule) {
+        rule.tolerance = f.number("tolerance", 0.05, Range{0, 1, true, false});
+        rule.wallTolerance = 1e-3 * f.number("wall_tolerance_l", 1e3 * rule.wallTolerance, Range::atLeast(0, "l"));
+    }
 
     void readConstraint(const Json& j, const std::string& path) {
         Fields f(sink_, j, path);
@@ -888,7 +921,10 @@ private:
                     ConstraintSpec c;
                     readRelational(p, k, c);
                 }));
-            lists.push_back(json::probeKeys(readOverlapTolerance));
+            lists.push_back(json::probeKeys([](const Fields& p) {
+                OverlapRule rule;
+                readOverlapRule(p, rule);
+            }));
             return json::unionKeys(lists);
         }();
         auto type = f.string("type", true);
@@ -896,7 +932,7 @@ private:
         const bool overlap = type && *type == kOverlapRuleName;
         const ConstraintKindEntry* entry = type ? findConstraintKind(*type) : nullptr;
         if (overlap) {
-            scene_.overlap.tolerance = readOverlapTolerance(f);
+            readOverlapRule(f, scene_.overlap);
             scene_.overlap.weight = weight;
             scene_.overlap.jsonPath = path;
         } else if (type && !entry) {

@@ -1,5 +1,6 @@
-// The four scattering models behind Bsdf: Lambertian, GGX-coated diffuse, thin
-// glass and mirror (conventions in bsdf.h, derivations in docs/materials.md).
+// The five scattering models behind Bsdf: Lambertian, GGX-coated diffuse, thin
+// glass, mirror and diffuse transmitter (conventions in bsdf.h, derivations in
+// docs/materials.md).
 #include <luxplan/materials/bsdf.h>
 
 #include <algorithm>
@@ -60,6 +61,20 @@ Bsdf Bsdf::mirror(const Vec3& reflectance) {
     return b;
 }
 
+Bsdf Bsdf::translucent(const Vec3& reflectance, const Vec3& transmittance) {
+    Bsdf b;
+    b.type_ = BsdfType::Translucent;
+    b.a_ = clamp01(reflectance);
+    b.t_ = clamp01(transmittance);
+    for (int c = 0; c < 3; ++c) {
+        double sum = b.a_[c] + b.t_[c];
+        if (sum > 1) b.a_[c] /= sum, b.t_[c] /= sum;  // never more out than in
+    }
+    double r = luminance(b.a_), t = luminance(b.t_);
+    b.reflectProbability_ = r + t > 0 ? r / (r + t) : 1.0;
+    return b;
+}
+
 double Bsdf::straightTransmittance(double cosTheta) const {
     return type_ == BsdfType::ThinGlass ? glass_.transmittance(cosTheta) : 0.0;
 }
@@ -94,6 +109,11 @@ Vec3 Bsdf::evalGlossy(const Vec3& wo, const Vec3& wi, const GlossyView& view, do
 // ---- Dispatch ----
 
 BsdfEval Bsdf::evalPdf(const Vec3& wo, const Vec3& wi) const {
+    if (type_ == BsdfType::Translucent) {
+        if (wo.z == 0 || wi.z == 0) return {};
+        bool reflected = wo.z * wi.z > 0;
+        return {(reflected ? a_ : t_) * kInvPi, pdf(wo, wi)};
+    }
     if (isDelta() || wo.z * wi.z <= 0) return {};
     if (type_ == BsdfType::Diffuse) return {a_ * kInvPi, cosineHemispherePdf(std::abs(wi.z))};
     bool flip = wo.z < 0;
@@ -104,6 +124,11 @@ BsdfEval Bsdf::evalPdf(const Vec3& wo, const Vec3& wi) const {
 }
 
 double Bsdf::pdf(const Vec3& wo, const Vec3& wi) const {
+    if (type_ == BsdfType::Translucent) {
+        if (wo.z == 0 || wi.z == 0) return 0;
+        double lobe = wo.z * wi.z > 0 ? reflectProbability_ : 1 - reflectProbability_;
+        return lobe * cosineHemispherePdf(std::abs(wi.z));
+    }
     if (isDelta() || wo.z * wi.z <= 0) return 0;
     if (type_ == BsdfType::Diffuse) return cosineHemispherePdf(std::abs(wi.z));
     bool flip = wo.z < 0;
@@ -139,6 +164,19 @@ std::optional<BsdfSample> Bsdf::sample(const Vec3& wo, double uLobe, Vec2 u) con
             s.wi = flipToUpper(wi, flip);
             return s;
         }
+        case BsdfType::Translucent: {
+            Vec3 wi = sampleCosineHemisphere(u);
+            if (wi.z <= 0) return std::nullopt;
+            // Reflection stays on wo's side; transmission goes to the other.
+            bool reflect = uLobe < reflectProbability_;
+            s.isTransmission = !reflect;
+            s.wi = flipToUpper(wi, (wo.z < 0) == reflect);
+            double lobe = reflect ? reflectProbability_ : 1 - reflectProbability_;
+            s.f = (reflect ? a_ : t_) * kInvPi;
+            s.pdf = lobe * cosineHemispherePdf(wi.z);
+            s.weight = (reflect ? a_ : t_) / lobe;  // f cos / pdf, exactly
+            return s;
+        }
         case BsdfType::Mirror: {
             s.wi = mirrorDirection(wo);
             s.isDelta = true;
@@ -172,6 +210,7 @@ Vec3 Bsdf::albedo(const Vec3& wo) const {
         case BsdfType::Diffuse:
         case BsdfType::Mirror:
             return a_;
+        case BsdfType::Translucent: return a_ + t_;
         case BsdfType::Glossy: {
             Vec3 coat = ggxAlbedo(std::abs(wo.z), row_).with(a_);
             return coat + b_ * (Vec3(1, 1, 1) - coat);
@@ -191,6 +230,7 @@ Bsdf makeBsdf(const Material& material) {
         case MaterialType::Glossy: return Bsdf::glossy(material.reflectance, material.base, material.roughness);
         case MaterialType::Glass: return Bsdf::thinGlass(material.transmittance);
         case MaterialType::Mirror: return Bsdf::mirror(material.reflectance);
+        case MaterialType::Translucent: return Bsdf::translucent(material.reflectance, material.diffuseTransmittance);
     }
     return Bsdf::diffuse(material.reflectance);
 }

@@ -1,4 +1,5 @@
-// Scattering models of the four material types (diffuse, glossy, glass, mirror):
+// Scattering models of the five material types (diffuse, glossy, glass, mirror,
+// translucent):
 // evaluation, importance sampling and pdf in the local shading frame. A Bsdf is a
 // small value type with a switch inside: no allocation, no virtual calls.
 #pragma once
@@ -21,6 +22,8 @@ namespace luxplan {
 //    radiance is L(wo) = int f(wo, wi) L(wi) |wi.z| dwi. Values are linear RGB.
 //  - Opaque models (diffuse, glossy, mirror) are two-sided: the side wo is on is the
 //    lit side, and wi must be on the same side. f is reciprocal: f(wo, wi) = f(wi, wo).
+//  - The translucent model scatters to both sides: wi on wo's side is reflection, on
+//    the other side transmission (both Lambertian, both reciprocal).
 //  - Delta lobes (mirror, glass) are not functions: eval and pdf return 0 for them
 //    and only sample() reaches them.
 
@@ -46,7 +49,7 @@ struct BsdfEval {
     double pdf = 0;
 };
 
-enum class BsdfType : uint8_t { Diffuse, Glossy, ThinGlass, Mirror };
+enum class BsdfType : uint8_t { Diffuse, Glossy, ThinGlass, Mirror, Translucent };
 
 class Bsdf {
 public:
@@ -67,13 +70,23 @@ public:
     static Bsdf thinGlass(double normalTransmittance, double ior = kGlassIor);
     // A perfect mirror: delta reflection scaled by `reflectance` at every angle.
     static Bsdf mirror(const Vec3& reflectance);
+    // A diffuse transmitter (a lampshade, a frosted sheet): f = reflectance / pi on wo's
+    // side, transmittance / pi on the other; each is clamped to [0, 1] and, where their
+    // sum exceeds 1, both are scaled down to sum 1. The lobe is chosen in proportion to
+    // the luminance of each, then a cosine-weighted direction on its side.
+    static Bsdf translucent(const Vec3& reflectance, const Vec3& transmittance);
 
     BsdfType type() const { return type_; }
     // Every lobe is a delta: eval and pdf are 0 everywhere, so light sampling is useless.
     bool isDelta() const { return type_ == BsdfType::ThinGlass || type_ == BsdfType::Mirror; }
-    bool hasTransmission() const { return type_ == BsdfType::ThinGlass; }
+    // Rays cross it unscattered (thin glass): paths and shadow rays go through instead
+    // of making a vertex there.
+    bool passesStraight() const { return type_ == BsdfType::ThinGlass; }
+    // It scatters light arriving from the side opposite wo (translucent): light sampling
+    // at its vertices looks to both sides. Its surfaces still block shadow rays.
+    bool hasDiffuseTransmission() const { return type_ == BsdfType::Translucent; }
     // For shadow rays: the fraction of flux passing straight through at |cos| = cosTheta
-    // to the normal (ThinGlass::transmittance), 0 for opaque materials.
+    // to the normal (ThinGlass::transmittance), 0 for every other material.
     double straightTransmittance(double cosTheta) const;
 
     Vec3 eval(const Vec3& wo, const Vec3& wi) const { return evalPdf(wo, wi).f; }
@@ -90,8 +103,9 @@ public:
     Vec3 albedo(const Vec3& wo) const;
 
     // Parameters as built (after clamping), for inspection and tests.
-    const Vec3& reflectance() const { return a_; }  // diffuse/mirror albedo, glossy F0
+    const Vec3& reflectance() const { return a_; }  // diffuse/mirror/translucent albedo, glossy F0
     const Vec3& base() const { return b_; }         // glossy base albedo
+    const Vec3& transmittance() const { return t_; }  // translucent
     double alpha() const { return alpha_; }         // glossy GGX alpha
     const ThinGlass& glass() const { return glass_; }
 
@@ -110,12 +124,15 @@ private:
     double alpha_ = 1;
     GgxAlbedoRow row_{};     // glossy: alpha's place in the albedo table
     Vec3 baseScale_{0, 0, 0};  // glossy: base / (pi (1 - Eavg)), per channel
+    Vec3 t_{0, 0, 0};          // translucent: diffuse transmittance
+    double reflectProbability_ = 1;  // translucent: of sampling the reflection lobe
     ThinGlass glass_{};
 };
 
 // The BSDF of a scene material (material.h): diffuse uses `reflectance`; glossy
 // `reflectance` (F0), `base` and `roughness`; glass `transmittance` with n = 1.52;
-// mirror `reflectance`. Inputs are clamped to their documented ranges.
+// mirror `reflectance`; translucent `reflectance` and `diffuseTransmittance`. Inputs
+// are clamped to their documented ranges.
 Bsdf makeBsdf(const Material& material);
 
 }  // namespace luxplan

@@ -8,13 +8,14 @@
 
 namespace luxplan {
 
-enum class MaterialType { Diffuse, Glossy, Glass, Mirror };
+enum class MaterialType { Diffuse, Glossy, Glass, Mirror, Translucent };
 
 struct Material {
     std::string name;
     MaterialType type = MaterialType::Diffuse;
     // diffuse: Lambertian albedo. glossy: specular reflectance at normal incidence
-    // (the coat's F0). mirror: reflectance. Unused by glass.
+    // (the coat's F0). mirror: reflectance. translucent: Lambertian reflectance on the
+    // side the light arrives from. Unused by glass.
     Vec3 reflectance{0.5, 0.5, 0.5};
     // glossy only: albedo of the diffuse base under the coat.
     Vec3 base{0.0, 0.0, 0.0};
@@ -22,6 +23,9 @@ struct Material {
     double roughness = 0.1;
     // glass only: transmittance of the thin pane at normal incidence, in [0, 1].
     double transmittance = 0.88;
+    // translucent only: Lambertian transmittance to the other side (reflectance +
+    // diffuseTransmittance <= 1 per channel).
+    Vec3 diffuseTransmittance{0.0, 0.0, 0.0};
 };
 
 }  // namespace luxplan

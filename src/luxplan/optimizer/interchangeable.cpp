@@ -16,7 +16,7 @@ bool sameRegions(const std::vector<Region>& a, const std::vector<Region>& b) {
     for (size_t i = 0; i < a.size(); ++i) {
         const Region &x = a[i], &y = b[i];
         if (!(x.lo == y.lo) || !(x.hi == y.hi) || x.rotationsDeg != y.rotationsDeg || x.continuousRotation != y.continuousRotation ||
-            x.rotationMinDeg != y.rotationMinDeg || x.rotationMaxDeg != y.rotationMaxDeg)
+            x.rotationMinDeg != y.rotationMinDeg || x.rotationMaxDeg != y.rotationMaxDeg || x.bound != y.bound)
             return false;
     }
     return true;
@@ -48,7 +48,7 @@ bool sameEmitter(const Emitter& a, const Emitter& b) {
 bool sameSubtree(const Scene& s, int a, int b, bool top, std::map<int, int>& map) {
     const Entity &x = s.entities[size_t(a)], &y = s.entities[size_t(b)];
     if (!top && (x.movable() || y.movable() || !(x.position == y.position) || x.rotationDeg != y.rotationDeg)) return false;
-    if (top && !sameRegions(x.regions, y.regions)) return false;
+    if (top && (!sameRegions(x.regions, y.regions) || x.inRoom != y.inRoom)) return false;
     if (!sameMesh(x.mesh, y.mesh) || x.fronts.size() != y.fronts.size() || x.samplers.size() != y.samplers.size() ||
         x.emitters.size() != y.emitters.size() || x.children.size() != y.children.size())
         return false;

@@ -192,6 +192,12 @@ private:
         pbr.roughnessFactor = 1;
         switch (s.type) {
             case MaterialType::Diffuse: break;
+            case MaterialType::Translucent:
+                // glTF has no diffuse transmission in its core: a double-sided diffuse
+                // surface of the colour seen from either side, reflected plus transmitted.
+                color = s.reflectance + s.diffuseTransmittance;
+                m.doubleSided = true;
+                break;
             case MaterialType::Glossy:
                 // glTF's roughness r has GGX alpha = r^2; the coat's F0 has no core glTF slot.
                 color = s.base;

@@ -235,7 +235,9 @@ void constraintTables(std::ostringstream& out, const Scene& scene, const Geometr
     else
         out << "<p class=\"muted\">No relational constraints.</p>\n";
     out << "<h2>Overlaps</h2>\n<p>Overlap penalty " << number(g.overlapPenalty, 4) << " (tolerance "
-        << number(100 * scene.overlap.tolerance, 1) << "% of the smaller volume).</p>\n";
+        << number(100 * scene.overlap.tolerance, 1) << "% of the smaller volume); walls, static geometry and blockers: "
+        << number(1e3 * scene.overlap.wallTolerance, 1) << " litres at most.</p>\n";
+    for (const FootprintTerm& f : g.footprints) out << "<p class=\"missed\">" << escapeHtml(describe(scene, f)) << "</p>\n";
     if (pairCount)
         out << "<table>\n<tr><th>a</th><th>b</th><th>shared volume (m&sup3;)</th><th>reference (m&sup3;)</th>"
                "<th>penalty</th><th>status</th></tr>\n"

@@ -12,7 +12,7 @@ OpeningPanes::OpeningPanes(const Scene& scene) {
     for (const Opening& o : room->openings) {
         if (!o.material) continue;  // an open hole
         Bsdf bsdf = makeBsdf(scene.materials[*o.material]);
-        if (!bsdf.hasTransmission()) continue;  // a closed opening: opaque, Embree's job
+        if (!bsdf.passesStraight()) continue;  // a closed opening: opaque, Embree's job
         const Rect3 rect = openingQuad(room->box, o);
         panes_.push_back({rect, rect.normal(), std::move(bsdf)});
     }

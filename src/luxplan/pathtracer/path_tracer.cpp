@@ -92,9 +92,13 @@ double PathTracer::sample(const Sensor& sensor, PathSamples& samples, RayStats& 
             double r = sensor.response(wi);
             return Vec3(r, r, r);
         }
-        // Light must arrive on the side the path is on (no leaks through surfaces).
-        if (dot(wi, x.ng) <= 0) return Vec3();
+        // Light must arrive on the side the path is on (no leaks through surfaces), or
+        // from the other side of a translucent one; on the same side of the geometric
+        // and the shading normal (wo is on the upper side of both).
+        const double side = dot(wi, x.ng);
+        if (side == 0 || (side < 0 && !x.bsdf->hasDiffuseTransmission())) return Vec3();
         Vec3 local = x.shading.toLocal(wi);
+        if ((side > 0) != (local.z > 0)) return Vec3();
         return x.bsdf->eval(x.wo, local) * std::abs(local.z);
     };
     auto pdfOf = [&](const Vertex& x, const Vec3& wi) -> double {
@@ -170,8 +174,9 @@ double PathTracer::sample(const Sensor& sensor, PathSamples& samples, RayStats& 
             auto s = v.bsdf->sample(v.wo, uLobe, samples.get2D(PathSamples::Direction));
             if (!s) break;
             d = v.shading.toWorld(s->wi);
-            // Reflection must stay on the arrival side of the geometric surface.
-            if (!s->isTransmission && dot(d, v.ng) <= 0) break;
+            // Reflection must stay on the arrival side of the geometric surface and
+            // transmission cross it (as evalCos() requires of light samples).
+            if (s->isTransmission ? dot(d, v.ng) >= 0 : dot(d, v.ng) <= 0) break;
             weight = s->weight, pdf = s->pdf, delta = s->isDelta;
         }
         throughput = throughput * weight;
@@ -218,7 +223,7 @@ double PathTracer::sample(const Sensor& sensor, PathSamples& samples, RayStats& 
                 return luminance(L);  // emitters absorb what reaches them
             }
             const Bsdf& bsdf = bsdfs_[hit->material];
-            if (bsdf.hasTransmission()) {
+            if (bsdf.passesStraight()) {
                 // A thin pane: pass straight through (not a scattering event, so the MIS
                 // state of the last vertex stays) or reflect (a delta event).
                 const PaneResponse r = bsdf.glass().response(std::abs(dot(d, hit->geometricNormal)));
@@ -234,7 +239,7 @@ double PathTracer::sample(const Sensor& sensor, PathSamples& samples, RayStats& 
                 }
                 continue;
             }
-            // An opaque surface: the next vertex. Surfaces are two-sided.
+            // A scattering surface: the next vertex. Surfaces are two-sided.
             v = Vertex();
             v.p = hit->point;
             v.bsdf = &bsdf;

@@ -4,7 +4,9 @@
 // of sky_light.h) combined with BSDF sampling by multiple importance sampling (power
 // heuristic), Russian roulette instead of a depth cap, and thin glass panes that
 // shadow rays and paths pass through, attenuated by the pane's transmittance (the
-// windows' panes analytically for shadow rays, panes.h).
+// windows' panes analytically for shadow rays, panes.h). Translucent surfaces are
+// vertices like opaque ones (they block shadow rays) whose light sampling and BSDF
+// sampling reach both sides.
 // Results are in lx and cd/m^2.
 #pragma once
 

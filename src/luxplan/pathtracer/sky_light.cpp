@@ -18,8 +18,10 @@ SkyLight::SkyLight(const Scene& scene, const DaylightEnvironment* daylight, bool
         // outside: a millimetre of slack keeps them on the portal side.
         room_ = Bounds3(room->box.lo - Vec3(1e-3, 1e-3, 1e-3), room->box.hi + Vec3(1e-3, 1e-3, 1e-3));
         for (const Opening& o : room->openings) {
-            // An opening closed by an opaque panel (a door, a shutter) lets no sky in.
-            if (o.material && !makeBsdf(scene.materials[*o.material]).hasTransmission()) continue;
+            // An opening closed by an opaque panel (a door, a shutter) lets no sky in, and
+            // a translucent one no sky seen straight through it (its light reaches the room
+            // by scattering at the pane: BSDF sampling finds it).
+            if (o.material && !makeBsdf(scene.materials[*o.material]).passesStraight()) continue;
             openings_.push_back(openingQuad(room->box, o));
             openingNormals_.push_back(cross(openings_.back().edgeU, openings_.back().edgeV));
         }

@@ -6,6 +6,9 @@
 namespace luxplan {
 namespace {
 
+// The stand lamp's shade walls (m).
+constexpr double kShadeWall = 0.012;
+
 // Adds boxes given in the preset's own frame: x in [-w/2, w/2], y in [-d/2, d/2], z in [0, h].
 struct Builder {
     TriangleMesh mesh;
@@ -108,7 +111,16 @@ void standLamp(Builder& b) {
     double shade = std::min(0.35, b.h() * 0.2), pole = 0.03;
     b.box(-b.w() * 0.4, -b.d() * 0.4, 0, b.w() * 0.4, b.d() * 0.4, 0.03);
     b.box(-pole / 2, -pole / 2, 0.03, pole / 2, pole / 2, b.h() - shade);
-    b.box(-b.w() / 2, -b.d() / 2, b.h() - shade, b.w() / 2, b.d() / 2, b.h(), "shade");
+    // The shade: four walls around an open top and bottom, so that an emitter inside
+    // lights the ceiling and the floor directly and the room through the walls when
+    // their material is translucent. The walls are thicker than half a voxel cell
+    // (voxels.h: cells of at most 2 cm, sampled at their centres), so they collide.
+    double z0 = b.h() - shade, t = std::min(kShadeWall, std::min(b.w(), b.d()) / 4);
+    double x = b.w() / 2, y = b.d() / 2;
+    b.box(-x, -y, z0, x, -y + t, b.h(), "shade");
+    b.box(-x, y - t, z0, x, y, b.h(), "shade");
+    b.box(-x, -y + t, z0, -x + t, y - t, b.h(), "shade");
+    b.box(x - t, -y + t, z0, x, y - t, b.h(), "shade");
 }
 
 void conferenceTable(Builder& b) {
@@ -148,7 +160,8 @@ const std::vector<PresetEntry>& entries() {
         {{"tv", {1.2, 0.25, 0.8}, {"body", "screen"}, "television on a stand; screen faces -y"},
          [](Builder& b) { screenDevice(b, 0.15); }},
         {{"bed", {1.6, 2.1, 0.9}, {"body", "mattress"}, "double bed: frame, mattress, headboard at +y"}, bed},
-        {{"stand_lamp", {0.35, 0.35, 1.6}, {"body", "shade"}, "floor lamp: base, pole, shade (add an emitter)"},
+        {{"stand_lamp", {0.35, 0.35, 1.6}, {"body", "shade"},
+          "floor lamp: base, pole, a shade open at top and bottom (add an emitter in it)"},
          standLamp},
         {{"conference_table", {2.4, 1.2, 0.75}, {"body"}, "meeting table: top on two pedestals"}, conferenceTable},
         {{"projection_screen", {2.0, 0.1, 2.0}, {"body", "screen"}, "screen on two legs; the screen faces -y"},

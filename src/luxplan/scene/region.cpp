@@ -92,6 +92,7 @@ std::vector<Region> composeRegions(const Region& parent, const Region& child) {
         for (double theta : distinctRotations(parent)) {
             Transform rot = Transform::rotateZ(radians(theta));
             Region r;
+            r.bound = child.bound;
             Vec2 lo(kInf, kInf), hi(-kInf, -kInf);
             for (Vec2 c : corners) {
                 Vec3 w = rot.applyVector({c.x, c.y, 0});
@@ -109,6 +110,7 @@ std::vector<Region> composeRegions(const Region& parent, const Region& child) {
     double reach = 0;
     for (Vec2 c : corners) reach = std::max(reach, length(c));
     Region r;
+    r.bound = child.bound;
     r.lo = parent.lo - Vec2(reach, reach), r.hi = parent.hi + Vec2(reach, reach);
     setInterval(r, parent.rotationMinDeg + childLo, parent.rotationMaxDeg + childHi);
     out.push_back(r);

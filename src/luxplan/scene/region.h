@@ -11,8 +11,15 @@
 
 namespace luxplan {
 
+// What a region's box bounds: the entity's origin (the paper's X_m), or its whole
+// footprint (the floor projection of its parts' bounding boxes, its descendants'
+// included; constraints/footprint.h). Proposals draw the origin in the box either
+// way; a footprint that leaves it is rejected as a geometric rule.
+enum class RegionBound { Origin, Footprint };
+
 struct Region {
     Vec2 lo, hi;
+    RegionBound bound = RegionBound::Origin;
     std::vector<double> rotationsDeg;  // discrete set, or
     bool continuousRotation = false;   // an interval [rotationMinDeg, rotationMaxDeg]
     double rotationMinDeg = 0, rotationMaxDeg = 0;
@@ -53,6 +60,7 @@ double regionMeasure(const Region& region);
 // `parent` and the child anywhere in `child` (the parent's frame). A discrete parent
 // rotation gives one region per rotation (exact for quarter turns, the bounding box
 // otherwise); an interval gives one region bounded by the child's largest offset.
+// The regions keep the child's bound.
 std::vector<Region> composeRegions(const Region& parent, const Region& child);
 
 }  // namespace luxplan

@@ -12,7 +12,8 @@ const EnumNames<MaterialType>& materialTypeNames() {
     static const EnumNames<MaterialType> names{{{MaterialType::Diffuse, "diffuse"},
                                                 {MaterialType::Glossy, "glossy"},
                                                 {MaterialType::Glass, "glass"},
-                                                {MaterialType::Mirror, "mirror"}}};
+                                                {MaterialType::Mirror, "mirror"},
+                                                {MaterialType::Translucent, "translucent"}}};
     return names;
 }
 

@@ -95,6 +95,10 @@ struct Entity {
     Vec3 position;         // initial placement in the parent's frame
     double rotationDeg = 0;
     std::vector<Region> regions;  // empty: immovable
+    // The footprint rule (constraints/footprint.h): the footprint of its parts and of
+    // every descendant's stays inside the room. A top-level entity's
+    // "placement.in_room" (default true); members take their group's.
+    bool inRoom = true;
     TriangleMesh mesh;            // all parts, entity frame
     std::vector<PartInfo> parts;
     std::vector<Vec2> fronts{Vec2(0, -1)};
@@ -122,7 +126,11 @@ struct ConstraintSpec {
 // The overlap rule (Eq. 6), which holds between every two solids of the scene. The
 // scene file sets it with a "constraints" entry of type "overlap".
 struct OverlapRule {
-    double tolerance = 0.05;  // fraction of the smaller volume (the paper's V_ref)
+    double tolerance = 0.05;  // between entities: fraction of the smaller volume (the paper's V_ref)
+    // Walls, static geometry and blockers are hard limits: an entity may enter them by
+    // this volume (m^3, "wall_tolerance_l" in litres; voxel noise, not a design
+    // margin), and a layout that goes further is rejected.
+    double wallTolerance = 0.001;
     double weight = 1;        // w_o in G(x)
     std::string jsonPath;     // the entry that set it; empty: the defaults
     // Entity pairs the rule skips besides an ancestor and its descendants: in a

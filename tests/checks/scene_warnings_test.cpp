@@ -1,0 +1,196 @@
+// What validate warns about (checks/scene_warnings.h): each warning on a scene that
+// earns it, with its JSON path and message, and none on the same scene put right.
+#include <gtest/gtest.h>
+
+#include <luxplan/checks/scene_warnings.h>
+#include <luxplan/daylight/datetime.h>
+#include <luxplan/emitters/emitter_shape.h>
+#include <luxplan/lightsamplers/sampler_type.h>
+#include "support/scene_builder.h"
+
+namespace luxplan {
+namespace {
+
+using test::SceneBuilder;
+
+SceneBuilder room() {
+    SceneBuilder b;
+    b.material("wall", test::diffuse(0.6))
+        .material("shade", test::translucent(0.45, 0.4))
+        .material("glass", test::glass(0.8))
+        .room({0, 0, 0}, {6, 4, 3}, "wall", "wall", "wall");
+    return b;
+}
+
+std::string messages(const std::vector<Diagnostic>& d) {
+    std::string s;
+    for (const Diagnostic& x : d) s += x.jsonPath + ": " + x.message + "\n";
+    return s;
+}
+
+TEST(EnclosedEmitters, AClosedOpaqueShadeLightsNothing) {
+    // The old stand lamp: a sphere inside a closed diffuse box at the top of a pole.
+    Scene s = room()
+                  .entity("lamp", {3, 2, 0}).region({1, 1}, {5, 3})
+                  .part({0.03, 0.03, 1.3}, "wall")
+                  .part({0.35, 0.35, 0.32}, "wall", Vec3(0, 0, 1.44))
+                  .emitter("bulb", sphereEmitter({0, 0, 1.45}, 0.12), 3500)
+                  .end()
+                  .build();
+    std::vector<Diagnostic> w = enclosedEmitters(s);
+    ASSERT_EQ(w.size(), 1u) << messages(w);
+    EXPECT_EQ(w[0].file, s.file.string());
+    EXPECT_EQ(w[0].jsonPath, "/entities/0/emitters/0");
+    EXPECT_EQ(w[0].message, "emitter \"bulb\" is enclosed by opaque geometry of \"lamp\" (every ray from it meets an opaque "
+                            "surface of it): it lights nothing; open it or give it a translucent material");
+}
+
+TEST(EnclosedEmitters, ATranslucentOrAnOpenShadeLetsTheLightOut) {
+    // The same box in a translucent material.
+    Scene s = room()
+                  .entity("lamp", {3, 2, 0}).region({1, 1}, {5, 3})
+                  .part({0.35, 0.35, 0.32}, "shade", Vec3(0, 0, 1.44))
+                  .emitter("bulb", sphereEmitter({0, 0, 1.45}, 0.12), 3500)
+                  .end()
+                  .build();
+    EXPECT_TRUE(enclosedEmitters(s).empty()) << messages(enclosedEmitters(s));
+    // The stand_lamp preset, all of it opaque: its shade is open at top and bottom.
+    s = room()
+            .entity("lamp", {3, 2, 0}).region({1, 1}, {5, 3})
+            .preset("stand_lamp", "wall")
+            .emitter("bulb", sphereEmitter({0, 0, 1.45}, 0.12), 3500)
+            .end()
+            .build();
+    EXPECT_TRUE(enclosedEmitters(s).empty()) << messages(enclosedEmitters(s));
+    // A room alone encloses every lamp in it: that does not count.
+    s = room().emitter("panel", rectEmitter({3, 2, 2.99}, {0, 0, -1}, {0, 1, 0}, {0.6, 0.6}), 3000).build();
+    EXPECT_TRUE(enclosedEmitters(s).empty()) << messages(enclosedEmitters(s));
+}
+
+TEST(EnclosedEmitters, AFixedLuminaireInsideStaticGeometry) {
+    Scene s = room()
+                  .box("soffit", {2, 1, 2.5}, {4, 3, 3}, "wall")
+                  .emitter("panel", rectEmitter({3, 2, 2.8}, {0, 0, -1}, {0, 1, 0}, {0.6, 0.6}), 3000)
+                  .build();
+    std::vector<Diagnostic> w = enclosedEmitters(s);
+    ASSERT_EQ(w.size(), 1u) << messages(w);
+    EXPECT_EQ(w[0].jsonPath, "/luminaires/0");
+    EXPECT_NE(w[0].message.find("enclosed by opaque geometry of \"soffit\""), std::string::npos) << w[0].message;
+    // Behind glass it shines through.
+    s = room()
+            .box("cover", {2, 1, 2.5}, {4, 3, 3}, "glass")
+            .emitter("panel", rectEmitter({3, 2, 2.8}, {0, 0, -1}, {0, 1, 0}, {0.6, 0.6}), 3000)
+            .build();
+    EXPECT_TRUE(enclosedEmitters(s).empty()) << messages(enclosedEmitters(s));
+}
+
+TEST(OutsideTheRoom, LuminairesAndSamplers) {
+    Scene s = room()
+                  .emitter("street", sphereEmitter({7, 2, 2}, 0.1), 1000)
+                  .emitter("panel", rectEmitter({3, 2, 3}, {0, 0, -1}, {0, 1, 0}, {0.6, 0.6}), 3000)  // flush: inside
+                  .sampler("desk", planarSampler({3, 2, 0.75}, {0, 0, 1}, {0, 1, 0}, {1, 1}, {2, 2}), 300, 500)
+                  .sampler("porch", planarSampler({5.9, 2, 0.75}, {0, 0, 1}, {0, 1, 0}, {0.6, 1}, {2, 2}), 300, 500)
+                  .entity("cart", {5.5, 2, 0}).region({0, 0}, {6, 4})
+                  .part({0.5, 0.5, 0.5}, "wall")
+                  .emitter("lamp", sphereEmitter({1, 0, 1}, 0.05), 500)
+                  .end()
+                  .build();
+    std::vector<Diagnostic> w = outsideTheRoom(s);
+    ASSERT_EQ(w.size(), 3u) << messages(w);
+    EXPECT_EQ(w[0].jsonPath, "/luminaires/0");
+    EXPECT_EQ(w[0].message, "luminaire \"street\" is outside the room, at (7, 2, 2): it lights the room only through its openings");
+    EXPECT_EQ(w[1].jsonPath, "/entities/0/emitters/0");
+    EXPECT_EQ(w[1].message, "luminaire \"lamp\" is outside the room, at (6.5, 2, 1) (where \"cart\" stands): it lights the room "
+                            "only through its openings");
+    EXPECT_EQ(w[2].jsonPath, "/samplers/1");
+    EXPECT_EQ(w[2].message, "sampler \"porch\" measures outside the room: 2 of its 4 points, e.g. (6.05, 1.75, 0.75)");
+    // No room: nothing is outside it.
+    Scene open = SceneBuilder().emitter("street", sphereEmitter({7, 2, 2}, 0.1), 1000).build();
+    EXPECT_TRUE(outsideTheRoom(open).empty());
+}
+
+DaylightParams preetham(const char* from, const char* to) {
+    DaylightParams d;
+    d.model = SkyModelType::Preetham;
+    d.from = parseIso8601(from);
+    if (to) d.to = parseIso8601(to);
+    d.stepMinutes = 30;
+    return d;
+}
+
+Scene athens(const DaylightParams& d) {
+    Scene s = room().daylight(d).build();
+    s.site.latitudeDeg = 37.98, s.site.longitudeDeg = 23.73;
+    return s;
+}
+
+TEST(DarkDaylight, AfterSunsetAndPartly) {
+    // Athens, 15 October: sunset about 18:45 local time (+03:00).
+    std::vector<Diagnostic> w = darkDaylight(athens(preetham("2026-10-15T21:00+03:00", "2026-10-15T23:00+03:00")));
+    ASSERT_EQ(w.size(), 1u);
+    EXPECT_EQ(w[0].jsonPath, "/daylight/from");
+    EXPECT_EQ(w[0].message, "the sun is below the horizon throughout 2026-10-15T21:00+03:00 to 2026-10-15T23:00+03:00 (after "
+                            "sunset or before sunrise): the daylight adds no light; leave \"daylight\" out for a night scene");
+    w = darkDaylight(athens(preetham("2026-10-15T22:00+03:00", nullptr)));
+    ASSERT_EQ(w.size(), 1u);
+    EXPECT_EQ(w[0].message.rfind("the sun is below the horizon at 2026-10-15T22:00+03:00 (after sunset", 0), 0u) << w[0].message;
+    w = darkDaylight(athens(preetham("2026-10-15T17:00+03:00", "2026-10-15T20:00+03:00")));
+    ASSERT_EQ(w.size(), 1u);
+    EXPECT_EQ(w[0].message, "the sun is below the horizon at 3 of the 7 steps of 2026-10-15T17:00+03:00 to "
+                            "2026-10-15T20:00+03:00 (from 2026-10-15T19:00+03:00): they add no light but count in the average");
+    EXPECT_TRUE(darkDaylight(athens(preetham("2026-10-15T15:30+03:00", "2026-10-15T18:00+03:00"))).empty());
+    // Skies that do not follow the sun, a fixed sun, no daylight: nothing to say.
+    DaylightParams uniform;
+    uniform.model = SkyModelType::Uniform;
+    uniform.luminanceNits = 1000;
+    uniform.from = parseIso8601("2026-10-15T23:00+03:00");
+    EXPECT_TRUE(darkDaylight(athens(uniform)).empty());
+    DaylightParams fixed = preetham("2026-10-15T23:00+03:00", nullptr);
+    fixed.from.reset();
+    fixed.sunOverride = SunOverride{};
+    EXPECT_TRUE(darkDaylight(athens(fixed)).empty());
+    EXPECT_TRUE(darkDaylight(room().build()).empty());
+}
+
+TEST(StartPlacement, InAWallABlockerOrOutOfTheRoom) {
+    Scene s = room()
+                  .blocker("door_free", {0, 0, 0}, {1, 1, 2})
+                  .entity("sofa", {3, 3.7, 0}).region({0, 0}, {6, 4}).part({2, 0.9, 0.85}, "wall").end()
+                  .entity("desk", {1.2, 1.2, 0}).region({0, 0}, {6, 4}).part({1, 0.6, 0.75}, "wall").end()
+                  .entity("table", {3, 2, 0}).region({0, 0}, {6, 4}).part({1.2, 0.8, 0.75}, "wall").end()
+                  .build();
+    std::vector<Diagnostic> w = startPlacement(s);
+    ASSERT_EQ(w.size(), 3u) << messages(w);
+    // The sofa's back is 15 cm through the north wall: its voxels and its footprint say so.
+    EXPECT_EQ(w[0].jsonPath, "/entities/0");
+    EXPECT_EQ(w[0].message.rfind("the scene places \"sofa\" past a hard limit: overlap \"sofa\" / the north wall: ", 0), 0u)
+        << w[0].message;
+    EXPECT_EQ(w[1].jsonPath, "/entities/1");
+    EXPECT_EQ(w[1].message.rfind("the scene places \"desk\" past a hard limit: overlap \"desk\" / geometry \"door_free\": ", 0),
+              0u)
+        << w[1].message;
+    EXPECT_EQ(w[2].jsonPath, "/entities/0");
+    EXPECT_EQ(w[2].message, "the scene places \"sofa\" past a hard limit: footprint \"sofa\" / room \"room\": 0.15 m outside, "
+                            "P = 226");
+    // All three on the floor, clear of the door: nothing.
+    s.entities[0].position = Vec3(3, 3.5, 0), s.entities[1].position = Vec3(1.6, 1.6, 0);
+    EXPECT_TRUE(startPlacement(s).empty()) << messages(startPlacement(s));
+    EXPECT_TRUE(sceneWarnings(s).empty()) << messages(sceneWarnings(s));
+}
+
+TEST(SceneWarnings, EveryCheckInOrder) {
+    Scene s = room()
+                  .emitter("street", sphereEmitter({7, 2, 2}, 0.1), 1000)
+                  .entity("sofa", {3, 3.7, 0}).region({0, 0}, {6, 4}).part({2, 0.9, 0.85}, "wall").end()
+                  .daylight(preetham("2026-10-15T21:00+03:00", nullptr))
+                  .build();
+    std::vector<Diagnostic> w = sceneWarnings(s);
+    ASSERT_EQ(w.size(), 4u) << messages(w);
+    EXPECT_EQ(w[0].jsonPath, "/luminaires/0");  // outside the room
+    EXPECT_EQ(w[1].jsonPath, "/daylight/from");
+    EXPECT_EQ(w[2].jsonPath, "/entities/0");    // in the wall, then outside the room
+    EXPECT_EQ(w[3].jsonPath, "/entities/0");
+}
+
+}  // namespace
+}  // namespace luxplan
