@@ -11,6 +11,7 @@
 #include <luxplan/core/error.h>
 #include <luxplan/constraints/penalty.h>
 #include <luxplan/lightsamplers/sampler_type.h>
+#include <luxplan/optimizer/sampler_report.h>
 
 namespace luxplan {
 namespace {
@@ -97,6 +98,7 @@ std::string reportJson(const Scene& scene, const OptimizerResult& r) {
                   {"value", number(m.value)}, {"target", {number(s.targetMin), number(s.targetMax)}},
                   {"tolerance", s.tolerance}, {"weight", s.weight}, {"penalty", number(lightingPenalty(s, m.value))}};
         if (!m.points.empty()) e["points"] = m.points;
+        e.update(samplerStatisticsJson(s, m));
         samplers.push_back(e);
     }
     j["samplers"] = samplers;
