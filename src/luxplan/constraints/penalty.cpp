@@ -52,7 +52,7 @@ std::vector<LightingTerm> lightingTerms(const LightSamplerSpec& sampler, const S
     const PointStatistics stats = pointStatistics(result.points, result.pointErrors);
     for (const StatisticGoal& goal : sampler.statistics) {
         const StatisticEstimate& e = stats.of(goal.statistic);
-        requireFinite(sampler, goal.jsonPath, std::string(statisticNames().name(goal.statistic)) + " ", e.value);
+        requireFinite(sampler, goal.jsonPath, std::string("its ") + statisticNames().name(goal.statistic) + " as ", e.value);
         terms.push_back({goal.statistic, e.value, e.standardError, goal.targetMin, goal.targetMax, goal.tolerance,
                          sampler.weight, penalty(e.value, goal.targetMin, goal.targetMax, goal.tolerance, kLightingStiffness)});
     }
