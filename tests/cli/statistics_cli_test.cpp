@@ -2,6 +2,7 @@
 // Em, Emin, Emax and U0 with the grid (EN 12464-1), and one term of Eq. 3 per goal.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
@@ -114,6 +115,23 @@ TEST(StatisticsCli, ValidateNamesTheFileAndPathOfABadGoal) {
                                             "(min, max or u0)"),
               std::string::npos)
         << r.output;
+}
+
+// The DIALux-style example of docs/light-transport.md: its grid, and its figures
+// (measured there with 1000 paths per point) within 5 combined standard errors.
+TEST(StatisticsCli, TheDocumentedOfficeExample) {
+    const std::string file = std::string(LUXPLAN_SOURCE_DIR) + "/scenes/checks/en12464-office.json";
+    Result r = test::runCli("measure " + file + " --paths 64 --threads 2 --json");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const auto work = nlohmann::json::parse(r.output)["samplers"][0];
+    EXPECT_EQ(work["grid"], nlohmann::json::parse("[9, 7]"));
+    const struct { const char* statistic; double value, error; } documented[] = {
+        {"mean", 519.2, 0.69}, {"min", 441.6, 5.71}, {"max", 568.0, 6.66}, {"u0", 0.851, 0.0109}};
+    for (const auto& d : documented) {
+        const double error = work["stats_std_error"][d.statistic].get<double>();
+        EXPECT_NEAR(work["stats"][d.statistic].get<double>(), d.value, 5 * std::hypot(error, d.error)) << d.statistic;
+    }
+    for (const auto& t : work["terms"]) EXPECT_EQ(t["penalty"], 0.0) << t.dump();
 }
 
 }  // namespace
