@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.h"
+#include <luxplan/constraints/geometry_cost.h>
 #include <luxplan/constraints/penalty.h>
 #include <luxplan/daylight/daylight.h>
 #include <luxplan/io/layout_io.h>
@@ -45,6 +46,12 @@ void runMeasure(const MeasureArgs& args) {
     options.adaptive = args.adaptive;
     options.lowDiscrepancy = args.sampling == "sobol";
     MeasureResult result = measureSamplers(tracer, options);
+    // The objective of Eq. 1 for this layout, as optimize reports it (report.json's C).
+    const double lighting = lightingCostOfResults(scene, result.samplers);
+    const double lightingError = lightingCostError(scene, result.samplers);
+    const GeometryResult geometry = GeometryEvaluator(scene).evaluate(worldTransforms(scene, layout));
+    const double w = scene.objective.lightingWeight;
+    const double cost = scene.objective.cost(lighting, geometry.cost);
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
     if (args.json) {
@@ -70,6 +77,9 @@ void runMeasure(const MeasureArgs& args) {
                               {"paths_per_point", options.pathsPerPoint},
                               {"adaptive", options.adaptive}, {"sampling", args.sampling},
                               {"seed", options.seed},
+                              {"L", lighting}, {"L_std_error", lightingError},
+                              {"G", geometry.cost}, {"C", cost}, {"C_std_error", w * lightingError},
+                              {"geometric_rules_pass", !geometry.rejected},
                               {"seconds", seconds}};
         std::cout << out.dump(2) << "\n";
         return;
@@ -105,7 +115,10 @@ void runMeasure(const MeasureArgs& args) {
                       << (t.penalty > 0 ? "  MISSED" : "  ok") << "\n";
         }
     }
-    std::cout << std::setprecision(2) << result.paths << " paths (" << (options.adaptive ? "adaptive, at most " : "")
+    std::cout << std::defaultfloat << std::setprecision(4) << "C " << cost << " +- " << w * lightingError << " (L "
+              << lighting << " +- " << lightingError << ", G " << geometry.cost
+              << (geometry.rejected ? ", rejected by the geometric rules: " + geometry.rejectedBy : std::string()) << ")\n";
+    std::cout << std::fixed << std::setprecision(2) << result.paths << " paths (" << (options.adaptive ? "adaptive, at most " : "")
               << options.pathsPerPoint << " per point), "
               << result.rays.closest + result.rays.shadow << " rays in " << seconds << " s\n";
 }

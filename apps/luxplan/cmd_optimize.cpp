@@ -60,7 +60,8 @@ struct OptimizeArgs {
     std::string scene, out;
     int iterations = -1, paths = 0, spp = 0;
     int64_t seed = -1;
-    bool flat = false, quiet = false, noPictures = false, fixedPaths = false, fullEvaluation = false;
+    bool flat = false, quiet = false, noPictures = false, fixedPaths = false, fullEvaluation = false,
+         freshNoise = false, noiseBlind = false;
     std::string sampling = "sobol";
 };
 
@@ -115,6 +116,7 @@ int runOptimize(const OptimizeArgs& args) {
     if (args.iterations >= 0) options.iterations = args.iterations;
     if (args.seed >= 0) options.seed = uint64_t(args.seed);
     if (args.flat) options.hierarchy = Hierarchy::Flat;
+    if (args.noiseBlind) options.noiseAware = false;
     // Flat: the same furniture without groups, kept together by cohesion constraints.
     std::optional<FlatScene> flattened;
     if (options.hierarchy == Hierarchy::Flat) {
@@ -134,11 +136,13 @@ int runOptimize(const OptimizeArgs& args) {
     const int reportPaths = std::max(scene.optimizer.reportPathsPerPoint, measure.pathsPerPoint);
     if (!scene.samplers.empty()) {
         lighting = std::make_unique<PathTracedLighting>(scene, daylight ? &*daylight : nullptr, measure);
-        lighting->setConfirmPaths(reportPaths);  // before stopping at C = 0
+        lighting->setReportPaths(reportPaths);  // confirmations, the final choice and the report
         lighting->setIncremental(!args.fullEvaluation);
+        lighting->setFreshNoise(args.freshNoise);
     }
 
-    Optimizer optimizer(scene, options, lighting && scene.objective.lightingWeight > 0 ? lighting.get() : nullptr);
+    // With lighting weight 0 the chain never calls it, but the result's report does.
+    Optimizer optimizer(scene, options, lighting.get());
     optimizer.initialize();
     Layout start = optimizer.current();  // the comparison picture's left side
     bool tty = !args.quiet && isatty(STDERR_FILENO);
@@ -148,18 +152,6 @@ int runOptimize(const OptimizeArgs& args) {
     if (tty) std::cerr << "\n";
     if (result.stop == StopReason::Cancelled) std::cerr << "interrupted: writing the best layout found so far\n";
 
-    // The report measures the best layout again with more paths, so that the sampler
-    // values it shows are accurate (the chain used paths_per_point).
-    if (lighting && result.feasible) {
-        MeasureOptions report = measure;
-        report.pathsPerPoint = reportPaths;
-        report.adaptive = false;
-        lighting->setOptions(report);
-        Evaluation& best = result.bestEvaluation;
-        best.lighting = lighting->evaluate(result.best, worldTransforms(scene, result.best), &best.samplers);
-        best.lightingEvaluated = true;
-        best.cost = scene.objective.cost(best.lighting, best.geometry);
-    }
     writeOptimizerOutputs(args.out, scene, result);
     if (flattened) {
         // layout.json in the scene file's hierarchy, so that --layout reads it back;
@@ -172,11 +164,29 @@ int runOptimize(const OptimizeArgs& args) {
     }
     std::cout << "optimize: " << result.iterations << " iterations in " << duration(result.seconds) << " ("
               << stopReasonName(result.stop) << ")";
-    if (result.feasible)
-        std::cout << "; best C " << result.bestEvaluation.cost << " (L " << result.bestEvaluation.lighting << ", G "
-                  << result.bestEvaluation.geometry << ") at iteration " << result.bestIteration;
+    if (result.feasible) {
+        const Evaluation& best = result.bestEvaluation;
+        std::cout << "; best C " << best.cost;
+        if (best.costError > 0) std::cout << " +- " << best.costError;
+        std::cout << " (L " << best.lighting << ", G " << best.geometry << ") at iteration " << result.bestIteration;
+        if (best.lightingEvaluated && result.independentMeasurements > 0)
+            std::cout << "\n  measured independently at " << reportPaths << " paths per point; the search estimated C "
+                      << result.bestSearchEvaluation.cost << " (candidate " << result.chosenCandidate + 1 << " of "
+                      << result.candidates.size() << ")";
+    }
     else
         std::cout << "; no layout passed the geometric rules";
+    // Each target the result misses, and whether any layout the search measured met it.
+    if (result.feasible)
+        for (size_t k = 0; k < scene.samplers.size() && k < result.bestEvaluation.samplers.samplers.size(); ++k) {
+            const double value = result.bestEvaluation.samplers.samplers[k].value;
+            const ReachVerdict verdict = reachVerdict(scene.samplers[k], result.samplerRanges[k], value);
+            if (verdict.reach == Reach::Met) continue;
+            std::cout << "\n  " << scene.samplers[k].name << " misses its target ("
+                      << (verdict.reach == Reach::OutOfReach ? "out of reach"
+                          : verdict.reach == Reach::NeverMet ? "never met" : reachName(verdict.reach)) << "): "
+                      << verdict.reason;
+        }
     std::cout << "\n  wrote " << args.out << "/layout.json, report.json, trace.csv\n";
     if (!args.noPictures) {
         OutputOptions pictures;
@@ -224,6 +234,11 @@ void registerOptimizeCommand(CLI::App& app, int& threads) {
     cmd->add_flag("--full-evaluation", args->fullEvaluation,
                   "Trace every path of every evaluated layout (default: only the paths a move can change are "
                   "traced again; the numbers are the same)");
+    cmd->add_flag("--fresh-noise", args->freshNoise,
+                  "Draw every lighting estimate anew and test with the penalty method: the chain then follows the "
+                  "true costs, at twice the evaluations and without the path cache (default: common random numbers)");
+    cmd->add_flag("--noise-blind", args->noiseBlind,
+                  "The paper's plain Metropolis test on the estimates, the temperature free to fall below their noise");
     cmd->add_flag("--flat", args->flat,
                   "Flat baseline (the paper's Figure 6): no groups, every object on its own, groups kept by cohesion constraints");
     cmd->add_flag("-q,--quiet", args->quiet, "No progress line");

@@ -180,13 +180,17 @@ TEST(Cli, OptimizeFlatRunsTheGrouplessBaselineAndItsLayoutsReadBack) {
     for (const char* e : {"set", "set.chair1", "set.chair2"}) EXPECT_TRUE(layout["entities"].contains(e)) << e;
     Result v = run("validate " + scene.string() + " --layout " + (out / "layout.json").string());
     EXPECT_EQ(v.exitCode, 0) << v.output;
-    Result m = run("measure " + scene.string() + " --flat --layout " + (out / "layout_flat.json").string() +
-                   " --paths 64 --json");
+    // The report's measurement is independent of the search: its seed is in report.json.
+    ASSERT_EQ(report["report_measurement"]["paths_per_point"], 64) << report.dump(1);
+    const std::string repeat =
+        " --paths 64 --json --seed " + std::to_string(report["report_measurement"]["seed"].get<uint64_t>());
+    EXPECT_NE(report["report_measurement"]["seed"].get<uint64_t>(), 4u);
+    Result m = run("measure " + scene.string() + " --flat --layout " + (out / "layout_flat.json").string() + repeat);
     ASSERT_EQ(m.exitCode, 0) << m.output;
     auto measured = nlohmann::json::parse(m.output.substr(m.output.find('{')));
     EXPECT_DOUBLE_EQ(measured["samplers"][0]["value"].get<double>(), report["samplers"][0]["value"].get<double>());
     // The hierarchical reading of layout.json puts everything in the same place.
-    Result h = run("measure " + scene.string() + " --layout " + (out / "layout.json").string() + " --paths 64 --json");
+    Result h = run("measure " + scene.string() + " --layout " + (out / "layout.json").string() + repeat);
     ASSERT_EQ(h.exitCode, 0) << h.output;
     auto hier = nlohmann::json::parse(h.output.substr(h.output.find('{')));
     EXPECT_NEAR(hier["samplers"][0]["value"].get<double>(), report["samplers"][0]["value"].get<double>(),

@@ -60,6 +60,30 @@ TEST(LightingCost, WeightedMeanOfLinearPenalties) {
     EXPECT_EQ(lightingCost(Scene(), {}), 0);
 }
 
+TEST(LightingCostError, SecantOfEachPenaltyAddedInQuadrature) {
+    Scene scene;
+    LightSamplerSpec a, b;
+    a.targetMin = 300, a.targetMax = 500, a.tolerance = 200, a.weight = 1;
+    b.targetMin = 0, b.targetMax = 100, b.tolerance = 50, b.weight = 3;
+    scene.samplers = {a, b};
+    auto result = [](double value, double se) {
+        SamplerResult r;
+        r.value = value, r.standardError = se;
+        return r;
+    };
+    // Below the band: the linear piece's slope 1/200, times the weight share 1/4.
+    EXPECT_NEAR(lightingTermError(scene, 0, result(200, 10)), 0.25 * 10 / 200, 1e-12);
+    // Well inside the band: no error reaches L.
+    EXPECT_EQ(lightingTermError(scene, 0, result(400, 10)), 0);
+    // At the band's edge: half the interval crosses it, so half the slope.
+    EXPECT_NEAR(lightingTermError(scene, 0, result(500, 10)), 0.25 * 0.5 * 10 / 200, 1e-12);
+    // Above b's band: slope 1/50 with the weight share 3/4.
+    const double ea = 0.25 * 10 / 200, eb = 0.75 * 5 / 50.0;
+    EXPECT_NEAR(lightingCostError(scene, {result(200, 10), result(150, 5)}), std::hypot(ea, eb), 1e-12);
+    EXPECT_EQ(lightingCostError(scene, {result(200, 0), result(50, 5)}), 0);
+    EXPECT_THROW(lightingCostError(scene, {result(1, 1)}), std::invalid_argument);
+}
+
 TEST(Penalty, NonFiniteValuesAreNeverOnTarget) {
     // A NaN once scored 0: every comparison with it is false.
     EXPECT_EQ(penalty(std::nan(""), 1, 2, 0.5, 1), kInf);
@@ -159,6 +183,23 @@ TEST(LightingTerms, ANonFiniteStatisticIsAnErrorNamingItsGoal) {
         EXPECT_EQ(std::string(e.what()), "office.json: /samplers/0/statistics/min: sampler \"desk\" measured its min as an "
                                          "infinite value, not a finite number: it cannot be scored");
     }
+}
+
+TEST(LightingCostError, EachGoalAddsItsStatisticsErrorThroughItsPenalty) {
+    Scene scene;
+    LightSamplerSpec plain;
+    plain.targetMin = 0, plain.targetMax = 100, plain.tolerance = 50, plain.weight = 1;
+    scene.samplers = {withGoals(), plain};
+    SamplerResult bright;
+    bright.value = 150;  // exact: no error
+    const PointStatistics s = pointStatistics(fivePoints().points, fivePoints().pointErrors);
+    // L's denominator 2 * 3 + 1; the mean (400 lx, floor 300) is well inside: 0. The min
+    // (300 +- 6 below its floor of 350, tolerance 100) and U0 (0.75 below 0.9, tolerance
+    // 0.2) are on linear pieces: slope times error.
+    const double min = 2.0 / 7 * 6 / 100, u0 = 2.0 / 7 * s.u0.standardError / 0.2;
+    EXPECT_NEAR(lightingTermError(scene, 0, fivePoints()), std::hypot(min, u0), 1e-12);
+    EXPECT_NEAR(lightingCostError(scene, {fivePoints(), bright}), std::hypot(min, u0), 1e-12);
+    EXPECT_EQ(lightingTermError(scene, 1, bright), 0);
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <functional>
 
+#include <luxplan/core/rng.h>
 #include <luxplan/lightsamplers/sampler_type.h>
 #include <luxplan/optimizer/optimizer.h>
 #include "support/chi2.h"
@@ -29,11 +30,48 @@ private:
     std::function<double(const std::vector<Transform>&)> f_;
 };
 
+// L(x) estimated with Gaussian noise of standard deviation `sigma` around a
+// function of the world transforms. Fresh: each call draws anew. Frozen: the noise is
+// a fixed function of the state (as the path tracer's common random numbers make it).
+// The breakdown's one sampler carries the estimate and its standard error, with a
+// target whose penalty is the value itself (noisyChainScene), so the optimizer sees
+// the error it must allow for.
+class NoisyLighting : public LightingEvaluator {
+public:
+    NoisyLighting(std::function<double(const std::vector<Transform>&)> f, double sigma, bool fresh)
+        : f_(std::move(f)), sigma_(sigma), fresh_(fresh) {}
+    double evaluate(const Layout&, const std::vector<Transform>& world, LightingBreakdown* out) override {
+        const double truth = f_(world);
+        Rng rng(fresh_ ? hashValues({7, ++calls_}) : hashValues({7, uint64_t(std::llround(truth * 1e9))}));
+        // Box-Muller.
+        const double u = 1 - rng.uniform(), v = rng.uniform();
+        const double estimate = truth + sigma_ * std::sqrt(-2 * std::log(u)) * std::cos(2 * kPi * v);
+        if (out) out->samplers = {{estimate, sigma_, {}, {}}};
+        return estimate;
+    }
+    bool drawsAnew() const override { return fresh_; }
+
+private:
+    std::function<double(const std::vector<Transform>&)> f_;
+    double sigma_;
+    bool fresh_;
+    uint64_t calls_ = 0;
+};
+
 // C = L (lighting weight 1), with a sampler so that L is measured at all; the
 // entities are the test's.
 test::SceneBuilder chainScene() {
     test::SceneBuilder b;
     b.lightingWeight(1).sampler("s", planarSampler({0, 0, 1}, {0, 0, 1}, {0, 1, 0}, {1, 1}, {4, 4}), 0, 100);
+    return b;
+}
+
+// The same with a sampler whose penalty is its value above 0 (target [0, 0], elastic
+// limit 1), so that L's standard error is the sampler's while estimates stay well
+// above 0.
+test::SceneBuilder noisyChainScene() {
+    test::SceneBuilder b;
+    b.lightingWeight(1).sampler("s", planarSampler({0, 0, 1}, {0, 0, 1}, {0, 1, 0}, {1, 1}, {4, 4}), 0, 0, 1.0);
     return b;
 }
 
@@ -44,6 +82,7 @@ struct ChainSetup {
     Hierarchy hierarchy = Hierarchy::Hierarchical;
     bool hastings = true;
     uint64_t seed = 1;
+    bool noiseAware = true;
 };
 
 // Runs the chain from the scene's placement and bins the state every `thin` steps.
@@ -59,6 +98,7 @@ test::Chi2Result sampleChain(const Scene& scene, LightingEvaluator& lighting, co
     o.start = StartFrom::Scene;
     o.stopAtZeroCost = false;
     o.moves.jumpHastings = setup.hastings;
+    o.noiseAware = setup.noiseAware;
     Optimizer chain(scene, o, &lighting);
     chain.initialize();
     std::vector<double> observed(weights.size(), 0);
@@ -103,6 +143,87 @@ TEST(Chain, DiscreteStatesFollowTheBoltzmannLaw) {
     for (int st = 0; st < 7; ++st) weights.push_back(std::exp(-cost(st) / setup.temperature));
     auto r = sampleChain(s, lighting, setup, state, weights);
     EXPECT_GT(r.pValue, 1e-3) << r.table;
+}
+
+// The discrete target of the test above with noisy estimates of C.
+class NoisyChain : public ::testing::Test {
+protected:
+    static constexpr double kSigma = 0.12;
+    static int stateOf(const std::vector<Transform>& world) {
+        double x = world[0].t.x, rot = std::atan2(world[0].m[3], world[0].m[0]);
+        int r = (int(std::lround(degrees(rot) / 90)) + 4) % 4;
+        return x < 1 ? r : x < 6 ? 2 : 3 + r;
+    }
+    static double cost(int state) { return 0.6 + 0.04 * state; }  // 5 sigma above 0
+    test::Chi2Result run(NoisyLighting& lighting, bool noiseAware, const std::vector<double>& weights) {
+        Scene s = noisyChainScene()
+                      .entity("e")
+                      .region({0, 0}, {0, 0}, {0, 90})
+                      .region({5, 0}, {5, 0}, {0})
+                      .region({10, 0}, {10, 0}, {0, 90, 180, 270})
+                      .end()
+                      .build();
+        ChainSetup setup;
+        setup.noiseAware = noiseAware;
+        return sampleChain(s, lighting, setup, [](const Layout&, const std::vector<Transform>& w) { return stateOf(w); },
+                           weights);
+    }
+    std::vector<double> trueLaw() const {
+        std::vector<double> w;
+        for (int st = 0; st < 7; ++st) w.push_back(std::exp(-cost(st) / ChainSetup().temperature));
+        return w;
+    }
+};
+
+// Fresh noise: the penalty method (Ceperley and Dewing 1999) samples the true costs'
+// law, the plain test on the estimates does not (the test has the power to tell).
+TEST_F(NoisyChain, NoiseAwareAcceptanceFollowsTheTrueLawUnderFreshNoise) {
+    NoisyLighting lighting([](const std::vector<Transform>& w) { return cost(stateOf(w)); }, kSigma, true);
+    auto r = run(lighting, true, trueLaw());
+    EXPECT_GT(r.pValue, 1e-3) << r.table;
+}
+
+TEST_F(NoisyChain, PlainAcceptanceIsBiasedByFreshNoise) {
+    NoisyLighting lighting([](const std::vector<Transform>& w) { return cost(stateOf(w)); }, kSigma, true);
+    auto r = run(lighting, false, trueLaw());
+    EXPECT_LT(r.pValue, 1e-6) << r.table;
+}
+
+// Frozen noise (common random numbers): the noise-aware chain keeps detailed balance
+// for the estimates it sees, exp(-C_estimated / T) (the penalty would break it, so it
+// is not applied); only an independent measurement removes that noise (the run's
+// result, Optimizer::run).
+TEST_F(NoisyChain, FrozenNoiseIsSampledAsItsEstimates) {
+    NoisyLighting lighting([](const std::vector<Transform>& w) { return cost(stateOf(w)); }, kSigma, false);
+    // The estimate of each state, read back through the evaluator.
+    std::vector<double> weights;
+    const double xs[7] = {0, 0, 5, 10, 10, 10, 10}, rots[7] = {0, 90, 0, 0, 90, 180, 270};
+    for (int st = 0; st < 7; ++st) {
+        Transform t = Transform::placement({xs[st], 0, 0}, rots[st]);
+        ASSERT_EQ(stateOf({t}), st);
+        weights.push_back(std::exp(-lighting.evaluate(Layout{}, {t}, nullptr) / ChainSetup().temperature));
+    }
+    auto r = run(lighting, true, weights);
+    EXPECT_GT(r.pValue, 1e-3) << r.table;
+}
+
+// A geometric schedule ends at 0.001, far below the estimates' noise (0.05): the
+// noise-aware chain's temperature stops at the noise, the plain one's does not.
+TEST_F(NoisyChain, TheTemperatureDoesNotFallBelowTheNoise) {
+    Scene s = noisyChainScene().entity("e").region({0, 0}, {10, 0}).end().build();
+    for (bool aware : {true, false}) {
+        NoisyLighting lighting([](const std::vector<Transform>& w) { return 0.6 + 0.01 * w[0].t.x; }, 0.05, false);
+        OptimizerOptions o;
+        o.iterations = 2000;
+        o.noiseAware = aware;
+        o.start = StartFrom::Scene;
+        Optimizer chain(s, o, &lighting);
+        chain.initialize();
+        EXPECT_NEAR(chain.temperature(), 0.1, 1e-12);  // the schedule's start is above the noise
+        for (int i = 0; i < o.iterations; ++i) chain.step();
+        if (aware) EXPECT_NEAR(chain.temperature(), 0.05, 1e-9);
+        else EXPECT_NEAR(chain.temperature(), 0.001, 1e-6);
+    }
 }
 
 // Continuous target on two rails of lengths 1 and 2 (translate + jump): the density is

@@ -78,7 +78,8 @@ TEST_F(OptimizerTest, LightingOnlyForLayoutsThatPassTheGeometricTest) {
             rejected += m.rejectedGeometry;
         }
     EXPECT_GT(rejected, 0);  // the room is tight enough that some proposals collide
-    EXPECT_EQ(light.calls, 1 + evaluatedFeasible + r.confirmations);
+    // The confirmations, the candidates' re-measures and the report's are the rest.
+    EXPECT_EQ(light.calls, 1 + evaluatedFeasible + r.independentMeasurements);
 }
 
 TEST_F(OptimizerTest, NoLightingHookMeansLZero) {
@@ -208,7 +209,7 @@ class OptimisticLight : public LightingEvaluator {
 public:
     explicit OptimisticLight(double truth) : truth_(truth) {}
     double evaluate(const Layout&, const std::vector<Transform>&, LightingBreakdown*) override { return 0; }
-    double confirm(const Layout&, const std::vector<Transform>&, LightingBreakdown*) override {
+    double measureIndependently(const Layout&, const std::vector<Transform>&, LightingBreakdown*, uint64_t) override {
         ++confirms;
         return truth_;
     }
@@ -232,7 +233,9 @@ TEST(OptimizerStop, ZeroCostIsConfirmedBeforeStopping) {
     OptimizerResult r = Optimizer(s, o, &wrong).run();
     EXPECT_EQ(r.stop, StopReason::Iterations);
     EXPECT_GE(r.confirmations, 1);
-    EXPECT_EQ(r.confirmations, wrong.confirms);
+    // Every confirmation, then the final choice's and the report's measurements.
+    EXPECT_EQ(r.independentMeasurements, wrong.confirms);
+    EXPECT_GT(r.independentMeasurements, r.confirmations);
     EXPECT_DOUBLE_EQ(r.bestEvaluation.lighting, 0.4);  // the confirmed value, not the estimate
     EXPECT_DOUBLE_EQ(r.bestEvaluation.cost, 0.2);
 

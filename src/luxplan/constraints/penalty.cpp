@@ -76,4 +76,49 @@ double lightingCostOfResults(const Scene& scene, const std::vector<SamplerResult
     return weights > 0 ? sum / weights : 0.0;
 }
 
+namespace {
+
+// L's denominator: every term's weight, a sampler's once per term (1 + its goals).
+double totalWeight(const Scene& scene) {
+    double weights = 0;
+    for (const LightSamplerSpec& s : scene.samplers) weights += s.weight * double(1 + s.statistics.size());
+    return weights;
+}
+
+double secantError(const LightingTerm& t, double weights) {
+    if (t.standardError <= 0) return 0.0;
+    const double up = penalty(t.value + t.standardError, t.targetMin, t.targetMax, t.tolerance, kLightingStiffness);
+    const double down = penalty(t.value - t.standardError, t.targetMin, t.targetMax, t.tolerance, kLightingStiffness);
+    return t.weight / weights * std::abs(up - down) / 2;
+}
+
+// One sampler's share of L's error: its terms' secants, in quadrature.
+double termError(const LightSamplerSpec& s, const SamplerResult& r, double weights) {
+    if (weights <= 0) return 0.0;
+    const std::vector<LightingTerm> terms = lightingTerms(s, r);
+    if (terms.size() == 1) return secantError(terms[0], weights);
+    double variance = 0;
+    for (const LightingTerm& t : terms) variance += secantError(t, weights) * secantError(t, weights);
+    return std::sqrt(variance);
+}
+
+}  // namespace
+
+double lightingTermError(const Scene& scene, size_t k, const SamplerResult& result) {
+    return termError(scene.samplers.at(k), result, totalWeight(scene));
+}
+
+double lightingCostError(const Scene& scene, const std::vector<SamplerResult>& results) {
+    if (results.size() != scene.samplers.size())
+        throw std::invalid_argument("lightingCostError: " + std::to_string(results.size()) + " results for " +
+                                    std::to_string(scene.samplers.size()) + " samplers");
+    const double weights = totalWeight(scene);
+    double variance = 0;
+    for (size_t k = 0; k < results.size(); ++k) {
+        const double e = termError(scene.samplers[k], results[k], weights);
+        variance += e * e;
+    }
+    return std::sqrt(variance);
+}
+
 }  // namespace luxplan

@@ -57,4 +57,15 @@ bool allMet(const std::vector<LightingTerm>& terms);
 // braced list such as {} or {500} would fit both.)
 double lightingCostOfResults(const Scene& scene, const std::vector<SamplerResult>& results);
 
+// The standard error of sampler k's share of L: each of its terms (lightingTerms)
+// contributes its weight share of L's denominator times the secant of its penalty
+// over value +- standard error, halved (the delta method, with a secant instead of
+// the slope so that a value near its band's edge counts the part of its error that
+// crosses it; 0 well inside the band), and the terms add in quadrature (its goals'
+// statistics come from the same points as its value: an approximation).
+double lightingTermError(const Scene& scene, size_t k, const SamplerResult& result);
+// The standard error of L: samplers are independent estimates, so their shares'
+// errors add in quadrature. `results[k]` is the measurement of scene.samplers[k].
+double lightingCostError(const Scene& scene, const std::vector<SamplerResult>& results);
+
 }  // namespace luxplan

@@ -3,6 +3,7 @@
 // samplers; tests plug in analytic ones.
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include <luxplan/lightsamplers/sampler_result.h>
@@ -25,12 +26,23 @@ public:
     // geometric term rejects, and only when the lighting weight is above 0 (and once
     // more for the final layout's report).
     virtual double evaluate(const Layout& layout, const std::vector<Transform>& world, LightingBreakdown* out) = 0;
-    // L(x) measured more accurately, before the chain stops because its estimate of
-    // C reached 0 (a noisy estimate reaches 0 sooner than the layout does). Defaults
-    // to evaluate().
-    virtual double confirm(const Layout& layout, const std::vector<Transform>& world, LightingBreakdown* out) {
+    // L(x) measured again from `seed` instead of the search's, at the report's accuracy:
+    // the optimizer draws these seeds apart from the search's (one confirms a zero cost
+    // and selects among the best candidates, another measures the one selected for the
+    // report), so that neither the search's nor the selection's luck reaches the
+    // reported value. Commits nothing: the next evaluate() measures against the last
+    // committed layout as before. Defaults to evaluate() (an exact evaluator has
+    // nothing to draw again).
+    virtual double measureIndependently(const Layout& layout, const std::vector<Transform>& world, LightingBreakdown* out,
+                                        uint64_t seed) {
+        (void)seed;
         return evaluate(layout, world, out);
     }
+    // Whether two evaluations of one layout draw independent noise. The path tracer's
+    // do not (every evaluation uses the same seed: common random numbers, so its
+    // estimates are a fixed function of the layout). If they do, the chain measures
+    // its current layout again before each test, as the penalty method needs.
+    virtual bool drawsAnew() const { return false; }
     // The chain accepted (commit) or refused (revert) the layout last evaluated: an
     // evaluator that keeps work between layouts (the path cache) keeps it for the
     // accepted layout only. Evaluations measure against the last committed layout.

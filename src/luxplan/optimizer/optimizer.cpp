@@ -7,6 +7,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include <luxplan/constraints/penalty.h>
 #include <luxplan/optimizer/placement.h>
 
 namespace luxplan {
@@ -15,6 +16,12 @@ namespace {
 constexpr uint64_t kStreamTag = 0x6c75786f7074ULL;  // "luxopt": the optimizer's random streams
 constexpr uint64_t kStartStream = 0, kGroupStream = 1, kObjectStream = 2, kFlatStream = 3;
 constexpr int kTraceRows = 10000;
+// Independent measurements (LightingEvaluator::measureIndependently): the selection's
+// and the report's seeds, drawn apart from the search's.
+constexpr uint64_t kIndependentTag = 0x696e646570ULL;  // "indep"
+constexpr uint64_t kSelectionStream = 1, kReportStream = 2;
+// The noise floor follows the last ~64 lighting evaluations.
+constexpr double kNoiseMemory = 1.0 / 64;
 
 }  // namespace
 
@@ -49,7 +56,8 @@ OptimizerOptions optimizerOptions(const Scene& scene) {
 }
 
 Optimizer::Optimizer(const Scene& scene, OptimizerOptions options, LightingEvaluator* lighting)
-    : scene_(&scene), options_(options), lighting_(lighting), geometry_(scene) {
+    : scene_(&scene), options_(options), lighting_(lighting), geometry_(scene),
+      candidates_(scene, options.candidates, options.candidateSeparation) {
     auto check = [](bool ok, const char* what) {
         if (!ok) throw std::invalid_argument(std::string("optimizer options: ") + what);
     };
@@ -60,6 +68,9 @@ Optimizer::Optimizer(const Scene& scene, OptimizerOptions options, LightingEvalu
     check(options_.moves.sigmaFraction > 0, "sigma fraction must be > 0");
     check(options_.progressEvery >= 1, "progress interval must be >= 1");
     check(options_.traceEvery >= 0, "trace interval must be >= 0");
+    check(options_.candidates >= 1, "candidates must be >= 1");
+    check(options_.candidateSeparation.metres >= 0 && options_.candidateSeparation.degrees >= 0,
+          "candidate separation must be >= 0");
 
     std::vector<int> all, outer, inner;
     for (size_t i = 0; i < scene.entities.size(); ++i) {
@@ -96,12 +107,83 @@ Evaluation Optimizer::evaluate(const Layout& layout, const std::vector<Transform
     if (!e.rejected && lighting_ && !scene_->samplers.empty() && w > 0) {
         e.lighting = lighting_->evaluate(layout, world, &e.samplers);
         e.lightingEvaluated = true;
+        e.costError = costError(e);
+        const auto& measured = e.samplers.samplers;
+        if (measured.size() == scene_->samplers.size()) {
+            samplerRanges_.resize(measured.size());
+            for (size_t k = 0; k < measured.size(); ++k) samplerRanges_[k].add(scene_->samplers[k], measured[k].value, measured[k].standardError);
+        }
     }
     e.cost = scene_->objective.cost(e.lighting, e.geometry);
     return e;
 }
 
+uint64_t Optimizer::independentSeed(uint64_t stream) const {
+    // 53 bits, so that JSON readers that hold numbers as doubles keep it exact; never 0.
+    return (hashValues({options_.seed, kIndependentTag, stream}) & ((uint64_t(1) << 53) - 1)) | 1;
+}
+
+double Optimizer::costError(const Evaluation& e) const {
+    // An evaluator that gives no per-sampler breakdown gives no error either.
+    if (e.samplers.samplers.size() != scene_->samplers.size()) return 0.0;
+    return scene_->objective.lightingWeight * lightingCostError(*scene_, e.samplers.samplers);
+}
+
+double Optimizer::differenceVariance(const Evaluation& a, const Evaluation& b) const {
+    if (!a.lightingEvaluated || !b.lightingEvaluated) return a.costError * a.costError + b.costError * b.costError;
+    // A sampler that reads the same in both did not change (the path cache reused its
+    // paths, or nothing it sees moved): it adds nothing to the difference. The others
+    // count as independent estimates, which overstates the difference's noise when
+    // they share paths (common random numbers): the test is then the stricter.
+    const double w = scene_->objective.lightingWeight;
+    double variance = 0;
+    const auto &x = a.samplers.samplers, &y = b.samplers.samplers;
+    if (x.size() != scene_->samplers.size() || y.size() != x.size()) return 0.0;
+    for (size_t k = 0; k < x.size(); ++k) {
+        if (x[k].value == y[k].value) continue;
+        const double ex = w * lightingTermError(*scene_, k, x[k]), ey = w * lightingTermError(*scene_, k, y[k]);
+        variance += ex * ex + ey * ey;
+    }
+    return variance;
+}
+
+bool Optimizer::metropolis(const Evaluation& proposed, double logHastings, double temperature, Rng& rng) const {
+    // Metropolis-Hastings: min(1, exp(-(C' - C) / T) q(x'->x) / q(x->x')).
+    double logA = -(proposed.cost - currentEval_.cost) / temperature + logHastings;
+    // The penalty method (Ceperley and Dewing 1999) when both ends are fresh estimates:
+    // -s^2 / (2 T^2), s^2 the variance of the estimated difference, keeps detailed
+    // balance for the true costs where the plain test favours lucky draws. With common
+    // random numbers the estimates are a fixed function of the layout, for which the
+    // plain test is exact (the chain samples exp(-C_estimated / T)) and the penalty
+    // would not be: a(d) / a(-d) = exp(-d / T) fails for |d| < s^2 / (2 T).
+    if (options_.noiseAware && lighting_ && lighting_->drawsAnew())
+        logA -= differenceVariance(currentEval_, proposed) / (2 * temperature * temperature);
+    return logA >= 0 || rng.uniform() < std::exp(logA);
+}
+
+void Optimizer::refreshCurrent() {
+    // The penalty method tests a fresh estimate of the difference: both ends drawn anew.
+    Evaluation& e = currentEval_;
+    e.lighting = lighting_->evaluate(current_, worldTransforms(*scene_, current_), &e.samplers);
+    lighting_->commit();
+    e.costError = costError(e);
+    e.cost = scene_->objective.cost(e.lighting, e.geometry);
+}
+
+void Optimizer::noteNoise(const Evaluation& e) {
+    if (!e.lightingEvaluated) return;
+    const double v = e.costError * e.costError;
+    noiseVariance_ += (v - noiseVariance_) * kNoiseMemory;
+}
+
+double Optimizer::temperature() const {
+    const double t = options_.schedule.temperature(iteration_, options_.iterations);
+    if (!options_.noiseAware || options_.schedule.kind == Schedule::Kind::Constant) return t;
+    return std::max(t, std::sqrt(noiseVariance_));
+}
+
 void Optimizer::initialize() {
+    samplerRanges_.clear();
     for (size_t i = 0; i < levels_.size(); ++i) {
         rngs_[i] = Rng(hashValues({options_.seed, kStreamTag, streams_[i]}));
         stats_[i].moves = {};
@@ -137,7 +219,10 @@ void Optimizer::initialize() {
     best_ = current_;
     bestEval_ = currentEval_;
     feasible_ = !currentEval_.rejected;
-    iteration_ = bestIteration_ = confirmations_ = 0;
+    iteration_ = bestIteration_ = confirmations_ = independentMeasurements_ = 0;
+    noiseVariance_ = currentEval_.costError * currentEval_.costError;
+    candidates_.clear();
+    candidates_.offer(current_, currentEval_, 0);
     trace_.clear();
     record();
     initialized_ = true;
@@ -160,7 +245,7 @@ void Optimizer::step() {
         return;
     }
     const int level = levelAt(iteration_);
-    const double temperature = options_.schedule.temperature(iteration_, options_.iterations);
+    const double t = temperature();
     Rng& rng = rngs_[size_t(level)];
     Layout proposed = current_;
     Proposal p = levels_[size_t(level)].propose(proposed, rng);
@@ -172,16 +257,16 @@ void Optimizer::step() {
     if (!p.valid) {
         ++stats.outside;
     } else {
+        if (lighting_ && lighting_->drawsAnew() && currentEval_.lightingEvaluated) refreshCurrent();
         e = evaluate(proposed, worldTransforms(*scene_, proposed));
         if (currentEval_.rejected) {
             // Repair (only before the first feasible state): descend on the total
             // violation; a feasible proposal always ends the repair.
             accept = !e.rejected || e.violation <= currentEval_.violation;
         } else if (!e.rejected) {
-            // Metropolis-Hastings: min(1, exp(-(C' - C) / T) q(x'->x) / q(x->x')).
-            double logA = -(e.cost - currentEval_.cost) / temperature + p.logHastings;
-            accept = logA >= 0 || rng.uniform() < std::exp(logA);
+            accept = metropolis(e, p.logHastings, t, rng);
         }
+        noteNoise(e);
         if (e.rejected && !accept) ++stats.rejectedGeometry;
         if (accept) geometry_.commit();
         else geometry_.revert();
@@ -192,6 +277,7 @@ void Optimizer::step() {
         ++stats.accepted;
         current_ = std::move(proposed);
         currentEval_ = std::move(e);
+        candidates_.offer(current_, currentEval_, iteration_);
         bool better = !feasible_ || currentEval_.cost < bestEval_.cost;
         if (!currentEval_.rejected && better) {
             feasible_ = true;
@@ -223,7 +309,7 @@ OptimizerResult Optimizer::run(const ProgressCallback& progress, const std::atom
         pr.current = currentEval_.cost;
         pr.best = feasible_ ? bestEval_.cost : kInf;
         pr.feasible = !currentEval_.rejected;
-        pr.temperature = options_.schedule.temperature(iteration_, options_.iterations);
+        pr.temperature = temperature();
         for (MoveType t : kMoveTypes) {
             MoveStats total;
             for (const auto& level : stats_) {
@@ -240,12 +326,17 @@ OptimizerResult Optimizer::run(const ProgressCallback& progress, const std::atom
     auto solved = [&] {
         if (!options_.stopAtZeroCost || !feasible_ || bestEval_.cost != 0) return false;
         if (!bestEval_.lightingEvaluated) return true;
-        // A noisy estimate of L reaches 0 before the layout does: measure it again.
+        // A noisy estimate of L reaches 0 before the layout does: measure it again,
+        // independently of the search's random numbers.
         ++confirmations_;
+        ++independentMeasurements_;
         Evaluation confirmed = bestEval_;
-        confirmed.lighting = lighting_->confirm(best_, worldTransforms(*scene_, best_), &confirmed.samplers);
-        lighting_->revert();  // the chain goes on from the current layout
+        confirmed.lighting = lighting_->measureIndependently(best_, worldTransforms(*scene_, best_), &confirmed.samplers,
+                                                             independentSeed(kSelectionStream));
+        confirmed.costError = costError(confirmed);
         confirmed.cost = scene_->objective.cost(confirmed.lighting, confirmed.geometry);
+        for (Candidate& c : candidates_.all())
+            if (c.iteration == bestIteration_) c.independent = confirmed;
         if (bestIteration_ == iteration_) currentEval_ = confirmed;  // the current layout is the best one
         bestEval_ = confirmed;
         return confirmed.cost == 0;
@@ -271,21 +362,16 @@ OptimizerResult Optimizer::run(const ProgressCallback& progress, const std::atom
     report();
 
     OptimizerResult r;
-    r.best = best_;
-    // The per-term breakdown of the best layout; the cache goes back to the current one.
-    std::vector<Transform> world = worldTransforms(*scene_, best_);
-    r.bestGeometry = geometry_.evaluate(world, /* breakdown = */ true);
+    chooseResult(r);
+    // The per-term breakdown of the result; the cache goes back to the current layout.
+    r.bestGeometry = geometry_.evaluate(worldTransforms(*scene_, r.best), /* breakdown = */ true);
     geometry_.revert();
-    if (lighting_ && !scene_->samplers.empty() && !bestEval_.rejected && !bestEval_.lightingEvaluated) {
-        // Lighting weight 0: L took no part in the run, but the report still shows it.
-        bestEval_.lighting = lighting_->evaluate(best_, world, &bestEval_.samplers);
-        bestEval_.lightingEvaluated = true;
-    }
-    r.bestEvaluation = bestEval_;
     r.startEvaluation = startEval_;
     r.iterations = iteration_;
-    r.bestIteration = bestIteration_;
     r.confirmations = confirmations_;
+    r.independentMeasurements = independentMeasurements_;
+    r.samplerRanges = samplerRanges_;
+    r.samplerRanges.resize(scene_->samplers.size());
     r.seconds = seconds();
     r.stop = stop;
     r.feasible = feasible_;
@@ -294,6 +380,48 @@ OptimizerResult Optimizer::run(const ProgressCallback& progress, const std::atom
     r.trace = trace_;
     r.options = options_;
     return r;
+}
+
+void Optimizer::chooseResult(OptimizerResult& r) {
+    r.best = best_;
+    r.bestEvaluation = r.bestSearchEvaluation = bestEval_;
+    r.bestIteration = bestIteration_;
+    const bool measured = lighting_ && !scene_->samplers.empty();
+    if (!measured || !feasible_) return;  // no estimate to correct (or only the least violating layout)
+    const double w = scene_->objective.lightingWeight;
+    auto measure = [&](const Layout& layout, Evaluation e, uint64_t stream) {
+        ++independentMeasurements_;
+        e.lighting = lighting_->measureIndependently(layout, worldTransforms(*scene_, layout), &e.samplers,
+                                                     independentSeed(stream));
+        e.lightingEvaluated = true;
+        e.costError = costError(e);
+        e.cost = scene_->objective.cost(e.lighting, e.geometry);
+        return e;
+    };
+    std::vector<Candidate>& all = candidates_.all();
+    size_t chosen = 0;
+    if (w > 0) {
+        // The winner's curse: the lowest of many noisy estimates is low by luck. Each
+        // candidate is measured again (stream 1), and the lowest of those is chosen.
+        for (size_t i = 0; i < all.size(); ++i) {
+            if (!all[i].independent) all[i].independent = measure(all[i].layout, all[i].search, kSelectionStream);
+            if (all[i].independent->cost < all[chosen].independent->cost) chosen = i;
+        }
+    } else {
+        // L took no part in the run: the best by G, which is exact.
+        chosen = 0;
+    }
+    if (all.empty()) return;
+    const Candidate& c = all[chosen];
+    r.best = c.layout;
+    r.bestSearchEvaluation = c.search;
+    r.bestIteration = c.iteration;
+    r.chosenCandidate = int(chosen);
+    // Measured once more (stream 2), so that the reported value owes nothing to the
+    // choice it made.
+    r.bestEvaluation = measure(c.layout, c.search, kReportStream);
+    r.reportSeed = independentSeed(kReportStream);
+    r.candidates = all;
 }
 
 }  // namespace luxplan

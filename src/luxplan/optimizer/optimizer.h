@@ -13,8 +13,11 @@
 
 #include <luxplan/constraints/geometry_cost.h>
 #include <luxplan/core/rng.h>
+#include <luxplan/optimizer/candidates.h>
+#include <luxplan/optimizer/evaluation.h>
 #include <luxplan/optimizer/lighting.h>
 #include <luxplan/optimizer/moves.h>
+#include <luxplan/optimizer/reach.h>
 
 namespace luxplan {
 
@@ -56,27 +59,26 @@ struct OptimizerOptions {
     int startAttempts = 1000;
     MoveOptions moves;
     // The paper stops as soon as C = 0. With a lighting term the chain first confirms
-    // it (LightingEvaluator::confirm); a confirmed C above 0 replaces the best
-    // layout's estimate and the run goes on.
+    // it with an independent measurement (LightingEvaluator::measureIndependently); a
+    // confirmed C above 0 replaces the best layout's estimate and the run goes on.
     bool stopAtZeroCost = true;
+    // Noise-aware: a geometric schedule's temperature never falls below the cost's
+    // noise (the RMS standard error of the recent estimates of C), and when the
+    // lighting evaluator draws every estimate anew the Metropolis test is the penalty
+    // method of Ceperley and Dewing (1999), exp(-dC / T - s^2 / (2 T^2)) with s the
+    // standard error of dC. Off: the plain test on the estimates, as the paper does.
+    bool noiseAware = true;
+    // How many distinct layouts the run keeps for its result, and what distinct means
+    // (optimizer/candidates.h). At the end, each is measured again independently and
+    // the best of those measurements is the result, measured once more for the report.
+    int candidates = 4;
+    CandidateSeparation candidateSeparation;
     int progressEvery = 100;     // iterations between progress callbacks
     int traceEvery = 0;          // iterations between trace rows; 0: about 10^4 rows per run
 };
 
 // Iterations and seed from the scene's "optimizer" object; the rest at their defaults.
 OptimizerOptions optimizerOptions(const Scene& scene);
-
-// The cost of one layout.
-struct Evaluation {
-    double cost = 0;      // C = w L + (1 - w) G; for a rejected layout (1 - w) G (no lighting)
-    double lighting = 0;  // L (0 when not evaluated)
-    double geometry = 0;  // G
-    bool rejected = false;
-    bool lightingEvaluated = false;
-    double violation = 0;  // GeometryResult::violation
-    std::string rejectedBy;
-    LightingBreakdown samplers;
-};
 
 struct MoveStats {
     int64_t proposed = 0;
@@ -113,12 +115,24 @@ using ProgressCallback = std::function<void(const Progress&)>;
 
 struct OptimizerResult {
     Layout best;
+    // The best layout's cost measured for the report: with a lighting term, by an
+    // independent measurement (stream 2) no choice depended on. Without one, exact.
     Evaluation bestEvaluation;
+    Evaluation bestSearchEvaluation;  // the same layout as the chain estimated it
+    // The candidates the result was chosen from, best search estimate first, each
+    // with its independent measurement (stream 1) when a lighting term was measured.
+    std::vector<Candidate> candidates;
+    int chosenCandidate = 0;
+    uint64_t reportSeed = 0;  // the seed bestEvaluation's lighting was measured with (0: none)
+    // Per sampler (Scene::samplers order): its range over every layout the search
+    // measured, for the verdict on whether its target can be met (optimizer/reach.h).
+    std::vector<SamplerRange> samplerRanges;
     GeometryResult bestGeometry;  // with every term (per-constraint penalties)
     Evaluation startEvaluation;
     int iterations = 0;  // proposals made
     int bestIteration = 0;
     int confirmations = 0;  // zero-cost estimates measured again before stopping
+    int independentMeasurements = 0;  // confirmations, candidate selection and report together
     double seconds = 0;
     StopReason stop = StopReason::Iterations;
     bool feasible = false;       // some layout passed the geometric test
@@ -147,6 +161,9 @@ public:
     const Layout& best() const { return best_; }
     const Evaluation& bestEvaluation() const { return bestEval_; }
     int iteration() const { return iteration_; }
+    // The temperature of the next Metropolis test: the schedule's, raised to the cost's
+    // noise when noise-aware (geometric schedules only: a constant one is a plain chain).
+    double temperature() const;
     const std::vector<LevelStats>& levels() const { return stats_; }
     // Evaluates a layout: G first, the lighting hook only when nothing rejects. The
     // overlap cache follows the layout until step() commits or reverts it.
@@ -155,6 +172,17 @@ public:
 private:
     int levelAt(int iteration) const;
     void record();
+    // Metropolis-Hastings acceptance of `proposed` from the current state.
+    bool metropolis(const Evaluation& proposed, double logHastings, double temperature, Rng& rng) const;
+    // The variance of the estimated difference of C between two evaluations.
+    double differenceVariance(const Evaluation& a, const Evaluation& b) const;
+    void noteNoise(const Evaluation& e);
+    void refreshCurrent();
+    double costError(const Evaluation& e) const;
+    // The seed of independent measurement stream `stream`: not the search's.
+    uint64_t independentSeed(uint64_t stream) const;
+    // The result: the candidates measured independently, the best of them measured again.
+    void chooseResult(OptimizerResult& r);
 
     const Scene* scene_;
     OptimizerOptions options_;
@@ -169,8 +197,11 @@ private:
     Evaluation currentEval_, bestEval_, startEval_;
     bool feasible_ = false;
     int iteration_ = 0, bestIteration_ = 0, traceEvery_ = 1;
-    int confirmations_ = 0;
+    int confirmations_ = 0, independentMeasurements_ = 0;
     std::vector<TracePoint> trace_;
+    Candidates candidates_;
+    double noiseVariance_ = 0;  // moving mean of costError^2 over lighting evaluations
+    std::vector<SamplerRange> samplerRanges_;
 };
 
 }  // namespace luxplan

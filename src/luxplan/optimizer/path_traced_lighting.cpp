@@ -1,33 +1,50 @@
 #include <luxplan/optimizer/path_traced_lighting.h>
 
 #include <luxplan/constraints/penalty.h>
+#include <luxplan/core/rng.h>
 
 namespace luxplan {
+namespace {
+
+constexpr uint64_t kFreshTag = 0x6672657368ULL;  // "fresh"
+
+}  // namespace
 
 PathTracedLighting::PathTracedLighting(const Scene& scene, const DaylightEnvironment* daylight, const MeasureOptions& options)
     : scene_(scene), rt_(scene, initialLayout(scene)), tracer_(rt_, daylight), options_(options), cache_(scene) {}
 
 double PathTracedLighting::evaluate(const Layout& /*layout*/, const std::vector<Transform>& world, LightingBreakdown* out) {
+    if (fresh_) {
+        MeasureOptions fresh = options_;
+        fresh.seed = hashValues({options_.seed, kFreshTag, ++freshDraws_});
+        return measure(world, fresh, nullptr, out);
+    }
+    return measure(world, options_, incremental_ ? &cache_ : nullptr, out);
+}
+
+double PathTracedLighting::measureIndependently(const Layout& /*layout*/, const std::vector<Transform>& world,
+                                                LightingBreakdown* out, uint64_t seed) {
+    MeasureOptions independent = options_;
+    independent.seed = seed;
+    if (reportPaths_ > 0) independent.pathsPerPoint = reportPaths_;
+    independent.adaptive = false;
+    // Not through the cache: its committed paths are the search's, and stay so.
+    return measure(world, independent, nullptr, out);
+}
+
+double PathTracedLighting::measure(const std::vector<Transform>& world, const MeasureOptions& options, PathCache* cache,
+                                   LightingBreakdown* out) {
     // Only instance transforms change: the top level is re-committed, nothing rebuilt.
     for (size_t i = 0; i < world.size(); ++i) rt_.setEntityTransform(int(i), world[i]);
     rt_.commit();
     tracer_.updateLayout();
-    last_ = measureSamplers(tracer_, options_, incremental_ ? &cache_ : nullptr);
+    last_ = measureSamplers(tracer_, options, cache);
     ++evaluations_;
     rays_ += last_.rays;
     reusedPaths_ += last_.reusedPaths;
     tracedPaths_ += last_.paths - last_.reusedPaths;
     if (out) out->samplers = last_.samplers;
     return scene_.samplers.empty() ? 0.0 : lightingCostOfResults(scene_, last_.samplers);
-}
-
-double PathTracedLighting::confirm(const Layout& layout, const std::vector<Transform>& world, LightingBreakdown* out) {
-    const MeasureOptions search = options_;
-    if (confirmPaths_ > 0) options_.pathsPerPoint = confirmPaths_;
-    options_.adaptive = false;
-    double cost = evaluate(layout, world, out);
-    options_ = search;
-    return cost;
 }
 
 }  // namespace luxplan

@@ -15,15 +15,22 @@ public:
     PathTracedLighting(const Scene& scene, const DaylightEnvironment* daylight, const MeasureOptions& options);
 
     double evaluate(const Layout& layout, const std::vector<Transform>& world, LightingBreakdown* out) override;
-    // evaluate() with `confirmPathsPerPoint` paths per point (set by setConfirmPaths;
-    // by default the same as the search's).
-    double confirm(const Layout& layout, const std::vector<Transform>& world, LightingBreakdown* out) override;
-    void setConfirmPaths(int pathsPerPoint) { confirmPaths_ = pathsPerPoint; }
+    // A fixed number of paths per point (setReportPaths; by default the search's), from
+    // `seed`, without the path cache: `measure --seed S --paths N` gives the same.
+    double measureIndependently(const Layout& layout, const std::vector<Transform>& world, LightingBreakdown* out,
+                                uint64_t seed) override;
+    void setReportPaths(int pathsPerPoint) { reportPaths_ = pathsPerPoint; }
     void commit() override { cache_.commit(); }
     void revert() override { cache_.discard(); }
     // Whether evaluations reuse the paths a move cannot change (on by default; the
     // numbers are the same either way, lightsamplers/path_cache.h).
     void setIncremental(bool on) { incremental_ = on; }
+    // Fresh noise: every evaluation draws its own seed (from the seed and a count of
+    // evaluations, so a run still repeats), without the path cache. The optimizer then
+    // measures its current layout again before each test and uses the penalty method:
+    // exact for the true costs, at twice the evaluations, none of them incremental.
+    void setFreshNoise(bool on) { fresh_ = on; }
+    bool drawsAnew() const override { return fresh_; }
 
     // The full measurement of the last evaluated layout (per-point values, errors).
     const MeasureResult& lastMeasurement() const { return last_; }
@@ -32,16 +39,20 @@ public:
     uint64_t tracedPaths() const { return tracedPaths_; }
     uint64_t reusedPaths() const { return reusedPaths_; }
     RayStats rays() const { return rays_; }
-    void setOptions(const MeasureOptions& options) { options_ = options; }
 
 private:
+    double measure(const std::vector<Transform>& world, const MeasureOptions& options, PathCache* cache,
+                   LightingBreakdown* out);
+
     const Scene& scene_;
     EmbreeScene rt_;
     PathTracer tracer_;
     MeasureOptions options_;
-    int confirmPaths_ = 0;  // 0: options_.pathsPerPoint
+    int reportPaths_ = 0;  // 0: options_.pathsPerPoint
     PathCache cache_;
     bool incremental_ = true;
+    bool fresh_ = false;
+    uint64_t freshDraws_ = 0;
     MeasureResult last_;
     uint64_t evaluations_ = 0;
     RayStats rays_;

@@ -1,6 +1,7 @@
 // Writers for the optimizer's report.json and trace.csv.
 #include <luxplan/optimizer/report.h>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -11,6 +12,7 @@
 #include <luxplan/core/error.h>
 #include <luxplan/constraints/penalty.h>
 #include <luxplan/lightsamplers/sampler_type.h>
+#include <luxplan/optimizer/reach.h>
 #include <luxplan/optimizer/sampler_report.h>
 
 namespace luxplan {
@@ -68,6 +70,7 @@ std::string reportJson(const Scene& scene, const OptimizerResult& r) {
     j["scene"] = scene.name;
     j["file"] = scene.file.string();
     j["C"] = number(best.cost);
+    j["C_std_error"] = number(best.costError);
     j["L"] = number(best.lighting);
     j["G"] = number(best.geometry);
     j["lighting_weight"] = scene.objective.lightingWeight;
@@ -77,6 +80,27 @@ std::string reportJson(const Scene& scene, const OptimizerResult& r) {
     j["iterations"] = r.iterations;
     j["best_iteration"] = r.bestIteration;
     j["zero_cost_confirmations"] = r.confirmations;
+    // How the result was chosen: the search's estimate of it, and every candidate with
+    // its independent re-measure (the result is measured once more for C above).
+    j["search_estimate"] = {{"C", number(r.bestSearchEvaluation.cost)}, {"L", number(r.bestSearchEvaluation.lighting)},
+                            {"C_std_error", number(r.bestSearchEvaluation.costError)}};
+    Json candidates = Json::array();
+    for (size_t i = 0; i < r.candidates.size(); ++i) {
+        const Candidate& c = r.candidates[i];
+        Json e = {{"iteration", c.iteration}, {"search_C", number(c.search.cost)}, {"chosen", int(i) == r.chosenCandidate}};
+        if (c.independent) {
+            e["remeasured_C"] = number(c.independent->cost);
+            e["remeasured_C_std_error"] = number(c.independent->costError);
+        }
+        candidates.push_back(e);
+    }
+    j["candidates"] = candidates;
+    // `measure --layout layout.json --seed S --paths N` repeats the report's measurement.
+    if (r.reportSeed != 0) {
+        int paths = 0;
+        for (const SamplerResult& m : best.samplers.samplers) paths = std::max(paths, m.pathsPerPoint);
+        j["report_measurement"] = {{"seed", r.reportSeed}, {"paths_per_point", paths}};
+    }
     j["seconds"] = r.seconds;
     j["stop_reason"] = stopReasonName(r.stop);
     j["start"] = {{"C", number(r.startEvaluation.cost)}, {"L", number(r.startEvaluation.lighting)},
@@ -95,9 +119,18 @@ std::string reportJson(const Scene& scene, const OptimizerResult& r) {
         const SamplerResult& m = best.samplers.samplers[k];
         const LightSamplerSpec& s = scene.samplers[k];
         Json e = {{"name", s.name}, {"type", s.type->name()}, {"description", s.type->describe()}, {"unit", s.type->unit()},
-                  {"value", number(m.value)}, {"target", {number(s.targetMin), number(s.targetMax)}},
+                  {"value", number(m.value)}, {"std_error", number(m.standardError)}, {"target", {number(s.targetMin), number(s.targetMax)}},
                   {"tolerance", s.tolerance}, {"weight", s.weight}, {"penalty", number(lightingPenalty(s, m.value))}};
         if (!m.points.empty()) e["points"] = m.points;
+        if (k < r.samplerRanges.size()) {
+            const SamplerRange& range = r.samplerRanges[k];
+            const ReachVerdict verdict = reachVerdict(s, range, m.value);
+            e["reach"] = {{"verdict", reachName(verdict.reach)},
+                          {"lowest_seen", number(range.lowest)},
+                          {"highest_seen", number(range.highest)},
+                          {"layouts_measured", range.layouts}};
+            if (!verdict.reason.empty()) e["reach"]["reason"] = verdict.reason;
+        }
         e.update(samplerStatisticsJson(s, m));
         samplers.push_back(e);
     }
@@ -134,7 +167,9 @@ std::string reportJson(const Scene& scene, const OptimizerResult& r) {
         {"start_attempts", o.startAttempts},
         {"sigma_fraction", o.moves.sigmaFraction},
         {"jump_hastings", o.moves.jumpHastings},
-        {"stop_at_zero_cost", o.stopAtZeroCost}};
+        {"stop_at_zero_cost", o.stopAtZeroCost},
+        {"noise_aware", o.noiseAware},
+        {"candidates", o.candidates}};
     return j.dump(2) + "\n";
 }
 

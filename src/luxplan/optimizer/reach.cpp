@@ -1,0 +1,66 @@
+#include <luxplan/optimizer/reach.h>
+
+#include <sstream>
+
+#include <luxplan/lightsamplers/sampler_type.h>
+
+namespace luxplan {
+namespace {
+
+// Two standard errors: an estimate this close to the band may have been in it.
+constexpr double kReachZ = 2;
+
+std::string amount(double v, const LightSamplerSpec& s) {
+    std::ostringstream out;
+    out.precision(v >= 100 ? 0 : 2);
+    out << std::fixed << v << " " << s.type->unit();
+    return out.str();
+}
+
+}  // namespace
+
+void SamplerRange::add(const LightSamplerSpec& sampler, double value, double standardError) {
+    ++layouts;
+    met += value >= sampler.targetMin && value <= sampler.targetMax;
+    if (value < lowest) lowest = value, lowestError = standardError;
+    if (value > highest) highest = value, highestError = standardError;
+}
+
+const char* reachName(Reach reach) {
+    switch (reach) {
+        case Reach::Met: return "met";
+        case Reach::Reached: return "reached";
+        case Reach::NeverMet: return "never_met";
+        case Reach::OutOfReach: return "out_of_reach";
+        case Reach::NotMeasured: return "not_measured";
+    }
+    return "?";
+}
+
+ReachVerdict reachVerdict(const LightSamplerSpec& s, const SamplerRange& range, double value) {
+    if (value >= s.targetMin && value <= s.targetMax) return {Reach::Met, ""};
+    const std::string over = " over the " + std::to_string(range.layouts) + " layouts the search measured";
+    if (range.layouts == 0)
+        return {Reach::NotMeasured, "the search measured no layout's light (lighting weight 0, or no layout passed the "
+                                    "geometric rules)"};
+    const bool belowEverywhere = range.highest + kReachZ * range.highestError < s.targetMin;
+    const bool aboveEverywhere = range.lowest - kReachZ * range.lowestError > s.targetMax;
+    if (belowEverywhere)
+        return {Reach::OutOfReach, "at most " + amount(range.highest, s) + over + ", below the target's minimum of " +
+                                       amount(s.targetMin, s) +
+                                       ": nowhere the search tried gets enough light; add or move light, or widen the regions"};
+    if (aboveEverywhere)
+        return {Reach::OutOfReach, "at least " + amount(range.lowest, s) + over + ", above the target's maximum of " +
+                                       amount(s.targetMax, s) +
+                                       ": everywhere the search tried gets too much light (daylight or luminaires); "
+                                       "shade or dim it, or widen the regions"};
+    const std::string seen = "it read " + amount(range.lowest, s) + " to " + amount(range.highest, s);
+    if (range.met > 0)
+        return {Reach::Reached, "met in " + std::to_string(range.met) + " of the " + std::to_string(range.layouts) +
+                                    " layouts the search measured (" + seen +
+                                    "): a trade-off with the other goals and rules, or a longer search"};
+    return {Reach::NeverMet, "met in none of the " + std::to_string(range.layouts) +
+                                 " layouts the search measured, though some came within their noise (" + seen + ")"};
+}
+
+}  // namespace luxplan

@@ -1,0 +1,41 @@
+// Whether a sampler's target can be met: the range of values it took over every layout
+// the search measured, and a verdict on the result's miss in words a designer reads
+// ("at most 180 lx over the 2400 layouts measured, below the target's 300 lx").
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include <luxplan/core/math.h>
+#include <luxplan/lightsamplers/sampler_result.h>
+#include <luxplan/scene/scene.h>
+
+namespace luxplan {
+
+// The lowest and highest estimates of one sampler over the layouts measured, each with
+// its standard error, and how many of them were inside the target.
+struct SamplerRange {
+    double lowest = kInf, highest = -kInf;
+    double lowestError = 0, highestError = 0;
+    int64_t layouts = 0, met = 0;
+    void add(const LightSamplerSpec& sampler, double value, double standardError);
+};
+
+enum class Reach {
+    Met,         // the result meets the target
+    Reached,     // the result misses it, but some measured layout met it (a trade-off)
+    NeverMet,    // no measured layout met it, though some came within two standard errors
+    OutOfReach,  // every measured layout missed it by more than two standard errors, on one side
+    NotMeasured, // the search measured no layout (lighting weight 0, nothing feasible)
+};
+const char* reachName(Reach reach);
+
+struct ReachVerdict {
+    Reach reach = Reach::NotMeasured;
+    std::string reason;  // empty when met
+};
+
+// `value`: the result's measurement of the sampler.
+ReachVerdict reachVerdict(const LightSamplerSpec& sampler, const SamplerRange& range, double value);
+
+}  // namespace luxplan

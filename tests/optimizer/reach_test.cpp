@@ -1,0 +1,73 @@
+// Whether a target can be met (optimizer/reach.h): the verdicts, and the range the
+// optimizer keeps over every layout it measured.
+#include <gtest/gtest.h>
+
+#include <luxplan/lightsamplers/sampler_type.h>
+#include <luxplan/optimizer/optimizer.h>
+#include <luxplan/optimizer/reach.h>
+#include "support/desk_light.h"
+#include "support/shared_scenes.h"
+
+namespace luxplan {
+namespace {
+
+LightSamplerSpec desk() {
+    LightSamplerSpec s;
+    s.name = "desk";
+    s.type = planarSampler({0, 0, 0.76}, {0, 0, 1}, {0, 1, 0}, {1, 1}, {2, 2});
+    s.targetMin = 300, s.targetMax = 500, s.tolerance = 100;
+    return s;
+}
+
+SamplerRange seen(const LightSamplerSpec& s, std::initializer_list<std::pair<double, double>> estimates) {
+    SamplerRange r;
+    for (auto [v, e] : estimates) r.add(s, v, e);
+    return r;
+}
+
+TEST(Reach, Verdicts) {
+    const LightSamplerSpec s = desk();
+    EXPECT_EQ(reachVerdict(s, seen(s, {{200, 5}}), 400).reach, Reach::Met);
+    EXPECT_EQ(reachVerdict(s, SamplerRange(), 100).reach, Reach::NotMeasured);
+
+    ReachVerdict low = reachVerdict(s, seen(s, {{100, 10}, {180, 20}, {150, 5}}), 170);
+    EXPECT_EQ(low.reach, Reach::OutOfReach);
+    EXPECT_EQ(low.reason, "at most 180 lx over the 3 layouts the search measured, below the target's minimum of 300 lx: "
+                          "nowhere the search tried gets enough light; add or move light, or widen the regions");
+    ReachVerdict high = reachVerdict(s, seen(s, {{900, 10}, {2000, 20}}), 950);
+    EXPECT_EQ(high.reach, Reach::OutOfReach);
+    EXPECT_NE(high.reason.find("at least 900 lx over the 2 layouts the search measured, above the target's maximum of "
+                               "500 lx"), std::string::npos)
+        << high.reason;
+
+    // Within two standard errors of the band, never in it: not proven out of reach.
+    ReachVerdict close = reachVerdict(s, seen(s, {{280, 15}, {250, 5}}), 280);
+    EXPECT_EQ(close.reach, Reach::NeverMet);
+    EXPECT_EQ(close.reason, "met in none of the 2 layouts the search measured, though some came within their noise "
+                            "(it read 250 lx to 280 lx)");
+    ReachVerdict traded = reachVerdict(s, seen(s, {{100, 5}, {400, 5}, {700, 5}}), 700);
+    EXPECT_EQ(traded.reach, Reach::Reached);
+    EXPECT_EQ(traded.reason, "met in 1 of the 3 layouts the search measured (it read 100 lx to 700 lx): a trade-off "
+                             "with the other goals and rules, or a longer search");
+}
+
+// E = 600 - 100 x lx at the desk (support/desk_light.h): the range covers every
+// evaluation, start included.
+TEST(Reach, TheOptimizerKeepsEachSamplersRangeOverTheLayoutsItMeasured) {
+    const Scene scene = test::optimizerOffice();
+    test::DeskLight light(scene);
+    OptimizerOptions o = optimizerOptions(scene);
+    o.iterations = 400;
+    o.stopAtZeroCost = false;
+    OptimizerResult r = Optimizer(scene, o, &light).run();
+    ASSERT_EQ(r.samplerRanges.size(), 1u);
+    const SamplerRange& range = r.samplerRanges[0];
+    // Every search evaluation, not the independent ones (the report's among them).
+    EXPECT_EQ(range.layouts, light.calls - r.independentMeasurements);
+    EXPECT_LE(range.lowest, r.bestEvaluation.samplers.samplers[0].value);
+    EXPECT_GE(range.highest, r.bestEvaluation.samplers.samplers[0].value);
+    EXPECT_LT(range.lowest, range.highest);
+}
+
+}  // namespace
+}  // namespace luxplan
