@@ -157,6 +157,7 @@ TEST(LightingCost, StatisticsGoalsAreTermsOfTheWeightedMean) {
     // (2 (0 + 0.5 + 0.75) + 1 * 1) / (2 * 3 + 1): each goal counts in the denominator.
     EXPECT_NEAR(lightingCostOfResults(scene, {fivePoints(), bright}), (2 * 1.25 + 1) / 7, 1e-12);
     EXPECT_THROW(lightingCostOfResults(scene, {bright}), std::invalid_argument);
+    EXPECT_THROW(lightingCostOfResults(scene, {bright, bright}), std::invalid_argument);  // goals need points
     // Values alone cannot score a goal.
     EXPECT_THROW(lightingCost(scene, {400, 150}), std::invalid_argument);
 }

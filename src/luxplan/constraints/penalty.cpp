@@ -49,6 +49,9 @@ std::vector<LightingTerm> lightingTerms(const LightSamplerSpec& sampler, const S
     terms.push_back({Statistic::Mean, result.value, result.standardError, sampler.targetMin, sampler.targetMax,
                      sampler.tolerance, sampler.weight, lightingPenalty(sampler, result.value)});
     if (sampler.statistics.empty()) return terms;
+    if (result.points.empty())
+        throw std::invalid_argument("lightingTerms: sampler \"" + sampler.name +
+                                    "\" has statistics goals, but its measurement holds no points");
     const PointStatistics stats = pointStatistics(result.points, result.pointErrors);
     for (const StatisticGoal& goal : sampler.statistics) {
         const StatisticEstimate& e = stats.of(goal.statistic);

@@ -44,7 +44,8 @@ struct LightingTerm {
 
 // A sampler's terms: its value's first, then one per statistics goal in the order
 // of LightSamplerSpec::statistics. A non-finite value throws SceneError naming the
-// sampler (its goal's path for a statistic).
+// sampler (its goal's path for a statistic); goals without points to measure them
+// over throw std::invalid_argument.
 std::vector<LightingTerm> lightingTerms(const LightSamplerSpec& sampler, const SamplerResult& result);
 
 // Whether every term is on target (penalty 0): the sampler meets its goals.
