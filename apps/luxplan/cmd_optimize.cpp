@@ -58,10 +58,10 @@ private:
 
 struct OptimizeArgs {
     std::string scene, out;
-    int iterations = -1, paths = 0, spp = 0;
+    int iterations = -1, paths = 0, spp = 0, inner = -1;
     int64_t seed = -1;
     bool flat = false, quiet = false, noPictures = false, fixedPaths = false, fullEvaluation = false,
-         freshNoise = false, noiseBlind = false;
+         freshNoise = false, noiseBlind = false, nested = false, cycle = false;
     std::string sampling = "sobol";
 };
 
@@ -117,6 +117,9 @@ int runOptimize(const OptimizeArgs& args) {
     if (args.seed >= 0) options.seed = uint64_t(args.seed);
     if (args.flat) options.hierarchy = Hierarchy::Flat;
     if (args.noiseBlind) options.noiseAware = false;
+    if (args.inner >= 0) options.innerIterations = args.inner;
+    if (args.nested) options.focusInner = true;
+    if (args.cycle) options.focusInner = false;
     // Flat: the same furniture without groups, kept together by cohesion constraints.
     std::optional<FlatScene> flattened;
     if (options.hierarchy == Hierarchy::Flat) {
@@ -239,6 +242,12 @@ void registerOptimizeCommand(CLI::App& app, int& threads) {
                   "true costs, at twice the evaluations and without the path cache (default: common random numbers)");
     cmd->add_flag("--noise-blind", args->noiseBlind,
                   "The paper's plain Metropolis test on the estimates, the temperature free to fall below their noise");
+    cmd->add_option("--inner", args->inner,
+                    "Object-level proposals per group-level one (default: optimizer.inner_iterations; 0: by degrees of freedom)")
+        ->check(CLI::Range(0, 1000));
+    cmd->add_flag("--nested", args->nested, "Object-level proposals move the members of the group just proposed");
+    cmd->add_flag("--cycle", args->cycle, "Object-level proposals move any group's members (the paper's plain cycle)")
+        ->excludes("--nested");
     cmd->add_flag("--flat", args->flat,
                   "Flat baseline (the paper's Figure 6): no groups, every object on its own, groups kept by cohesion constraints");
     cmd->add_flag("-q,--quiet", args->quiet, "No progress line");

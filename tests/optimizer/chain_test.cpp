@@ -83,6 +83,8 @@ struct ChainSetup {
     bool hastings = true;
     uint64_t seed = 1;
     bool noiseAware = true;
+    bool nested = false;
+    int innerIterations = 4;
 };
 
 // Runs the chain from the scene's placement and bins the state every `thin` steps.
@@ -99,6 +101,8 @@ test::Chi2Result sampleChain(const Scene& scene, LightingEvaluator& lighting, co
     o.stopAtZeroCost = false;
     o.moves.jumpHastings = setup.hastings;
     o.noiseAware = setup.noiseAware;
+    o.focusInner = setup.nested;
+    o.innerIterations = setup.innerIterations;
     Optimizer chain(scene, o, &lighting);
     chain.initialize();
     std::vector<double> observed(weights.size(), 0);
@@ -289,7 +293,13 @@ TEST(Chain, SwapsAndJumpsBetweenSlots) {
 
 // A group on two slots and its child on three local slots: the group level and the
 // object level alternate (hierarchical) or mix (flat); both keep the target law.
-class TwoLevelChain : public ::testing::TestWithParam<Hierarchy> {};
+struct TwoLevels {
+    Hierarchy hierarchy;
+    bool nested;
+    int innerIterations;
+    const char* name;
+};
+class TwoLevelChain : public ::testing::TestWithParam<TwoLevels> {};
 
 TEST_P(TwoLevelChain, FollowsTheBoltzmannLaw) {
     Scene s = chainScene()
@@ -302,7 +312,9 @@ TEST_P(TwoLevelChain, FollowsTheBoltzmannLaw) {
     auto cost = [](int st) { return 0.1 + 0.06 * st; };
     FunctionLighting lighting([&](const std::vector<Transform>& w) { return cost(state(w[1].t.x)); });
     ChainSetup setup;
-    setup.hierarchy = GetParam();
+    setup.hierarchy = GetParam().hierarchy;
+    setup.nested = GetParam().nested;
+    setup.innerIterations = GetParam().innerIterations;
     std::vector<double> weights;
     for (int st = 0; st < 6; ++st) weights.push_back(std::exp(-cost(st) / setup.temperature));
     auto r = sampleChain(s, lighting, setup,
@@ -310,8 +322,74 @@ TEST_P(TwoLevelChain, FollowsTheBoltzmannLaw) {
     EXPECT_GT(r.pValue, 1e-3) << r.table;
 }
 
-INSTANTIATE_TEST_SUITE_P(Chain, TwoLevelChain, ::testing::Values(Hierarchy::Hierarchical, Hierarchy::Flat),
-                         [](const auto& info) { return info.param == Hierarchy::Flat ? "Flat" : "Hierarchical"; });
+INSTANTIATE_TEST_SUITE_P(Chain, TwoLevelChain,
+                         ::testing::Values(TwoLevels{Hierarchy::Hierarchical, false, 4, "Hierarchical"},
+                                           TwoLevels{Hierarchy::Flat, false, 4, "Flat"},
+                                           TwoLevels{Hierarchy::Hierarchical, false, 0, "CycleByDegreesOfFreedom"},
+                                           TwoLevels{Hierarchy::Hierarchical, true, 0, "Nested"}),
+                         [](const auto& info) { return std::string(info.param.name); });
+
+// Nested: after a group-level proposal, the object-level ones move that group's
+// members only; a group without movable members is followed by none.
+TEST(Nesting, ObjectProposalsMoveTheMembersOfTheGroupJustProposed) {
+    Scene s = chainScene()
+                  .entity("a").region({0, 0}, {4, 0})
+                  .entity("a1").region({0, 0}, {1, 1}).end()
+                  .entity("a2").region({0, 0}, {1, 1}).end()
+                  .end()
+                  .entity("b", {0, 5, 0}).region({0, 5}, {4, 5})
+                  .entity("b1").region({0, 0}, {1, 1}).end()
+                  .end()
+                  .entity("lone", {0, 9, 0}).region({0, 9}, {4, 9}).end()
+                  .build();
+    FunctionLighting lighting([](const std::vector<Transform>&) { return 0.5; });
+    OptimizerOptions o;
+    o.iterations = 3000;
+    o.focusInner = true;
+    o.innerIterations = 0;  // a: 4 DOF of members over 1 (x only) = 4 steps; b: 2 over 1
+    o.start = StartFrom::Scene;
+    o.stopAtZeroCost = false;
+    Optimizer chain(s, o, &lighting);
+    chain.initialize();
+    const int a = s.findEntity("a"), b = s.findEntity("b"), lone = s.findEntity("lone");
+    const int a1 = s.findEntity("a.a1"), a2 = s.findEntity("a.a2"), b1 = s.findEntity("b.b1");
+    ASSERT_TRUE(a1 >= 0 && a2 >= 0 && b1 >= 0);
+    auto groupProposals = [&] {
+        int64_t n = 0;
+        for (const MoveStats& m : chain.levels()[0].moves) n += m.proposed;
+        return n;
+    };
+    // The cost is constant, so every proposal inside the regions is accepted and the
+    // group a group-level proposal chose is the one that moved (-1: it was refused).
+    int group = -1, objectSteps = 0, checked = 0;
+    auto expectedSteps = [&](int g) { return g == a ? 4 : g == b ? 2 : 0; };
+    for (int i = 0; i < o.iterations; ++i) {
+        const Layout before = chain.current();
+        const int64_t proposals = groupProposals();
+        chain.step();
+        const Layout& now = chain.current();
+        auto moved = [&](int e) {
+            const Placement &p = now.placements[size_t(e)], &q = before.placements[size_t(e)];
+            return p.position != q.position || p.rotationDeg != q.rotationDeg;
+        };
+        if (groupProposals() > proposals) {
+            if (group >= 0) {
+                EXPECT_EQ(objectSteps, expectedSteps(group));
+                ++checked;
+            }
+            group = moved(a) ? a : moved(b) ? b : moved(lone) ? lone : -1;
+            objectSteps = 0;
+            continue;
+        }
+        ++objectSteps;
+        if (group == a) {
+            EXPECT_FALSE(moved(b1));
+        } else if (group == b) {
+            EXPECT_FALSE(moved(a1) || moved(a2));
+        }
+    }
+    EXPECT_GT(checked, 300);
+}
 
 }  // namespace
 }  // namespace luxplan

@@ -134,7 +134,8 @@ private:
         s.pathsPerPoint = paths.value_or(1000);
         s.searchPathsPerPoint = paths.value_or(64);
         s.reportPathsPerPoint = o.integer("report_paths_per_point", Range::atLeast(1)).value_or(std::max(1000, s.pathsPerPoint));
-        s.innerIterations = o.integer("inner_iterations", Range::closed(1, 1000)).value_or(4);
+        s.innerIterations = o.integer("inner_iterations", Range::closed(0, 1000)).value_or(s.innerIterations);
+        s.nested = o.boolean("nested").value_or(s.nested);
         if (auto h = o.string("hierarchy")) {
             static const EnumNames<bool> hierarchies{{{false, "hierarchical"}, {true, "flat"}}};
             if (auto flat = hierarchies.parse(*h)) s.flat = *flat;

@@ -48,6 +48,7 @@ OptimizerOptions optimizerOptions(const Scene& scene) {
     o.seed = s.seed;
     o.hierarchy = s.flat ? Hierarchy::Flat : Hierarchy::Hierarchical;
     o.innerIterations = s.innerIterations;
+    o.focusInner = s.nested;
     o.schedule.kind = s.constantTemperature ? Schedule::Kind::Constant : Schedule::Kind::Geometric;
     o.schedule.start = s.temperatureStart;
     o.schedule.end = s.temperatureEnd;
@@ -62,7 +63,7 @@ Optimizer::Optimizer(const Scene& scene, OptimizerOptions options, LightingEvalu
         if (!ok) throw std::invalid_argument(std::string("optimizer options: ") + what);
     };
     check(options_.iterations >= 0, "iterations must be >= 0");
-    check(options_.innerIterations >= 1, "inner iterations must be >= 1");
+    check(options_.innerIterations >= 0, "inner iterations must be >= 0 (0: by degrees of freedom)");
     check(options_.schedule.start > 0 && options_.schedule.end > 0, "temperatures must be > 0");
     check(options_.startAttempts >= 1, "start attempts must be >= 1");
     check(options_.moves.sigmaFraction > 0, "sigma fraction must be > 0");
@@ -92,6 +93,7 @@ Optimizer::Optimizer(const Scene& scene, OptimizerOptions options, LightingEvalu
         addLevel("group", outer, kGroupStream);
         addLevel("object", inner, kObjectStream);
     }
+    if (levels_.size() == 2) setUpNesting(outer, inner);
     traceEvery_ = options_.traceEvery > 0 ? options_.traceEvery : std::max(1, options_.iterations / kTraceRows);
 }
 
@@ -220,6 +222,7 @@ void Optimizer::initialize() {
     bestEval_ = currentEval_;
     feasible_ = !currentEval_.rejected;
     iteration_ = bestIteration_ = confirmations_ = independentMeasurements_ = 0;
+    innerLeft_ = 0, focus_ = -1;
     noiseVariance_ = currentEval_.costError * currentEval_.costError;
     candidates_.clear();
     candidates_.offer(current_, currentEval_, 0);
@@ -228,10 +231,68 @@ void Optimizer::initialize() {
     initialized_ = true;
 }
 
-int Optimizer::levelAt(int iteration) const {
-    if (levels_.size() < 2) return 0;
-    // One group-level proposal, then innerIterations object-level ones.
-    return iteration % (1 + options_.innerIterations) == 0 ? 0 : 1;
+namespace {
+
+// What a proposal can change about an entity: x and y where some region has an extent,
+// the rotation where some region has two or more, and at least 1 (a jump).
+int degreesOfFreedom(const Entity& e) {
+    bool x = false, y = false, rotation = false;
+    for (const Region& r : e.regions) {
+        x |= r.hi.x > r.lo.x, y |= r.hi.y > r.lo.y;
+        rotation |= (r.continuousRotation && r.rotationMaxDeg > r.rotationMinDeg) || distinctRotations(r).size() > 1;
+    }
+    return std::max(1, int(x) + int(y) + int(rotation));
+}
+
+int degreesOfFreedom(const Scene& scene, const std::vector<int>& entities) {
+    int n = 0;
+    for (int e : entities) n += degreesOfFreedom(scene.entities[size_t(e)]);
+    return n;
+}
+
+// Object-level steps per group-level one from the levels' degrees of freedom.
+int stepsFor(int objectDof, int groupDof) {
+    return std::max(1, int(std::lround(double(objectDof) / std::max(1, groupDof))));
+}
+
+}  // namespace
+
+void Optimizer::setUpNesting(const std::vector<int>& outer, const std::vector<int>& inner) {
+    innerSteps_ = options_.innerIterations > 0
+                      ? options_.innerIterations
+                      : stepsFor(degreesOfFreedom(*scene_, inner), degreesOfFreedom(*scene_, outer));
+    focusOf_.assign(scene_->entities.size(), -1);
+    if (!options_.focusInner) return;
+    for (int g : outer) {
+        std::vector<int> members;
+        for (int e : inner) {
+            int top = e;
+            while (scene_->entities[size_t(top)].parent >= 0) top = scene_->entities[size_t(top)].parent;
+            if (top == g) members.push_back(e);
+        }
+        MoveSet moves(*scene_, members, options_.moves);
+        if (moves.empty()) continue;
+        focusOf_[size_t(g)] = int(focusSets_.size());
+        focusSteps_.push_back(options_.innerIterations > 0
+                                  ? options_.innerIterations
+                                  : stepsFor(degreesOfFreedom(*scene_, members),
+                                             degreesOfFreedom(scene_->entities[size_t(g)])));
+        focusSets_.push_back(std::move(moves));
+    }
+}
+
+const MoveSet& Optimizer::nextMoves(int& level) {
+    if (levels_.size() < 2) {
+        level = 0;
+        return levels_[0];
+    }
+    if (innerLeft_ > 0) {
+        --innerLeft_;
+        level = 1;
+        return focus_ >= 0 ? focusSets_[size_t(focus_)] : levels_[1];
+    }
+    level = 0;
+    return levels_[0];
 }
 
 void Optimizer::record() {
@@ -244,11 +305,17 @@ void Optimizer::step() {
         ++iteration_;
         return;
     }
-    const int level = levelAt(iteration_);
+    int level = 0;
+    const MoveSet& moves = nextMoves(level);
     const double t = temperature();
     Rng& rng = rngs_[size_t(level)];
     Layout proposed = current_;
-    Proposal p = levels_[size_t(level)].propose(proposed, rng);
+    Proposal p = moves.propose(proposed, rng);
+    if (levels_.size() == 2 && level == 0) {
+        // The chosen group (valid or not: the choice never depends on the state).
+        focus_ = options_.focusInner ? focusOf_[size_t(p.entity)] : -1;
+        innerLeft_ = !options_.focusInner ? innerSteps_ : focus_ >= 0 ? focusSteps_[size_t(focus_)] : 0;
+    }
     MoveStats& stats = stats_[size_t(level)].moves[int(p.type)];
     ++stats.proposed;
 

@@ -52,8 +52,16 @@ struct OptimizerOptions {
     Hierarchy hierarchy = Hierarchy::Hierarchical;
     // Object-level proposals after each group-level one (the paper gives the inner
     // level more iterations, so that a group arrangement is refined before the next
-    // group-level change).
+    // group-level change). 0: set by the levels' degrees of freedom, the object
+    // level's over the group level's (rounded, at least 1; with focusInner, those of
+    // the moved group's members over the group's own).
     int innerIterations = 4;
+    // Nested: the object-level proposals after a group-level one move only the members
+    // of the group it chose (its movable descendants), refining that group's new
+    // arrangement before the next group move; a group without movable members is
+    // followed by none. The group is chosen uniformly, whatever the state, so every
+    // step stays a Metropolis step of the same target.
+    bool focusInner = false;
     Schedule schedule;
     StartFrom start = StartFrom::Uniform;
     int startAttempts = 1000;
@@ -170,7 +178,10 @@ public:
     Evaluation evaluate(const Layout& layout, const std::vector<Transform>& world);
 
 private:
-    int levelAt(int iteration) const;
+    // The next proposal's move set and level (stats, random stream); updates the
+    // nesting state after a group-level proposal.
+    const MoveSet& nextMoves(int& level);
+    void setUpNesting(const std::vector<int>& outer, const std::vector<int>& inner);
     void record();
     // Metropolis-Hastings acceptance of `proposed` from the current state.
     bool metropolis(const Evaluation& proposed, double logHastings, double temperature, Rng& rng) const;
@@ -189,6 +200,13 @@ private:
     LightingEvaluator* lighting_;
     GeometryEvaluator geometry_;
     std::vector<MoveSet> levels_;
+    // Nesting: per top-level entity, the index of its members' move set in focusSets_
+    // (-1: no movable members); the object-level steps each set gets; the state.
+    std::vector<int> focusOf_;
+    std::vector<MoveSet> focusSets_;
+    std::vector<int> focusSteps_;
+    int innerSteps_ = 4;  // unfocused: object-level steps per group-level one
+    int innerLeft_ = 0, focus_ = -1;
     std::vector<LevelStats> stats_;
     std::vector<Rng> rngs_;  // one stream per level
     std::vector<uint64_t> streams_;  // the stream id each level's Rng is seeded with

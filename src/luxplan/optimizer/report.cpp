@@ -161,6 +161,7 @@ std::string reportJson(const Scene& scene, const OptimizerResult& r) {
         {"seed", o.seed},
         {"hierarchy", o.hierarchy == Hierarchy::Flat ? "flat" : "hierarchical"},
         {"inner_iterations", o.innerIterations},
+        {"nested", o.focusInner},
         {"schedule", {{"kind", o.schedule.kind == Schedule::Kind::Constant ? "constant" : "geometric"},
                       {"start", o.schedule.start}, {"end", o.schedule.end}}},
         {"start", o.start == StartFrom::Scene ? "scene" : "uniform"},
