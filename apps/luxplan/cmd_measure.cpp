@@ -16,6 +16,7 @@
 #include <luxplan/lightsamplers/light_samplers.h>
 #include <luxplan/lightsamplers/sampler_type.h>
 #include <luxplan/optimizer/flatten.h>
+#include <luxplan/optimizer/sampler_report.h>
 
 namespace luxplan::cli {
 namespace {
@@ -46,9 +47,8 @@ void runMeasure(const MeasureArgs& args) {
     options.lowDiscrepancy = args.sampling == "sobol";
     MeasureResult result = measureSamplers(tracer, options);
     // The objective of Eq. 1 for this layout, as optimize reports it (report.json's C).
-    std::vector<double> values;
-    for (const SamplerResult& r : result.samplers) values.push_back(r.value);
-    const double lighting = lightingCost(scene, values), lightingError = lightingCostError(scene, result.samplers);
+    const double lighting = lightingCostOfResults(scene, result.samplers);
+    const double lightingError = lightingCostError(scene, result.samplers);
     const GeometryResult geometry = GeometryEvaluator(scene).evaluate(worldTransforms(scene, layout));
     const double w = scene.objective.lightingWeight;
     const double cost = scene.objective.cost(lighting, geometry.cost);
@@ -67,6 +67,7 @@ void runMeasure(const MeasureArgs& args) {
                                       {"target", {bound(s.targetMin), bound(s.targetMax)}},
                                       {"penalty", lightingPenalty(s, r.value)},
                                       {"points", r.points}};
+            sampler.update(nlohmann::json(samplerStatisticsJson(s, r)));
             // Only when it happened, so that the usual output stays as it was.
             if (r.droppedNonFinite > 0) sampler["dropped_nonfinite"] = r.droppedNonFinite;
             if (options.adaptive) sampler["paths_per_point"] = r.pathsPerPoint;
@@ -89,13 +90,30 @@ void runMeasure(const MeasureArgs& args) {
     for (size_t k = 0; k < scene.samplers.size(); ++k) {
         const LightSamplerSpec& s = scene.samplers[k];
         const SamplerResult& r = result.samplers[k];
-        const double penalty = lightingPenalty(s, r.value);
+        const std::vector<LightingTerm> terms = lightingTerms(s, r);
+        const double penalty = terms[0].penalty;
         std::ostringstream target;
         target << "[" << s.targetMin << ", " << (std::isfinite(s.targetMax) ? std::to_string(int(s.targetMax)) : "inf") << "]";
         std::cout << std::left << std::setw(24) << s.name << std::setw(12) << s.type->name() << std::right << std::fixed
                   << std::setprecision(1) << std::setw(12) << r.value << std::setw(10) << r.standardError << std::setw(8)
                   << s.type->unit() << std::setw(22) << target.str() << std::setprecision(3) << std::setw(10) << penalty
                   << (penalty > 0 ? "  MISSED" : "  ok") << "\n";
+        if (std::string stats = describeStatistics(s, r); !stats.empty()) std::cout << "    " << stats << "\n";
+        // A statistics goal's line, under its sampler's columns (U0 is a ratio).
+        for (size_t i = 1; i < terms.size(); ++i) {
+            const LightingTerm& t = terms[i];
+            const bool ratio = t.statistic == Statistic::U0;
+            std::ostringstream goal;
+            goal << std::defaultfloat << "[" << t.targetMin << ", ";
+            if (std::isfinite(t.targetMax)) goal << t.targetMax;
+            else goal << "inf";
+            goal << "]";
+            std::cout << std::left << std::setw(24) << ("    " + std::string(statisticNames().name(t.statistic)))
+                      << std::setw(12) << "" << std::right << std::fixed << std::setprecision(ratio ? 3 : 1) << std::setw(12)
+                      << t.value << std::setw(10) << t.standardError << std::setw(8) << (ratio ? "" : s.type->unit())
+                      << std::setw(22) << goal.str() << std::setprecision(3) << std::setw(10) << t.penalty
+                      << (t.penalty > 0 ? "  MISSED" : "  ok") << "\n";
+        }
     }
     std::cout << std::defaultfloat << std::setprecision(4) << "C " << cost << " +- " << w * lightingError << " (L "
               << lighting << " +- " << lightingError << ", G " << geometry.cost

@@ -79,10 +79,14 @@ void printSummary(const Scene& s, std::ostream& out) {
         out << "\n";
     }
     out << "  samplers: " << s.samplers.size() << "\n";
-    for (const auto& sp : s.samplers)
+    for (const auto& sp : s.samplers) {
         out << "    " << sp.name << " (" << sp.type->name() << (sp.entity >= 0 ? ", on " + s.entities[sp.entity].path : "")
             << "): " << sp.type->describe() << "; target [" << sp.targetMin << ", " << sp.targetMax << "] "
-            << sp.type->unit() << "\n";
+            << sp.type->unit();
+        for (const StatisticGoal& g : sp.statistics)
+            out << "; " << statisticNames().name(g.statistic) << " [" << g.targetMin << ", " << g.targetMax << "]";
+        out << "\n";
+    }
     out << "  constraints: " << s.constraints.size() << "\n";
     for (const auto& c : s.constraints)
         out << "    " << c.kind->name() << " " << entityName(s, c.a) << " - " << entityName(s, c.b) << ": "

@@ -108,5 +108,100 @@ TEST(LightingPenalty, NonFiniteValueIsAnErrorNamingTheSampler) {
     EXPECT_EQ(lightingPenalty(s, 400), 0);
 }
 
+// A sampler measured at five points, 300 lx to 500 lx, and its terms.
+SamplerResult fivePoints() {
+    SamplerResult r;
+    r.points = {400, 300, 500, 450, 350};
+    r.pointErrors = {8, 6, 10, 9, 7};
+    r.value = 400;
+    r.standardError = std::sqrt(330.0) / 5;
+    return r;
+}
+
+LightSamplerSpec withGoals() {
+    LightSamplerSpec s;
+    s.name = "desk";
+    s.jsonPath = "/samplers/0";
+    s.file = "office.json";
+    s.targetMin = 300, s.targetMax = kInf, s.tolerance = 150, s.weight = 2;
+    s.statistics = {{Statistic::Min, 350, kInf, 100, "/samplers/0/statistics/min"},
+                    {Statistic::U0, 0.9, 1, 0.2, "/samplers/0/statistics/u0"}};
+    return s;
+}
+
+TEST(LightingTerms, TheValueFirstThenEachGoalOverThePoints) {
+    const std::vector<LightingTerm> terms = lightingTerms(withGoals(), fivePoints());
+    ASSERT_EQ(terms.size(), 3u);
+    EXPECT_EQ(terms[0].statistic, Statistic::Mean);
+    EXPECT_EQ(terms[0].value, 400);
+    EXPECT_EQ(terms[0].penalty, 0);
+    EXPECT_EQ(terms[1].statistic, Statistic::Min);
+    EXPECT_EQ(terms[1].value, 300);
+    EXPECT_EQ(terms[1].standardError, 6);
+    EXPECT_NEAR(terms[1].penalty, 0.5, 1e-12);  // 50 lx below its floor, tolerance 100
+    EXPECT_EQ(terms[2].statistic, Statistic::U0);
+    EXPECT_DOUBLE_EQ(terms[2].value, 0.75);
+    EXPECT_NEAR(terms[2].penalty, 0.75, 1e-12);  // (0.9 - 0.75) / 0.2
+    for (const LightingTerm& t : terms) EXPECT_EQ(t.weight, 2);
+    EXPECT_FALSE(allMet(terms));
+    EXPECT_TRUE(allMet({terms[0]}));
+}
+
+TEST(LightingCost, StatisticsGoalsAreTermsOfTheWeightedMean) {
+    Scene scene;
+    LightSamplerSpec plain;
+    plain.targetMin = 0, plain.targetMax = 100, plain.tolerance = 50, plain.weight = 1;
+    scene.samplers = {withGoals(), plain};
+    SamplerResult bright;
+    bright.value = 150;
+    // (2 (0 + 0.5 + 0.75) + 1 * 1) / (2 * 3 + 1): each goal counts in the denominator.
+    EXPECT_NEAR(lightingCostOfResults(scene, {fivePoints(), bright}), (2 * 1.25 + 1) / 7, 1e-12);
+    EXPECT_THROW(lightingCostOfResults(scene, {bright}), std::invalid_argument);
+    EXPECT_THROW(lightingCostOfResults(scene, {bright, bright}), std::invalid_argument);  // goals need points
+    // Values alone cannot score a goal.
+    EXPECT_THROW(lightingCost(scene, {400, 150}), std::invalid_argument);
+}
+
+TEST(LightingCost, WithoutGoalsTheResultsGiveTheValuesNumbers) {
+    Scene scene;
+    LightSamplerSpec a, b;
+    a.targetMin = 300, a.targetMax = 500, a.tolerance = 200, a.weight = 1;
+    b.targetMin = 0, b.targetMax = 100, b.tolerance = 50, b.weight = 3;
+    scene.samplers = {a, b};
+    SamplerResult x = fivePoints(), y;
+    x.value = 237.5, y.value = 151.25;
+    EXPECT_EQ(lightingCostOfResults(scene, {x, y}), lightingCost(scene, {237.5, 151.25}));
+    EXPECT_EQ(lightingCostOfResults(Scene(), std::vector<SamplerResult>()), 0);
+}
+
+TEST(LightingTerms, ANonFiniteStatisticIsAnErrorNamingItsGoal) {
+    SamplerResult r = fivePoints();
+    r.points[0] = -kInf;
+    try {
+        lightingTerms(withGoals(), r);
+        ADD_FAILURE() << "an infinite min was scored";
+    } catch (const SceneError& e) {
+        EXPECT_EQ(std::string(e.what()), "office.json: /samplers/0/statistics/min: sampler \"desk\" measured its min as an "
+                                         "infinite value, not a finite number: it cannot be scored");
+    }
+}
+
+TEST(LightingCostError, EachGoalAddsItsStatisticsErrorThroughItsPenalty) {
+    Scene scene;
+    LightSamplerSpec plain;
+    plain.targetMin = 0, plain.targetMax = 100, plain.tolerance = 50, plain.weight = 1;
+    scene.samplers = {withGoals(), plain};
+    SamplerResult bright;
+    bright.value = 150;  // exact: no error
+    const PointStatistics s = pointStatistics(fivePoints().points, fivePoints().pointErrors);
+    // L's denominator 2 * 3 + 1; the mean (400 lx, floor 300) is well inside: 0. The min
+    // (300 +- 6 below its floor of 350, tolerance 100) and U0 (0.75 below 0.9, tolerance
+    // 0.2) are on linear pieces: slope times error.
+    const double min = 2.0 / 7 * 6 / 100, u0 = 2.0 / 7 * s.u0.standardError / 0.2;
+    EXPECT_NEAR(lightingTermError(scene, 0, fivePoints()), std::hypot(min, u0), 1e-12);
+    EXPECT_NEAR(lightingCostError(scene, {fivePoints(), bright}), std::hypot(min, u0), 1e-12);
+    EXPECT_EQ(lightingTermError(scene, 1, bright), 0);
+}
+
 }  // namespace
 }  // namespace luxplan

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <luxplan/io/scene_loader.h>
+#include <luxplan/lightsamplers/sampler_type.h>
 #include "support/scene_builder.h"
 #include "support/scene_compare.h"
 #include "support/shared_scenes.h"
@@ -148,6 +149,20 @@ TEST(SceneBuilder, PresetsAndTheObjective) {
                     "parts": [{"preset": "table", "size": [1.0, 0.8, 0.75], "material": "wood"}],
                     "children": [{"name": "lamp", "position": [0, 0, 0.75],
                                   "parts": [{"preset": "stand_lamp", "center": [0.2, 0, 0.1], "material": "wood"}]}]}]})"));
+}
+
+// A sampler's statistics goals, with the loader's default tolerances and order.
+TEST(SceneBuilder, StatisticsGoals) {
+    test::expectSameScene(test::SceneBuilder()
+                              .sampler("work", planarSampler({3, 2, 0.8}, {0, 0, 1}, {0, 1, 0}, {2, 1}, {4, 2}), 500)
+                              .statistic(Statistic::U0, 0.6, 1, 0.2)
+                              .statistic(Statistic::Min, 200, 1e9)
+                              .statistic(Statistic::Max, 0, 2000)
+                              .build(),
+                          load("scene.json", R"({"luxplan": 1,
+      "samplers": [{"name": "work", "type": "planar", "center": [3, 2, 0.8], "size": [2, 1], "grid": [4, 2], "target": [500, null],
+                    "statistics": {"u0": {"target": [0.6, 1], "tolerance": 0.2}, "min": {"target": [200, 1e9]},
+                                   "max": {"target": [0, 2000]}}}]})"));
 }
 
 }  // namespace

@@ -178,6 +178,26 @@ SceneBuilder& SceneBuilder::sampler(const std::string& name, std::shared_ptr<con
     return *this;
 }
 
+SceneBuilder& SceneBuilder::statistic(Statistic statistic, double targetMin, double targetMax, std::optional<double> tolerance) {
+    if (samplers_.empty()) throw std::invalid_argument("statistic(): no sampler yet");
+    if (statistic == Statistic::Mean) throw std::invalid_argument("statistic(): the mean's goal is the sampler's target");
+    if (targetMax < targetMin || targetMin < 0) throw std::invalid_argument("statistic(): bad target range");
+    LightSamplerSpec& s = samplers_.back();
+    StatisticGoal g;
+    g.statistic = statistic;
+    g.targetMin = targetMin, g.targetMax = targetMax;
+    // The loader's default: half the bound the goal guards, its min or else its max.
+    double fallback = 0.5 * (targetMin > 0 ? targetMin : targetMax);
+    if (!(fallback > 0) || !std::isfinite(fallback)) fallback = 1;
+    g.tolerance = tolerance.value_or(fallback);
+    g.jsonPath = s.jsonPath + "/statistics/" + statisticNames().name(statistic);
+    // The loader reads them in the order min, max, u0.
+    auto at = std::find_if(s.statistics.begin(), s.statistics.end(),
+                           [&](const StatisticGoal& x) { return int(x.statistic) > int(statistic); });
+    s.statistics.insert(at, g);
+    return *this;
+}
+
 SceneBuilder& SceneBuilder::entity(const std::string& name, Vec3 position, double rotationDeg) {
     EntityDef d;
     Entity& e = d.entity;

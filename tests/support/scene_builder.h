@@ -52,6 +52,10 @@ public:
     // Target [min, max] (max kInf: open); tolerance unset: the loader's default.
     SceneBuilder& sampler(const std::string& name, std::shared_ptr<const SamplerType> type, double targetMin,
                           double targetMax = kInf, std::optional<double> tolerance = std::nullopt);
+    // A statistics goal of the last sampler (its "statistics" object: min, max or u0);
+    // tolerance unset: the loader's default.
+    SceneBuilder& statistic(Statistic statistic, double targetMin, double targetMax = kInf,
+                            std::optional<double> tolerance = std::nullopt);
 
     // Opens an entity (a child of the open one, if any) until end().
     SceneBuilder& entity(const std::string& name, Vec3 position = {}, double rotationDeg = 0);

@@ -91,6 +91,15 @@ inline void expectSameSampler(const LightSamplerSpec& a, const LightSamplerSpec&
     EXPECT_EQ(a.tolerance, b.tolerance) << what;
     EXPECT_EQ(a.weight, b.weight) << what;
     EXPECT_EQ(a.entity, b.entity) << what;
+    ASSERT_EQ(a.statistics.size(), b.statistics.size()) << what;
+    for (size_t i = 0; i < a.statistics.size(); ++i) {
+        const StatisticGoal &x = a.statistics[i], &y = b.statistics[i];
+        EXPECT_EQ(x.statistic, y.statistic) << what;
+        EXPECT_EQ(x.targetMin, y.targetMin) << what;
+        EXPECT_EQ(x.targetMax, y.targetMax) << what;
+        EXPECT_EQ(x.tolerance, y.tolerance) << what;
+        EXPECT_EQ(x.jsonPath, y.jsonPath) << what;
+    }
 }
 
 inline void expectSameEmitter(const Emitter& a, const Emitter& b) {

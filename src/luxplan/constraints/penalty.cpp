@@ -8,41 +8,101 @@
 #include <string>
 
 namespace luxplan {
+namespace {
+
+// A NaN would otherwise score as on target (every comparison with it is false).
+void requireFinite(const LightSamplerSpec& sampler, const std::string& jsonPath, const std::string& what, double value) {
+    if (!std::isfinite(value))
+        throw SceneError({{sampler.file.empty() ? std::string("scene") : sampler.file, jsonPath,
+                           "sampler \"" + sampler.name + "\" measured " + what + (std::isnan(value) ? "nan" : "an infinite value") +
+                               ", not a finite number: it cannot be scored"}});
+}
+
+void requireSize(const Scene& scene, size_t count) {
+    if (count != scene.samplers.size())
+        throw std::invalid_argument("lightingCost: " + std::to_string(count) + " values for " +
+                                    std::to_string(scene.samplers.size()) + " samplers");
+}
+
+}  // namespace
 
 double lightingPenalty(const LightSamplerSpec& sampler, double value) {
-    // A NaN would otherwise score as on target (every comparison with it is false).
-    if (!std::isfinite(value))
-        throw SceneError({{sampler.file.empty() ? std::string("scene") : sampler.file, sampler.jsonPath,
-                           "sampler \"" + sampler.name + "\" measured " + (std::isnan(value) ? "nan" : "an infinite value") +
-                               ", not a finite number: it cannot be scored"}});
+    requireFinite(sampler, sampler.jsonPath, "", value);
     return penalty(value, sampler.targetMin, sampler.targetMax, sampler.tolerance, kLightingStiffness);
 }
 
 double lightingCost(const Scene& scene, const std::vector<double>& values) {
-    if (values.size() != scene.samplers.size())
-        throw std::invalid_argument("lightingCost: " + std::to_string(values.size()) + " values for " +
-                                    std::to_string(scene.samplers.size()) + " samplers");
+    requireSize(scene, values.size());
     double sum = 0, weights = 0;
     for (size_t k = 0; k < values.size(); ++k) {
+        if (!scene.samplers[k].statistics.empty())
+            throw std::invalid_argument("lightingCost: sampler \"" + scene.samplers[k].name +
+                                        "\" has statistics goals, which need its points, not only its value");
         sum += scene.samplers[k].weight * lightingPenalty(scene.samplers[k], values[k]);
         weights += scene.samplers[k].weight;
     }
     return weights > 0 ? sum / weights : 0.0;
 }
 
+std::vector<LightingTerm> lightingTerms(const LightSamplerSpec& sampler, const SamplerResult& result) {
+    std::vector<LightingTerm> terms;
+    terms.push_back({Statistic::Mean, result.value, result.standardError, sampler.targetMin, sampler.targetMax,
+                     sampler.tolerance, sampler.weight, lightingPenalty(sampler, result.value)});
+    if (sampler.statistics.empty()) return terms;
+    if (result.points.empty())
+        throw std::invalid_argument("lightingTerms: sampler \"" + sampler.name +
+                                    "\" has statistics goals, but its measurement holds no points");
+    const PointStatistics stats = pointStatistics(result.points, result.pointErrors);
+    for (const StatisticGoal& goal : sampler.statistics) {
+        const StatisticEstimate& e = stats.of(goal.statistic);
+        requireFinite(sampler, goal.jsonPath, std::string("its ") + statisticNames().name(goal.statistic) + " as ", e.value);
+        terms.push_back({goal.statistic, e.value, e.standardError, goal.targetMin, goal.targetMax, goal.tolerance,
+                         sampler.weight, penalty(e.value, goal.targetMin, goal.targetMax, goal.tolerance, kLightingStiffness)});
+    }
+    return terms;
+}
+
+bool allMet(const std::vector<LightingTerm>& terms) {
+    for (const LightingTerm& t : terms)
+        if (t.penalty > 0) return false;
+    return true;
+}
+
+double lightingCostOfResults(const Scene& scene, const std::vector<SamplerResult>& results) {
+    requireSize(scene, results.size());
+    double sum = 0, weights = 0;
+    for (size_t k = 0; k < results.size(); ++k)
+        for (const LightingTerm& t : lightingTerms(scene.samplers[k], results[k])) {
+            sum += t.weight * t.penalty;
+            weights += t.weight;
+        }
+    return weights > 0 ? sum / weights : 0.0;
+}
+
 namespace {
 
+// L's denominator: every term's weight, a sampler's once per term (1 + its goals).
 double totalWeight(const Scene& scene) {
     double weights = 0;
-    for (const LightSamplerSpec& s : scene.samplers) weights += s.weight;
+    for (const LightSamplerSpec& s : scene.samplers) weights += s.weight * double(1 + s.statistics.size());
     return weights;
 }
 
+double secantError(const LightingTerm& t, double weights) {
+    if (t.standardError <= 0) return 0.0;
+    const double up = penalty(t.value + t.standardError, t.targetMin, t.targetMax, t.tolerance, kLightingStiffness);
+    const double down = penalty(t.value - t.standardError, t.targetMin, t.targetMax, t.tolerance, kLightingStiffness);
+    return t.weight / weights * std::abs(up - down) / 2;
+}
+
+// One sampler's share of L's error: its terms' secants, in quadrature.
 double termError(const LightSamplerSpec& s, const SamplerResult& r, double weights) {
-    if (weights <= 0 || r.standardError <= 0) return 0.0;
-    const double up = lightingPenalty(s, r.value + r.standardError);
-    const double down = lightingPenalty(s, r.value - r.standardError);
-    return s.weight / weights * std::abs(up - down) / 2;
+    if (weights <= 0) return 0.0;
+    const std::vector<LightingTerm> terms = lightingTerms(s, r);
+    if (terms.size() == 1) return secantError(terms[0], weights);
+    double variance = 0;
+    for (const LightingTerm& t : terms) variance += secantError(t, weights) * secantError(t, weights);
+    return std::sqrt(variance);
 }
 
 }  // namespace

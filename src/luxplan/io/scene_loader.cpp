@@ -806,9 +806,14 @@ private:
             f.error("type", "unknown sampler type \"" + *type + "\"" + didYouMean(*type, samplerTypeNames()) + " (" +
                                 listNames(samplerTypeNames()) + ")");
         }
+        const size_t before = sink_.count();
         if (entry) s.type = entry->read(f);
+        // Fitted to its room only when it was read without a problem, not to repeat one.
+        if (entry && sink_.count() == before)
+            if (auto fit = s.type->fitted(samplerSite(entity), f)) s.type = fit;
         readTarget(f, s, entry ? s.type->unit() : "");
         s.weight = f.number("weight", 1.0, kNonNegative);
+        readStatistics(f, s, entry ? s.type.get() : nullptr, entry ? *type : "");
         f.finish(entry ? article(*type + " sampler") : "", family);
         if (!entry) return;
         int index = int(scene_.samplers.size());
@@ -816,41 +821,110 @@ private:
         if (entity >= 0) scene_.entities[entity].samplers.push_back(index);
     }
 
-    void readTarget(const Fields& f, LightSamplerSpec& s, const char* unit) {
-        if (!f.has("target")) f.missing("target");
-        else {
-            const Json& t = f.get("target");
-            if (!t.is_array() || t.size() != 2) {
-                f.error("target", "expected [min, max], got " + typeName(t));
-            } else {
-                bool ok = true;
-                auto bound = [&](size_t i, double fallback) {
-                    if (t[i].is_null()) return fallback;
-                    if (!t[i].is_number()) {
-                        sink_.error(pointer(f.at("target"), i), "expected a number or null, got " + typeName(t[i]));
-                        ok = false;
-                        return fallback;
-                    }
-                    return t[i].get<double>();
-                };
-                s.targetMin = bound(0, 0.0);
-                s.targetMax = bound(1, kInf);
-                if (ok && s.targetMax < s.targetMin)
-                    f.error("target", "target range is reversed: max " + formatNumber(s.targetMax) + " < min " +
-                                          formatNumber(s.targetMin) + " " + unit);
-                else if (ok && s.targetMax < 0)
-                    f.error("target", "impossible target: max " + formatNumber(s.targetMax) + " " + unit +
-                                          " is below 0 and no light level can meet it");
-                else if (ok && s.targetMin < 0)
-                    f.error("target", "target min " + formatNumber(s.targetMin) + " " + unit + " is negative");
-            }
+    // "target": [min, max], null for an open end (0 and infinity); true when valid.
+    bool readTargetRange(const Fields& f, double& lo, double& hi, const char* unit) {
+        if (!f.has("target")) {
+            f.missing("target");
+            return false;
         }
+        const Json& t = f.get("target");
+        if (!t.is_array() || t.size() != 2) {
+            f.error("target", "expected [min, max], got " + typeName(t));
+            return false;
+        }
+        bool ok = true;
+        auto bound = [&](size_t i, double fallback) {
+            if (t[i].is_null()) return fallback;
+            if (!t[i].is_number()) {
+                sink_.error(pointer(f.at("target"), i), "expected a number or null, got " + typeName(t[i]));
+                ok = false;
+                return fallback;
+            }
+            return t[i].get<double>();
+        };
+        lo = bound(0, 0.0);
+        hi = bound(1, kInf);
+        if (!ok) return false;
+        const std::string u = *unit ? std::string(" ") + unit : "";
+        if (hi < lo) f.error("target", "target range is reversed: max " + formatNumber(hi) + " < min " + formatNumber(lo) + u);
+        else if (hi < 0)
+            f.error("target", "impossible target: max " + formatNumber(hi) + u + " is below 0 and no light level can meet it");
+        else if (lo < 0) f.error("target", "target min " + formatNumber(lo) + u + " is negative");
+        else return true;
+        return false;
+    }
+
+    void readTarget(const Fields& f, LightSamplerSpec& s, const char* unit) {
+        readTargetRange(f, s.targetMin, s.targetMax, unit);
         // Default tolerance (the paper's L_rej): the width of the range, or half the
         // finite bound when the range is open or a single value.
         double width = s.targetMax - s.targetMin;
         double fallback = std::isfinite(width) && width > 0 ? width : 0.5 * (std::isfinite(s.targetMax) ? s.targetMax : s.targetMin);
         if (!(fallback > 0)) fallback = 1;
         s.tolerance = f.number("tolerance", fallback, Range::positive(unit));
+    }
+
+    SamplerSite samplerSite(int entity) const {
+        SamplerSite site;
+        for (const StaticItem& g : scene_.geometry)
+            if (g.room) site.rooms.push_back(g.room->box);
+        site.carried = entity >= 0;
+        return site;
+    }
+
+    // "a planar or volume sampler": the types whose points carry statistics.
+    static const std::string& statisticsTypes() {
+        static const std::string names = [] {
+            std::vector<std::string> kinds;
+            DiagnosticSink discard;
+            const Json empty = Json::object();
+            for (const SamplerTypeEntry& t : samplerTypes())
+                if (t.read(Fields(discard, empty, ""))->hasPointStatistics()) kinds.push_back(t.name);
+            return article(listNames(kinds) + " sampler");
+        }();
+        return names;
+    }
+
+    // The sampler's "statistics": goals on the min, max and U0 of its points, each
+    // {"target": [min, max], "tolerance": t}, read in the order min, max, u0.
+    void readStatistics(const Fields& f, LightSamplerSpec& s, const SamplerType* type, const std::string& typeLabel) {
+        if (!f.has("statistics")) return;
+        const Json& goals = f.get("statistics");
+        if (type && !type->hasPointStatistics()) {
+            f.error("statistics", "statistics are over the points of " + statisticsTypes() + ", whose value is their mean; " +
+                                      article(typeLabel + " sampler") + " has none");
+            return;
+        }
+        if (!goals.is_object()) {
+            f.error("statistics", "expected an object of goals such as {\"u0\": {\"target\": [0.6, 1]}}, got " +
+                                      json::typeName(goals));
+            return;
+        }
+        static const EnumNames<Statistic> names{{{Statistic::Min, "min"}, {Statistic::Max, "max"}, {Statistic::U0, "u0"}}};
+        for (const auto& [key, value] : goals.items())
+            if (!names.parse(key))
+                sink_.error(pointer(f.at("statistics"), key),
+                            names.unknown("statistic", key) + (key == "mean" ? "; the mean's goal is the sampler's \"target\"" : ""));
+        for (const auto& [statistic, name] : names.entries) {
+            if (!goals.contains(name)) continue;
+            StatisticGoal goal;
+            goal.statistic = statistic;
+            goal.jsonPath = pointer(f.at("statistics"), name);
+            Fields g(sink_, goals[name], goal.jsonPath, "a statistics goal object");
+            if (!g.valid()) continue;
+            const char* unit = statistic == Statistic::U0 || !type ? "" : type->unit();
+            if (readTargetRange(g, goal.targetMin, goal.targetMax, unit) && statistic == Statistic::U0 && goal.targetMin > 1)
+                g.error("target", "U0 = min / mean is at most 1: a target min of " + formatNumber(goal.targetMin) +
+                                      " cannot be met");
+            // Default tolerance: half the bound the goal guards, its min (a floor, as a
+            // u0 or min goal has) or else its max (a ceiling); the width of a range such
+            // as [200, 1e9] would make the goal toothless.
+            double fallback = 0.5 * (goal.targetMin > 0 ? goal.targetMin : goal.targetMax);
+            if (!(fallback > 0) || !std::isfinite(fallback)) fallback = 1;
+            goal.tolerance = g.number("tolerance", fallback, Range::positive(unit));
+            g.finish();
+            s.statistics.push_back(goal);
+        }
     }
 
     std::vector<std::string> entityNames() const {

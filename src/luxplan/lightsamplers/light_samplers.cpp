@@ -5,6 +5,7 @@
 
 #include <luxplan/core/estimator.h>
 #include <luxplan/core/parallel.h>
+#include <luxplan/core/point_statistics.h>
 
 namespace luxplan {
 namespace {
@@ -92,10 +93,32 @@ std::unique_ptr<PlacedSampler> placeSampler(const LightSamplerSpec& s, const Emb
     return s.type->place(s.entity >= 0 ? rt.worldFromEntity(s.entity) : Transform());
 }
 
-bool settled(const LightSamplerSpec& spec, const Estimate& e, double z) {
-    const double lo = e.value - z * e.standardError, hi = e.value + z * e.standardError;
-    return hi <= spec.targetMin || (lo >= spec.targetMin && hi <= spec.targetMax) || lo >= spec.targetMax;
+namespace {
+
+// value +- z standard errors lies inside one linear piece of a term's penalty.
+bool settled(double value, double standardError, double targetMin, double targetMax, double z) {
+    const double lo = value - z * standardError, hi = value + z * standardError;
+    return hi <= targetMin || (lo >= targetMin && hi <= targetMax) || lo >= targetMax;
 }
+
+// ... for the sampler's value and each of its statistics goals.
+bool settled(const LightSamplerSpec& spec, const Estimate& e, const ItemEstimates& items, double z) {
+    if (!settled(e.value, e.standardError, spec.targetMin, spec.targetMax, z)) return false;
+    if (spec.statistics.empty()) return true;
+    std::vector<double> values, errors;
+    for (int i = 0; i < items.items(); ++i) {
+        const Estimate x = items.of(i);
+        values.push_back(x.value), errors.push_back(x.standardError);
+    }
+    const PointStatistics stats = pointStatistics(values, errors);
+    for (const StatisticGoal& goal : spec.statistics) {
+        const StatisticEstimate& s = stats.of(goal.statistic);
+        if (!settled(s.value, s.standardError, goal.targetMin, goal.targetMax, z)) return false;
+    }
+    return true;
+}
+
+}  // namespace
 
 MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& options, PathCache* cache) {
     const EmbreeScene& rt = tracer.rayTracer();
@@ -207,7 +230,7 @@ MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& op
         for (size_t k = 0; k < samplers; ++k) {
             if (!active[k] || firstWork[k + 1] == firstWork[k]) continue;
             const ItemEstimates e = estimates(k);
-            if (settled(scene.samplers[k], placed[k]->combine(e), options.confidenceZ)) {
+            if (settled(scene.samplers[k], placed[k]->combine(e), e, options.confidenceZ)) {
                 active[k] = 0;
                 continue;
             }

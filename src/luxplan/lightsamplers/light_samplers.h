@@ -23,8 +23,9 @@ struct MeasureOptions {
     uint64_t seed = 1;
     // Adaptive: paths are traced in rounds of batchPaths per point, and a sampler
     // stops after a round once value +- confidenceZ standard errors lies inside one
-    // linear piece of its penalty (below, inside or above its target band): more
-    // paths would then only refine a penalty that is linear in the value. A stopped
+    // linear piece of its penalty (below, inside or above its target band), and so
+    // does each statistics goal's statistic: more paths would then only refine
+    // penalties that are linear in the values. A stopped
     // sampler reads exactly as a fixed run of the paths it traced.
     bool adaptive = false;
     int batchPaths = 16;

@@ -1,13 +1,24 @@
 // Planar sampler: illuminance (lx) at the centres of the cells of a grid on a
-// rectangle, e.g. a desk's work plane; its value is the mean over the points.
+// rectangle, e.g. a desk's work plane; its value is the mean over the points. The
+// grid is given, or EN 12464-1's for the area, which may be trimmed by a band at the
+// room's walls (docs/scene-format.md#samplers-lighting-intentions).
 #include <cmath>
 #include <stdexcept>
+
+#include <nlohmann/json.hpp>
 
 #include <luxplan/lightsamplers/sampler_type.h>
 #include <luxplan/pathtracer/path_tracer.h>
 
 namespace luxplan {
 namespace {
+
+// "" or why an EN 12464-1 grid has too many points (core/limits.h).
+std::string gridLimitProblem(std::array<int, 2> grid) {
+    if (grid[0] <= 1024 && grid[1] <= 1024 && int64_t(grid[0]) * grid[1] <= limits::kMaxSamplerPoints) return "";
+    return "the EN 12464-1 grid of " + std::to_string(grid[0]) + " x " + std::to_string(grid[1]) +
+           " points exceeds the limit of 1024 per side and " + std::to_string(limits::kMaxSamplerPoints) + " in all";
+}
 
 class PlacedPlanar final : public PlacedSampler {
 public:
@@ -36,6 +47,8 @@ public:
     Vec3 center, normal{0, 0, 1}, up{0, 1, 0};
     Vec2 size{1, 1};
     std::array<int, 2> grid{4, 4};
+    bool en12464 = false;           // the grid follows EN 12464-1's rule for `size`
+    std::optional<double> wallBand;  // m; trims `size` at the room's walls (fitted(), idempotent)
 
     const char* name() const override { return "planar"; }
     const char* unit() const override { return "lx"; }
@@ -66,10 +79,72 @@ public:
     }
 
     std::string describe() const override {
-        return std::to_string(grid[0]) + " x " + std::to_string(grid[1]) + " points on " + json::formatNumber(size.x) +
-               " x " + json::formatNumber(size.y) + " m";
+        std::string d = std::to_string(grid[0]) + " x " + std::to_string(grid[1]) + " points";
+        if (en12464) d += " (EN 12464-1 grid)";
+        d += " on " + json::formatNumber(size.x) + " x " + json::formatNumber(size.y) + " m";
+        if (wallBand) d += " (a " + json::formatNumber(*wallBand) + " m band at the walls left out)";
+        return d;
     }
+
+    bool hasPointStatistics() const override { return true; }
+    std::optional<std::array<int, 2>> pointGrid() const override { return grid; }
+
+    std::shared_ptr<const SamplerType> fitted(const SamplerSite& site, const json::Fields& f) const override {
+        return wallBand ? trimAtWalls(site, f) : nullptr;
+    }
+
+private:
+    std::shared_ptr<const SamplerType> trimAtWalls(const SamplerSite& site, const json::Fields& f) const;
 };
+
+// The area minus the band within `wallBand` of the walls of the room that holds the
+// centre: only a world-fixed, horizontal sampler with sides along the walls can be
+// trimmed to a rectangle that stays put.
+std::shared_ptr<const SamplerType> Planar::trimAtWalls(const SamplerSite& site, const json::Fields& f) const {
+    const double band = *wallBand;
+    if (site.carried) {
+        f.error("wall_band", "a wall band needs a world-fixed sampler: one carried by an entity moves with it");
+        return nullptr;
+    }
+    const Vec3 n = normalize(normal), v = normalize(up - n * dot(up, n)), w = normalize(cross(v, n));
+    auto axial = [](Vec3 d) { return std::abs(std::abs(d.x) + std::abs(d.y) + std::abs(d.z) - 1) < 1e-9; };
+    if (std::abs(std::abs(n.z) - 1) > 1e-9 || !axial(v)) {
+        f.error("wall_band", "a wall band needs a horizontal sampler (normal [0, 0, 1] or [0, 0, -1]) whose sides run "
+                             "along the walls (up along x or y)");
+        return nullptr;
+    }
+    const Bounds3* room = nullptr;
+    for (const Bounds3& r : site.rooms)
+        if (r.contains(center)) room = &r;
+    if (!room) {
+        f.error("wall_band", "no room holds the sampler's centre [" + json::formatNumber(center.x) + ", " +
+                                 json::formatNumber(center.y) + ", " + json::formatNumber(center.z) +
+                                 "]: a wall band is measured from the walls of its room");
+        return nullptr;
+    }
+    // The side along x is size.x when w runs along x, else size.y.
+    const bool wAlongX = std::abs(w.x) > 0.5;
+    const Vec2 half = wAlongX ? Vec2(size.x / 2, size.y / 2) : Vec2(size.y / 2, size.x / 2);
+    const double x0 = std::max(center.x - half.x, room->lo.x + band), x1 = std::min(center.x + half.x, room->hi.x - band);
+    const double y0 = std::max(center.y - half.y, room->lo.y + band), y1 = std::min(center.y + half.y, room->hi.y - band);
+    if (!(x1 - x0 > 1e-9) || !(y1 - y0 > 1e-9)) {
+        f.error("wall_band", "a wall band of " + json::formatNumber(band) + " m leaves nothing of the sampler in the room " +
+                                 json::formatNumber(room->lo.x) + ".." + json::formatNumber(room->hi.x) + " x " +
+                                 json::formatNumber(room->lo.y) + ".." + json::formatNumber(room->hi.y) + " m");
+        return nullptr;
+    }
+    auto s = std::make_shared<Planar>(*this);
+    s->center = Vec3((x0 + x1) / 2, (y0 + y1) / 2, center.z);
+    s->size = wAlongX ? Vec2(x1 - x0, y1 - y0) : Vec2(y1 - y0, x1 - x0);
+    if (en12464) {
+        s->grid = en12464Grid(s->size);
+        if (std::string problem = gridLimitProblem(s->grid); !problem.empty()) {
+            f.error("grid", problem);
+            return nullptr;
+        }
+    }
+    return s;
+}
 
 }  // namespace
 
@@ -91,6 +166,16 @@ std::shared_ptr<const SamplerType> planarSampler(Vec3 center, Vec3 normal, Vec3 
     return s;
 }
 
+double en12464Spacing(double longerSide) { return std::min(10.0, 0.2 * std::pow(5.0, std::log10(longerSide))); }
+
+std::array<int, 2> en12464Grid(Vec2 size) {
+    const double p = en12464Spacing(std::max(size.x, size.y));
+    // A side that is a whole number of cells in exact arithmetic must not gain one
+    // from rounding (10 m: p = 1, 10 points).
+    auto count = [p](double side) { return int(std::max(1.0, std::ceil(side / p * (1 - 1e-12)))); };
+    return {count(size.x), count(size.y)};
+}
+
 std::shared_ptr<const SamplerType> readPlanarSampler(const json::Fields& f) {
     auto s = std::make_shared<Planar>();
     s->center = f.vec3("center", true, json::coordinateRange()).value_or(Vec3());
@@ -100,11 +185,22 @@ std::shared_ptr<const SamplerType> readPlanarSampler(const json::Fields& f) {
     s->size = f.vec2("size", true, json::signedLengthRange()).value_or(Vec2(1, 1));
     if (f.has("size") && (s->size.x <= 0 || s->size.y <= 0))
         f.error("size", "sampler has zero area: size " + json::formatNumber(s->size.x) + " x " + json::formatNumber(s->size.y));
-    if (auto g = f.numbers("grid", 2, json::Range::closed(1, 1024))) {
+    if (f.has("grid") && f.get("grid").is_string()) {
+        if (f.get("grid").get<std::string>() != "en12464")
+            f.error("grid", "unknown grid \"" + f.get("grid").get<std::string>() +
+                                "\": expected [nx, ny] or \"en12464\" (EN 12464-1's grid for the area)");
+        s->en12464 = true;
+    } else if (auto g = f.numbers("grid", 2, json::Range::closed(1, 1024))) {
         if ((*g)[0] != std::floor((*g)[0]) || (*g)[1] != std::floor((*g)[1])) f.error("grid", "grid counts must be whole numbers");
         else if (const double n = (*g)[0] * (*g)[1]; n > double(limits::kMaxSamplerPoints))
             f.error("grid", json::formatNumber(n) + " points exceeds the limit of " + std::to_string(limits::kMaxSamplerPoints));
         s->grid = {int((*g)[0]), int((*g)[1])};
+    }
+    s->wallBand = f.number("wall_band", json::Range::positive("m").limitedTo(limits::kMaxLength));
+    // A trimmed area gets its grid in fitted(); its limits are checked there.
+    if (s->en12464 && s->size.x > 0 && s->size.y > 0) {
+        s->grid = en12464Grid(s->size);
+        if (std::string problem = gridLimitProblem(s->grid); !s->wallBand && !problem.empty()) f.error("grid", problem);
     }
     return s;
 }

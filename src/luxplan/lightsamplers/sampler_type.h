@@ -138,6 +138,13 @@ public:
     virtual SamplerDrawing drawing() const = 0;
 };
 
+// Where a sampler is in the scene: the inner boxes of the scene's rooms (world
+// frame) and whether an entity carries it.
+struct SamplerSite {
+    std::vector<Bounds3> rooms;
+    bool carried = false;
+};
+
 // A sampler type's own parameters, in the frame of the entity that carries it (the
 // world for a fixed sampler). Immutable: a scene shares it between copies.
 class SamplerType {
@@ -152,6 +159,18 @@ public:
     virtual std::shared_ptr<const SamplerType> transformed(const Transform& newFromOld) const = 0;
     // One line for people: "4 x 4 points on 1.6 x 0.8 m, facing +z".
     virtual std::string describe() const = 0;
+    // Whether its value is the mean of its points, so that their min, max and
+    // uniformity U0 (EN 12464-1, core/point_statistics.h) describe it and may carry
+    // goals (the sampler's "statistics"): planar and volume.
+    virtual bool hasPointStatistics() const { return false; }
+    // Its points as an nx x ny grid (planar), for reports; none otherwise.
+    virtual std::optional<std::array<int, 2>> pointGrid() const { return std::nullopt; }
+    // The sampler fitted to where the loader found it, which its reader cannot see
+    // (the planar type's "wall_band" trims its area at the walls of its room), with
+    // problems reported through `f`, the sampler's object; null: nothing to fit.
+    virtual std::shared_ptr<const SamplerType> fitted(const SamplerSite& /*site*/, const json::Fields& /*f*/) const {
+        return nullptr;
+    }
 };
 
 // A registered type: its name in the scene file and how its own keys are read. A
@@ -166,6 +185,12 @@ struct SamplerTypeEntry {
 // are normalized, and what the reader reports as an error throws
 // std::invalid_argument. Defined in the type's own file.
 std::shared_ptr<const SamplerType> planarSampler(Vec3 center, Vec3 normal, Vec3 up, Vec2 size, std::array<int, 2> grid);
+// EN 12464-1's calculation grid on a w x h area (the planar type's "grid":
+// "en12464"): cells of at most p = 0.2 * 5^log10(d) m, d the longer side, p at most
+// 10 m; n = ceil(side / p) cells per side, a point at each centre. 5 x 4 m: p = 0.616
+// m, 9 x 7 points.
+double en12464Spacing(double longerSide);
+std::array<int, 2> en12464Grid(Vec2 size);
 std::shared_ptr<const SamplerType> directionalSampler(Vec3 origin, Vec3 direction, Vec3 up, double fovDeg, int strata);
 std::shared_ptr<const SamplerType> volumeSampler(Vec3 center, std::array<Vec3, 3> axes, int points);
 std::shared_ptr<const SamplerType> cylindricalSampler(Vec3 center);

@@ -72,6 +72,8 @@ public:
         return std::to_string(points) + " points in a " + json::formatNumber(length(axes[0])) + " x " +
                json::formatNumber(length(axes[1])) + " x " + json::formatNumber(length(axes[2])) + " m box";
     }
+
+    bool hasPointStatistics() const override { return true; }
 };
 
 }  // namespace

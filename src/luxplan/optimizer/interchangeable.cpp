@@ -33,9 +33,14 @@ bool sameMesh(const TriangleMesh& a, const TriangleMesh& b) {
     return true;
 }
 
+bool sameGoal(const StatisticGoal& a, const StatisticGoal& b) {
+    return a.statistic == b.statistic && a.targetMin == b.targetMin && a.targetMax == b.targetMax && a.tolerance == b.tolerance;
+}
+
 bool sameSampler(const LightSamplerSpec& a, const LightSamplerSpec& b) {
     return a.type->describe() == b.type->describe() && a.targetMin == b.targetMin && a.targetMax == b.targetMax &&
-           a.tolerance == b.tolerance && a.weight == b.weight;
+           a.tolerance == b.tolerance && a.weight == b.weight &&
+           std::equal(a.statistics.begin(), a.statistics.end(), b.statistics.begin(), b.statistics.end(), sameGoal);
 }
 
 bool sameEmitter(const Emitter& a, const Emitter& b) {

@@ -43,10 +43,8 @@ double PathTracedLighting::measure(const std::vector<Transform>& world, const Me
     rays_ += last_.rays;
     reusedPaths_ += last_.reusedPaths;
     tracedPaths_ += last_.paths - last_.reusedPaths;
-    std::vector<double> values;
-    for (const SamplerResult& r : last_.samplers) values.push_back(r.value);
     if (out) out->samplers = last_.samplers;
-    return scene_.samplers.empty() ? 0.0 : lightingCost(scene_, values);
+    return scene_.samplers.empty() ? 0.0 : lightingCostOfResults(scene_, last_.samplers);
 }
 
 }  // namespace luxplan

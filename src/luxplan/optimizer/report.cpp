@@ -13,6 +13,7 @@
 #include <luxplan/constraints/penalty.h>
 #include <luxplan/lightsamplers/sampler_type.h>
 #include <luxplan/optimizer/reach.h>
+#include <luxplan/optimizer/sampler_report.h>
 
 namespace luxplan {
 namespace {
@@ -130,6 +131,7 @@ std::string reportJson(const Scene& scene, const OptimizerResult& r) {
                           {"layouts_measured", range.layouts}};
             if (!verdict.reason.empty()) e["reach"]["reason"] = verdict.reason;
         }
+        e.update(samplerStatisticsJson(s, m));
         samplers.push_back(e);
     }
     j["samplers"] = samplers;

@@ -9,6 +9,7 @@
 #include <luxplan/core/rng.h>
 #include <luxplan/scene/room.h>
 #include <luxplan/emitters/emitter_shape.h>
+#include <luxplan/constraints/penalty.h>
 #include <luxplan/lightsamplers/sampler_type.h>
 
 namespace luxplan {
@@ -342,7 +343,7 @@ Image renderPlan(const Scene& scene, const Layout& layout, const PlanOptions& op
         image.drawPolygon(poly, kLuminaireEdge, 2);
     }
 
-    // Light samplers, green when they meet their target.
+    // Light samplers, green when they meet their targets (statistics goals too).
     std::vector<Label> samplerLabels;
     std::vector<Rgb> samplerColors;
     for (size_t k = 0; k < scene.samplers.size(); ++k) {
@@ -353,7 +354,7 @@ Image renderPlan(const Scene& scene, const Layout& layout, const PlanOptions& op
         std::string text = spec.name;
         if (data.samplers && k < data.samplers->size()) {
             double v = (*data.samplers)[k].value;
-            color = v >= spec.targetMin && v <= spec.targetMax ? kPassColor : kFailColor;
+            color = allMet(lightingTerms(spec, (*data.samplers)[k])) ? kPassColor : kFailColor;
             text.append(" ").append(formatValue(std::round(v * 10) / 10)).append(" ").append(spec.type->unit());
         }
         auto poly = footprint(drawing.outline, map);

@@ -159,22 +159,24 @@ void pictures(std::ostringstream& out, const std::filesystem::path& folder) {
 void samplerTable(std::ostringstream& out, const Scene& scene, const std::vector<SamplerResult>& measured,
                   const OptimizerResult* result) {
     if (scene.samplers.empty()) return;
-    // value, penalty and whether it was measured, per scene sampler.
-    struct Row { double value = 0, penalty = 0; bool known = false; };
-    std::vector<Row> rows(scene.samplers.size());
-    if (!measured.empty()) {
-        for (size_t k = 0; k < rows.size() && k < measured.size(); ++k)
-            rows[k] = {measured[k].value, lightingPenalty(scene.samplers[k], measured[k].value), true};
-    } else if (result && result->bestEvaluation.lightingEvaluated) {
-        const auto& best = result->bestEvaluation.samplers.samplers;
-        for (size_t k = 0; k < rows.size() && k < best.size(); ++k)
-            rows[k] = {best[k].value, lightingPenalty(scene.samplers[k], best[k].value), true};
-    }
+    // Each scene sampler's measurement, null when it was not measured.
+    std::vector<const SamplerResult*> rows(scene.samplers.size(), nullptr);
+    const std::vector<SamplerResult>* source = !measured.empty() ? &measured
+                                               : result && result->bestEvaluation.lightingEvaluated
+                                                   ? &result->bestEvaluation.samplers.samplers
+                                                   : nullptr;
+    for (size_t k = 0; source && k < rows.size() && k < source->size(); ++k) rows[k] = &(*source)[k];
+    // Its terms: the value's first, then its statistics goals'.
+    std::vector<std::vector<LightingTerm>> terms(rows.size());
     int met = 0, known = 0;
+    bool statistics = false, goals = false;
     for (size_t k = 0; k < rows.size(); ++k) {
-        if (!rows[k].known) continue;
+        if (!rows[k]) continue;
+        terms[k] = lightingTerms(scene.samplers[k], *rows[k]);
         ++known;
-        met += rows[k].value >= scene.samplers[k].targetMin && rows[k].value <= scene.samplers[k].targetMax;
+        met += allMet(terms[k]);
+        statistics = statistics || scene.samplers[k].type->hasPointStatistics();
+        goals = goals || terms[k].size() > 1;
     }
     out << "<h2>Light samplers</h2>\n";
     if (known) out << "<p>" << met << " of " << known << " samplers meet their targets.</p>\n";
@@ -186,11 +188,11 @@ void samplerTable(std::ostringstream& out, const Scene& scene, const std::vector
         out << "<tr>" << cell(escapeHtml(s.name)) << "<td title=\"" << escapeHtml(s.type->describe()) << "\">"
             << escapeHtml(s.type->name()) << "</td>"
             << cell(s.entity >= 0 ? escapeHtml(entityName(scene, s.entity)) : "<span class=\"muted\">fixed</span>");
-        if (rows[k].known) {
-            bool ok = rows[k].value >= s.targetMin && rows[k].value <= s.targetMax;
-            out << "<td class=\"num\">" << number(rows[k].value, 1) << "</td>" << cell(escapeHtml(s.type->unit()))
+        if (rows[k]) {
+            const bool ok = allMet(terms[k]);
+            out << "<td class=\"num\">" << number(rows[k]->value, 1) << "</td>" << cell(escapeHtml(s.type->unit()))
                 << cell(range(s.targetMin, s.targetMax, 0)) << "<td class=\"num\">" << number(s.tolerance, 1) << "</td>"
-                << "<td class=\"num\">" << number(rows[k].penalty, 3) << "</td>" << cell(ok ? "met" : "missed", ok ? "met" : "missed");
+                << "<td class=\"num\">" << number(terms[k][0].penalty, 3) << "</td>" << cell(ok ? "met" : "missed", ok ? "met" : "missed");
         } else {
             out << "<td class=\"num\">&ndash;</td>" << cell(escapeHtml(s.type->unit())) << cell(range(s.targetMin, s.targetMax, 0))
                 << "<td class=\"num\">" << number(s.tolerance, 1) << "</td><td class=\"num\">&ndash;</td>"
@@ -199,6 +201,39 @@ void samplerTable(std::ostringstream& out, const Scene& scene, const std::vector
         out << "</tr>\n";
     }
     out << "</table>\n";
+    if (statistics) {
+        // EN 12464-1's figures over each planar and volume sampler's points.
+        out << "<h3>Statistics over the points (EN 12464-1: E<sub>m</sub>, E<sub>min</sub>, E<sub>max</sub>, "
+               "U<sub>0</sub>)</h3>\n<table>\n<tr><th>name</th><th>points</th><th>mean</th><th>min</th><th>max</th>"
+               "<th>U<sub>0</sub> = min / mean</th><th>unit</th></tr>\n";
+        for (size_t k = 0; k < rows.size(); ++k) {
+            const LightSamplerSpec& s = scene.samplers[k];
+            if (!rows[k] || !s.type->hasPointStatistics()) continue;
+            const PointStatistics st = pointStatistics(rows[k]->points, rows[k]->pointErrors);
+            std::string grid = std::to_string(rows[k]->points.size());
+            if (auto g = s.type->pointGrid()) grid = std::to_string((*g)[0]) + " &times; " + std::to_string((*g)[1]);
+            out << "<tr>" << cell(escapeHtml(s.name)) << cell(grid) << "<td class=\"num\">" << number(st.mean.value, 1)
+                << "</td><td class=\"num\">" << number(st.min.value, 1) << "</td><td class=\"num\">"
+                << number(st.max.value, 1) << "</td><td class=\"num\">" << number(st.u0.value, 2) << "</td>"
+                << cell(escapeHtml(s.type->unit())) << "</tr>\n";
+        }
+        out << "</table>\n";
+    }
+    if (goals) {
+        out << "<h3>Statistics goals</h3>\n<table>\n<tr><th>name</th><th>statistic</th><th>value</th><th>target</th>"
+               "<th>tolerance</th><th>penalty</th><th>status</th></tr>\n";
+        for (size_t k = 0; k < rows.size(); ++k)
+            for (size_t i = 1; i < terms[k].size(); ++i) {
+                const LightingTerm& t = terms[k][i];
+                const int digits = t.statistic == Statistic::U0 ? 2 : 1;
+                const bool ok = t.penalty == 0;
+                out << "<tr>" << cell(escapeHtml(scene.samplers[k].name)) << cell(statisticNames().name(t.statistic))
+                    << "<td class=\"num\">" << number(t.value, digits) << "</td>" << cell(range(t.targetMin, t.targetMax, digits))
+                    << "<td class=\"num\">" << number(t.tolerance, digits) << "</td><td class=\"num\">" << number(t.penalty, 3)
+                    << "</td>" << cell(ok ? "met" : "missed", ok ? "met" : "missed") << "</tr>\n";
+            }
+        out << "</table>\n";
+    }
 }
 
 void constraintTables(std::ostringstream& out, const Scene& scene, const GeometryResult& g) {

@@ -14,6 +14,7 @@
 
 #include <luxplan/core/math.h>
 #include <luxplan/core/names.h>
+#include <luxplan/core/point_statistics.h>
 #include <luxplan/daylight/daylight_params.h>
 #include <luxplan/materials/material.h>
 #include <luxplan/scene/mesh.h>
@@ -65,6 +66,16 @@ struct Emitter {
 
 class SamplerType;  // lightsamplers/sampler_type.h
 
+// A goal on a statistic over a sampler's points (its "statistics" object): one more
+// term of Eq. 3, P(statistic, targetMin, targetMax, tolerance, 1) with the sampler's
+// weight.
+struct StatisticGoal {
+    Statistic statistic = Statistic::U0;  // min, max or u0 (the mean's goal is the sampler's target)
+    double targetMin = 0, targetMax = kInf;  // the type's unit; u0 is a ratio
+    double tolerance = 1;
+    std::string jsonPath;  // of the goal's object, for errors found later
+};
+
 // A lighting intention (the paper's Section 4): what its type measures where, and
 // the accepted range of the value.
 struct LightSamplerSpec {
@@ -76,6 +87,7 @@ struct LightSamplerSpec {
     double tolerance = 1;  // the paper's L_rej (same unit as the target)
     double weight = 1;
     int entity = -1;       // -1: world frame; else the entity it moves with
+    std::vector<StatisticGoal> statistics;  // planar and volume samplers only
 };
 
 // What a part was, kept for outputs (plans, glTF) and summaries.

@@ -1,0 +1,59 @@
+#include <luxplan/optimizer/sampler_report.h>
+
+#include <cmath>
+#include <cstdio>
+#include <string_view>
+
+#include <luxplan/lightsamplers/sampler_type.h>
+
+namespace luxplan {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+Json number(double v) { return std::isfinite(v) ? Json(v) : Json(nullptr); }
+
+std::string fixed(double v, int decimals) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%.*f", decimals, v);
+    return text;
+}
+
+}  // namespace
+
+Json samplerStatisticsJson(const LightSamplerSpec& sampler, const SamplerResult& result) {
+    Json j = Json::object();
+    if (auto grid = sampler.type->pointGrid()) j["grid"] = {(*grid)[0], (*grid)[1]};
+    if (sampler.type->hasPointStatistics()) {
+        const PointStatistics stats = pointStatistics(result.points, result.pointErrors);
+        Json values = Json::object(), errors = Json::object();
+        for (Statistic s : {Statistic::Mean, Statistic::Min, Statistic::Max, Statistic::U0}) {
+            values[statisticNames().name(s)] = stats.of(s).value;
+            errors[statisticNames().name(s)] = stats.of(s).standardError;
+        }
+        j["stats"] = values;
+        j["stats_std_error"] = errors;
+    }
+    Json terms = Json::array();
+    for (const LightingTerm& t : lightingTerms(sampler, result))
+        terms.push_back({{"statistic", statisticNames().name(t.statistic)},
+                         {"value", t.value},
+                         {"std_error", t.standardError},
+                         {"target", {number(t.targetMin), number(t.targetMax)}},
+                         {"tolerance", t.tolerance},
+                         {"penalty", t.penalty}});
+    j["terms"] = terms;
+    return j;
+}
+
+std::string describeStatistics(const LightSamplerSpec& sampler, const SamplerResult& result) {
+    if (!sampler.type->hasPointStatistics()) return "";
+    const PointStatistics s = pointStatistics(result.points, result.pointErrors);
+    const std::string q = std::string_view(sampler.type->unit()) == "lx" ? "E" : "L";
+    std::string d = q + "m " + fixed(s.mean.value, 1) + " " + sampler.type->unit() + ", " + q + "min " + fixed(s.min.value, 1) +
+                    ", " + q + "max " + fixed(s.max.value, 1) + ", U0 " + fixed(s.u0.value, 2);
+    if (auto grid = sampler.type->pointGrid()) d += ", " + std::to_string((*grid)[0]) + " x " + std::to_string((*grid)[1]) + " grid";
+    return d;
+}
+
+}  // namespace luxplan
