@@ -127,6 +127,31 @@ TEST(HonestResult, TheLuckyEstimateIsMeasuredAgainAndLosesToTheTrulyBest) {
     }
 }
 
+// Many layouts estimate C = 0 (more than the candidates hold), and the independent
+// measurement confirms only x = 6: the run stops there, and its result is that layout.
+class ManyZeros : public LightingEvaluator {
+public:
+    double evaluate(const Layout&, const std::vector<Transform>& world, LightingBreakdown*) override {
+        return world[0].t.x >= 1 ? 0.0 : 0.5;
+    }
+    double measureIndependently(const Layout&, const std::vector<Transform>& world, LightingBreakdown*, uint64_t) override {
+        return std::abs(world[0].t.x - 6) < 1e-9 ? 0.0 : 0.3;
+    }
+};
+
+TEST(HonestResult, AConfirmedZeroIsTheResultEvenPastTheCandidatesCapacity) {
+    const Scene s = slots();
+    OptimizerOptions o;
+    o.iterations = 5000;
+    o.start = StartFrom::Scene;  // x = 0: estimated 0.5
+    ManyZeros light;
+    OptimizerResult r = Optimizer(s, o, &light).run();
+    ASSERT_EQ(r.stop, StopReason::ZeroCost);
+    EXPECT_GT(r.confirmations, 1);
+    EXPECT_DOUBLE_EQ(r.best.placements[0].position.x, 6);
+    EXPECT_EQ(r.bestEvaluation.cost, 0);
+}
+
 TEST(HonestResult, SeedsDependOnTheRunsSeedOnly) {
     const Scene s = slots();
     OptimizerOptions o;

@@ -41,4 +41,15 @@ void Candidates::offer(const Layout& layout, const Evaluation& evaluation, int i
     kept_.insert(at, Candidate{layout, evaluation, std::nullopt, iteration});
 }
 
+void Candidates::keep(Candidate candidate) {
+    for (auto it = kept_.begin(); it != kept_.end(); ++it)
+        if (it->iteration == candidate.iteration) {
+            kept_.erase(it);
+            break;
+        }
+    const double cost = candidate.search.cost;
+    auto at = std::partition_point(kept_.begin(), kept_.end(), [&](const Candidate& c) { return c.search.cost <= cost; });
+    kept_.insert(at, std::move(candidate));
+}
+
 }  // namespace luxplan

@@ -33,6 +33,10 @@ public:
     // A feasible layout the chain reached: kept if it beats the candidate it is the
     // same as, or, being new, the worst one (or there is room).
     void offer(const Layout& layout, const Evaluation& evaluation, int iteration);
+    // A candidate that must be kept whatever its rank (a measured confirmation: the run
+    // may stop on it), beyond the capacity if need be; it takes the place of the one
+    // from the same iteration, if any.
+    void keep(Candidate candidate);
     // Best first by the search's estimate; ties keep the earlier.
     std::vector<Candidate>& all() { return kept_; }
     const std::vector<Candidate>& all() const { return kept_; }

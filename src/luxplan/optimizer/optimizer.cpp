@@ -402,8 +402,9 @@ OptimizerResult Optimizer::run(const ProgressCallback& progress, const std::atom
                                                              independentSeed(kSelectionStream));
         confirmed.costError = costError(confirmed);
         confirmed.cost = scene_->objective.cost(confirmed.lighting, confirmed.geometry);
-        for (Candidate& c : candidates_.all())
-            if (c.iteration == bestIteration_) c.independent = confirmed;
+        // Kept among the candidates with its measurement, even past their capacity: the
+        // run may stop on it, and the result must be chosen among what it stopped on.
+        candidates_.keep(Candidate{best_, bestEval_, confirmed, bestIteration_});
         if (bestIteration_ == iteration_) currentEval_ = confirmed;  // the current layout is the best one
         bestEval_ = confirmed;
         return confirmed.cost == 0;
