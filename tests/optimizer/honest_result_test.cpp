@@ -150,6 +150,25 @@ TEST(HonestResult, AConfirmedZeroIsTheResultEvenPastTheCandidatesCapacity) {
     EXPECT_GT(r.confirmations, 1);
     EXPECT_DOUBLE_EQ(r.best.placements[0].position.x, 6);
     EXPECT_EQ(r.bestEvaluation.cost, 0);
+    // The confirmations on top of the capacity, no more.
+    EXPECT_LE(r.candidates.size(), size_t(o.candidates + r.confirmations));
+}
+
+TEST(Candidates, KeptConfirmationsComeOnTopOfTheCapacity) {
+    const Scene s = slots();
+    Candidates c(s, 2, CandidateSeparation{0.1, 10});
+    c.keep(Candidate{at(s, 1), costing(0.0), costing(0.3), 1});
+    c.keep(Candidate{at(s, 2), costing(0.0), costing(0.2), 2});
+    c.offer(at(s, 3), costing(0.1), 3);
+    c.offer(at(s, 4), costing(0.2), 4);
+    EXPECT_EQ(c.all().size(), 4u);
+    c.offer(at(s, 5), costing(0.15), 5);  // beats the worst offered one (0.2), which goes
+    ASSERT_EQ(c.all().size(), 4u);
+    for (int i = 0; i < 50; ++i) c.offer(at(s, 6 + i % 3), costing(0.5), 10 + i);  // worse than both: never kept
+    ASSERT_EQ(c.all().size(), 4u);
+    std::vector<int> iterations;
+    for (const Candidate& k : c.all()) iterations.push_back(k.iteration);
+    EXPECT_EQ(iterations, (std::vector<int>{1, 2, 3, 5}));
 }
 
 TEST(HonestResult, SeedsDependOnTheRunsSeedOnly) {

@@ -32,9 +32,12 @@ void Candidates::offer(const Layout& layout, const Evaluation& evaluation, int i
         kept_.erase(it);
         break;
     }
-    if (kept_.size() == capacity_) {
-        if (evaluation.cost >= kept_.back().search.cost) return;
-        kept_.pop_back();
+    // The capacity bounds the candidates offered; those kept by keep() come on top.
+    auto offered = [](const Candidate& c) { return !c.independent; };
+    if (size_t(std::count_if(kept_.begin(), kept_.end(), offered)) >= capacity_) {
+        auto worst = std::find_if(kept_.rbegin(), kept_.rend(), offered);
+        if (evaluation.cost >= worst->search.cost) return;
+        kept_.erase(std::next(worst).base());
     }
     // After every candidate of a lower or equal cost: ties keep the earlier first.
     auto at = std::partition_point(kept_.begin(), kept_.end(), [&](const Candidate& c) { return byCost(c, evaluation.cost); });
