@@ -182,12 +182,14 @@ int runOptimize(const OptimizeArgs& args) {
     // Each target the result misses, and whether any layout the search measured met it.
     if (result.feasible)
         for (size_t k = 0; k < scene.samplers.size() && k < result.bestEvaluation.samplers.samplers.size(); ++k) {
-            const double value = result.bestEvaluation.samplers.samplers[k].value;
-            const ReachVerdict verdict = reachVerdict(scene.samplers[k], result.samplerRanges[k], value);
+            const ReachVerdict verdict =
+                reachVerdict(scene.samplers[k], result.samplerRanges[k], result.bestEvaluation.samplers.samplers[k]);
             if (verdict.reach == Reach::Met) continue;
             std::cout << "\n  " << scene.samplers[k].name << " misses its target ("
                       << (verdict.reach == Reach::OutOfReach ? "out of reach"
-                          : verdict.reach == Reach::NeverMet ? "never met" : reachName(verdict.reach)) << "): "
+                          : verdict.reach == Reach::NeverMet   ? "never met"
+                          : verdict.reach == Reach::GoalMissed ? "a goal missed"
+                                                               : reachName(verdict.reach)) << "): "
                       << verdict.reason;
         }
     std::cout << "\n  wrote " << args.out << "/layout.json, report.json, trace.csv\n";

@@ -51,6 +51,24 @@ TEST(Reach, Verdicts) {
                              "with the other goals and rules, or a longer search");
 }
 
+// A mean on target with a uniformity goal missed: the verdict says which goal.
+TEST(Reach, AStatisticsGoalMissedIsNamed) {
+    LightSamplerSpec s = desk();
+    StatisticGoal u0;
+    u0.statistic = Statistic::U0, u0.targetMin = 0.6, u0.targetMax = 1, u0.tolerance = 0.2;
+    s.statistics = {u0};
+    SamplerResult r;
+    r.points = {200, 400, 500, 500};  // mean 400, min 200: u0 = 0.5
+    r.pointErrors = {1, 1, 1, 1};
+    r.value = 400, r.standardError = 0.5;
+    ReachVerdict v = reachVerdict(s, seen(s, {{400, 1}}), r);
+    EXPECT_EQ(v.reach, Reach::GoalMissed);
+    EXPECT_EQ(v.reason, "its value meets the target, but its u0 goal does not: 0.5 against [0.6, 1]");
+    r.points = {350, 400, 420, 430};
+    r.value = 400;
+    EXPECT_EQ(reachVerdict(s, seen(s, {{400, 1}}), r).reach, Reach::Met);
+}
+
 // E = 600 - 100 x lx at the desk (support/desk_light.h): the range covers every
 // evaluation, start included.
 TEST(Reach, TheOptimizerKeepsEachSamplersRangeOverTheLayoutsItMeasured) {

@@ -20,8 +20,8 @@ struct LightingBreakdown {
 class LightingEvaluator {
 public:
     virtual ~LightingEvaluator() = default;
-    // L(x) in [0, inf) (Eq. 3; lightingCost() of constraints/penalty.h computes it
-    // from the sampler values). `world` is worldTransforms(scene, layout). Fills
+    // L(x) in [0, inf) (Eq. 3; lightingCostOfResults() of constraints/penalty.h
+    // computes it from the measurements, goals included). `world` is worldTransforms(scene, layout). Fills
     // `out`, when given, with one measurement per sampler. Called only for layouts no
     // geometric term rejects, and only when the lighting weight is above 0 (and once
     // more for the final layout's report).

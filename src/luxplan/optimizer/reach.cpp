@@ -2,6 +2,8 @@
 
 #include <sstream>
 
+#include <luxplan/constraints/penalty.h>
+#include <luxplan/core/point_statistics.h>
 #include <luxplan/lightsamplers/sampler_type.h>
 
 namespace luxplan {
@@ -29,6 +31,7 @@ void SamplerRange::add(const LightSamplerSpec& sampler, double value, double sta
 const char* reachName(Reach reach) {
     switch (reach) {
         case Reach::Met: return "met";
+        case Reach::GoalMissed: return "goal_missed";
         case Reach::Reached: return "reached";
         case Reach::NeverMet: return "never_met";
         case Reach::OutOfReach: return "out_of_reach";
@@ -61,6 +64,20 @@ ReachVerdict reachVerdict(const LightSamplerSpec& s, const SamplerRange& range, 
                                     "): a trade-off with the other goals and rules, or a longer search"};
     return {Reach::NeverMet, "met in none of the " + std::to_string(range.layouts) +
                                  " layouts the search measured, though some came within their noise (" + seen + ")"};
+}
+
+ReachVerdict reachVerdict(const LightSamplerSpec& s, const SamplerRange& range, const SamplerResult& result) {
+    ReachVerdict verdict = reachVerdict(s, range, result.value);
+    if (verdict.reach != Reach::Met || s.statistics.empty()) return verdict;
+    for (const LightingTerm& t : lightingTerms(s, result)) {
+        if (t.statistic == Statistic::Mean || t.penalty == 0) continue;
+        std::ostringstream out;
+        out.precision(3);
+        out << "its value meets the target, but its " << statisticNames().name(t.statistic) << " goal does not: " << t.value
+            << " against [" << t.targetMin << ", " << t.targetMax << "]";
+        return {Reach::GoalMissed, out.str()};
+    }
+    return verdict;
 }
 
 }  // namespace luxplan

@@ -22,7 +22,8 @@ struct SamplerRange {
 };
 
 enum class Reach {
-    Met,         // the result meets the target
+    Met,         // the result meets the target and every statistics goal
+    GoalMissed,  // the result's value meets its target, a statistics goal (u0, min, max) does not
     Reached,     // the result misses it, but some measured layout met it (a trade-off)
     NeverMet,    // no measured layout met it, though some came within two standard errors
     OutOfReach,  // every measured layout missed it by more than two standard errors, on one side
@@ -35,7 +36,11 @@ struct ReachVerdict {
     std::string reason;  // empty when met
 };
 
-// `value`: the result's measurement of the sampler.
+// `value`: the result's measurement of the sampler. The range and this verdict are
+// about the value (the mean of a planar sampler) against its target.
 ReachVerdict reachVerdict(const LightSamplerSpec& sampler, const SamplerRange& range, double value);
+// The same, then, when the value meets its target, the sampler's statistics goals
+// (lightingTerms, constraints/penalty.h) on the result's points.
+ReachVerdict reachVerdict(const LightSamplerSpec& sampler, const SamplerRange& range, const SamplerResult& result);
 
 }  // namespace luxplan

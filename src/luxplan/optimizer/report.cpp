@@ -124,7 +124,7 @@ std::string reportJson(const Scene& scene, const OptimizerResult& r) {
         if (!m.points.empty()) e["points"] = m.points;
         if (k < r.samplerRanges.size()) {
             const SamplerRange& range = r.samplerRanges[k];
-            const ReachVerdict verdict = reachVerdict(s, range, m.value);
+            const ReachVerdict verdict = reachVerdict(s, range, m);
             e["reach"] = {{"verdict", reachName(verdict.reach)},
                           {"lowest_seen", number(range.lowest)},
                           {"highest_seen", number(range.highest)},
