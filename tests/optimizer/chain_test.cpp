@@ -121,27 +121,33 @@ test::Chi2Result sampleChain(const Scene& scene, LightingEvaluator& lighting, co
 }
 
 // Discrete target: three point regions holding 2, 1 and 3 rotations (rotate + jump,
-// where the jump needs its Hastings factor: the regions differ in size).
+// where the jump needs its Hastings factor: the regions differ in size). Seven
+// states: the first region's two rotations, the second region, the third's four.
+Scene threeSlots(test::SceneBuilder b) {
+    return b.entity("e")
+        .region({0, 0}, {0, 0}, {0, 90})
+        .region({5, 0}, {5, 0}, {0})
+        .region({10, 0}, {10, 0}, {0, 90, 180, 270})
+        .end()
+        .build();
+}
+
+int threeSlotsState(const std::vector<Transform>& world) {
+    double x = world[0].t.x, rot = std::atan2(world[0].m[3], world[0].m[0]);
+    int r = (int(std::lround(degrees(rot) / 90)) + 4) % 4;
+    return x < 1 ? r : x < 6 ? 2 : 3 + r;
+}
+
 TEST(Chain, DiscreteStatesFollowTheBoltzmannLaw) {
-    Scene s = chainScene()
-                  .entity("e")
-                  .region({0, 0}, {0, 0}, {0, 90})
-                  .region({5, 0}, {5, 0}, {0})
-                  .region({10, 0}, {10, 0}, {0, 90, 180, 270})
-                  .end()
-                  .build();
+    Scene s = threeSlots(chainScene());
+    // The state from the placement, the cost from the world transforms: both agree.
     auto state = [](const Layout& l, const std::vector<Transform>&) {
         const Placement& p = l.placements[0];
         int r = int(std::lround(p.rotationDeg / 90)) % 4;
         return p.region == 0 ? r : p.region == 1 ? 2 : 3 + r;
     };
     auto cost = [](int state) { return 0.2 + 0.04 * state; };
-    FunctionLighting lighting([&](const std::vector<Transform>& world) {
-        double x = world[0].t.x, rot = std::atan2(world[0].m[3], world[0].m[0]);
-        int r = (int(std::lround(degrees(rot) / 90)) + 4) % 4;
-        int st = x < 1 ? r : x < 6 ? 2 : 3 + r;
-        return cost(st);
-    });
+    FunctionLighting lighting([&](const std::vector<Transform>& world) { return cost(threeSlotsState(world)); });
     ChainSetup setup;
     std::vector<double> weights;
     for (int st = 0; st < 7; ++st) weights.push_back(std::exp(-cost(st) / setup.temperature));
@@ -153,20 +159,10 @@ TEST(Chain, DiscreteStatesFollowTheBoltzmannLaw) {
 class NoisyChain : public ::testing::Test {
 protected:
     static constexpr double kSigma = 0.12;
-    static int stateOf(const std::vector<Transform>& world) {
-        double x = world[0].t.x, rot = std::atan2(world[0].m[3], world[0].m[0]);
-        int r = (int(std::lround(degrees(rot) / 90)) + 4) % 4;
-        return x < 1 ? r : x < 6 ? 2 : 3 + r;
-    }
+    static int stateOf(const std::vector<Transform>& world) { return threeSlotsState(world); }
     static double cost(int state) { return 0.6 + 0.04 * state; }  // 5 sigma above 0
     test::Chi2Result run(NoisyLighting& lighting, bool noiseAware, const std::vector<double>& weights) {
-        Scene s = noisyChainScene()
-                      .entity("e")
-                      .region({0, 0}, {0, 0}, {0, 90})
-                      .region({5, 0}, {5, 0}, {0})
-                      .region({10, 0}, {10, 0}, {0, 90, 180, 270})
-                      .end()
-                      .build();
+        Scene s = threeSlots(noisyChainScene());
         ChainSetup setup;
         setup.noiseAware = noiseAware;
         return sampleChain(s, lighting, setup, [](const Layout&, const std::vector<Transform>& w) { return stateOf(w); },
