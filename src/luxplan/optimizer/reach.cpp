@@ -60,8 +60,7 @@ ReachVerdict reachVerdict(const LightSamplerSpec& s, const SamplerRange& range, 
     const std::string seen = "it read " + amount(range.lowest, s) + " to " + amount(range.highest, s);
     if (range.met > 0)
         return {Reach::Reached, "met in " + std::to_string(range.met) + " of the " + std::to_string(range.layouts) +
-                                    " layouts the search measured (" + seen +
-                                    "): a trade-off with the other goals and rules, or a longer search"};
+                                    " layouts the search measured (" + seen + "): a trade-off, or a longer search"};
     return {Reach::NeverMet, "met in none of the " + std::to_string(range.layouts) +
                                  " layouts the search measured, though some came within their noise (" + seen + ")"};
 }
