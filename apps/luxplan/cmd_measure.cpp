@@ -34,6 +34,7 @@ struct MeasureArgs {
 void runMeasure(const MeasureArgs& args) {
     auto start = std::chrono::steady_clock::now();
     Scene scene = io::loadScene(args.scene);
+    printSceneWarnings(scene);
     if (args.flat) scene = flattenScene(scene).scene;
     Layout layout = args.layout.empty() ? initialLayout(scene) : io::readLayout(args.layout, scene);
     std::optional<DaylightEnvironment> daylight;

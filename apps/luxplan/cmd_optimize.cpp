@@ -108,6 +108,7 @@ int runOptimize(const OptimizeArgs& args) {
     // From the start, so that a signal during loading still ends in written outputs.
     StopSignals stopSignals;
     const Scene original = io::loadScene(args.scene);
+    printSceneWarnings(original);
     checkOutputFolder(args.out);
     std::optional<DaylightEnvironment> daylight;
     if (original.daylight) daylight = buildDaylight(*original.daylight, original.site);

@@ -99,6 +99,13 @@ void printSummary(const Scene& s, std::ostream& out) {
 
 }  // namespace
 
+void printSceneWarnings(const Scene& scene) {
+    for (Diagnostic w : sceneWarnings(scene)) {
+        w.message = "warning: " + w.message;
+        std::cerr << w.str() << "\n";
+    }
+}
+
 void registerValidateCommand(CLI::App& app) {
     auto* cmd = app.add_subcommand("validate", "Check a scene file against the format; print every error");
     auto scene = std::make_shared<std::string>();
@@ -109,11 +116,7 @@ void registerValidateCommand(CLI::App& app) {
         namingScene(*scene, [&] {
             Scene s = io::loadScene(*scene);
             if (!layout->empty()) io::readLayout(*layout, s);
-            // Valid, but maybe not what was meant: said, without failing.
-            for (Diagnostic w : sceneWarnings(s)) {
-                w.message = "warning: " + w.message;
-                std::cerr << w.str() << "\n";
-            }
+            printSceneWarnings(s);
         });
         std::cout << *scene << ": valid\n";
     });

@@ -6,6 +6,7 @@
 #include <CLI/CLI.hpp>
 
 #include <luxplan/core/error.h>
+#include <luxplan/scene/scene.h>
 
 namespace luxplan::cli {
 
@@ -27,6 +28,10 @@ void namingScene(const std::string& scene, Fn&& fn) {
         throw SceneError({{scene, "", e.what()}});
     }
 }
+
+// Valid, but maybe not what was meant (checks/scene_warnings.h): each on stderr as
+// FILE: /json/path: warning: ..., never failing. validate, measure and optimize say them.
+void printSceneWarnings(const Scene& scene);
 
 void registerValidateCommand(CLI::App& app);
 void registerInfoCommand(CLI::App& app);

@@ -33,6 +33,16 @@ TEST(ValidateWarnings, PrintedWithTheirPathAndTheSceneStillValid) {
               std::string::npos)
         << r.output;
     EXPECT_NE(r.output.find(file.string() + ": valid"), std::string::npos) << r.output;
+    // measure and optimize say the same before their work.
+    for (const std::string& command :
+         {"measure " + file.string() + " --paths 1", "optimize " + file.string() + " -o " + (dir.path() / "out").string() +
+                                                        " --iterations 2 --paths 1 -q --no-pictures"}) {
+        test::CliResult c = test::runCli(command);
+        EXPECT_EQ(c.exitCode, 0) << command << "\n" << c.output;
+        EXPECT_NE(c.output.find(file.string() + ": /entities/0/emitters/0: warning: emitter \"bulb\" is enclosed"),
+                  std::string::npos)
+            << command << "\n" << c.output;
+    }
 }
 
 TEST(ValidateWarnings, NoneForTheBundledScenes) {
