@@ -41,7 +41,7 @@ TEST(EnclosedEmitters, AClosedOpaqueShadeLightsNothing) {
     ASSERT_EQ(w.size(), 1u) << messages(w);
     EXPECT_EQ(w[0].file, s.file.string());
     EXPECT_EQ(w[0].jsonPath, "/entities/0/emitters/0");
-    EXPECT_EQ(w[0].message, "emitter \"bulb\" is enclosed by opaque geometry of \"lamp\" (every ray from it meets an opaque "
+    EXPECT_EQ(w[0].message, "emitter \"lamp.bulb\" is enclosed by opaque geometry of \"lamp\" (every ray from it meets an opaque "
                             "surface of it): it lights nothing; open it or give it a translucent material");
 }
 
@@ -100,7 +100,7 @@ TEST(OutsideTheRoom, LuminairesAndSamplers) {
     EXPECT_EQ(w[0].jsonPath, "/luminaires/0");
     EXPECT_EQ(w[0].message, "luminaire \"street\" is outside the room, at (7, 2, 2): it lights the room only through its openings");
     EXPECT_EQ(w[1].jsonPath, "/entities/0/emitters/0");
-    EXPECT_EQ(w[1].message, "luminaire \"lamp\" is outside the room, at (6.5, 2, 1) (where \"cart\" stands): it lights the room "
+    EXPECT_EQ(w[1].message, "luminaire \"cart.lamp\" is outside the room, at (6.5, 2, 1) (where \"cart\" stands): it lights the room "
                             "only through its openings");
     EXPECT_EQ(w[2].jsonPath, "/samplers/1");
     EXPECT_EQ(w[2].message, "sampler \"porch\" measures outside the room: 2 of its 4 points, e.g. (6.05, 1.75, 0.75)");

@@ -25,7 +25,7 @@ TEST(ValidateWarnings, PrintedWithTheirPathAndTheSceneStillValid) {
                                   "flux_lm": 3500}]}]})");
     test::CliResult r = test::runCli("validate " + file.string());
     EXPECT_EQ(r.exitCode, 0) << r.output;
-    EXPECT_NE(r.output.find(file.string() + ": /entities/0/emitters/0: warning: emitter \"bulb\" is enclosed by opaque "
+    EXPECT_NE(r.output.find(file.string() + ": /entities/0/emitters/0: warning: emitter \"lamp.bulb\" is enclosed by opaque "
                                             "geometry of \"lamp\""),
               std::string::npos)
         << r.output;
@@ -39,7 +39,7 @@ TEST(ValidateWarnings, PrintedWithTheirPathAndTheSceneStillValid) {
                                                         " --iterations 2 --paths 1 -q --no-pictures"}) {
         test::CliResult c = test::runCli(command);
         EXPECT_EQ(c.exitCode, 0) << command << "\n" << c.output;
-        EXPECT_NE(c.output.find(file.string() + ": /entities/0/emitters/0: warning: emitter \"bulb\" is enclosed"),
+        EXPECT_NE(c.output.find(file.string() + ": /entities/0/emitters/0: warning: emitter \"lamp.bulb\" is enclosed"),
                   std::string::npos)
             << command << "\n" << c.output;
     }

@@ -288,9 +288,21 @@ TEST(SceneLoader, DuplicateNames) {
     s["entities"][1]["name"] = "desk1";
     s["constraints"] = json::array();
     EXPECT_EQ(onlyProblem(s), "/entities/1/name: duplicate entity name \"desk1\" (also at /entities/0)");
+    // Sampler names are scoped by their entity: "top" of desk1 is "desk1.top", so a
+    // world sampler may be called "top" too; twice in one entity is an error.
     s = validScene();
     s["samplers"][0]["name"] = "top";
-    EXPECT_EQ(onlyProblem(s), "/samplers/0/name: duplicate sampler name \"top\" (also at /entities/0/samplers/0)");
+    {
+        test::TempDir dir;
+        EXPECT_TRUE(problems(s, dir).empty());
+    }
+    s = validScene();
+    s["entities"][0]["samplers"].push_back(s["entities"][0]["samplers"][0]);
+    EXPECT_EQ(onlyProblem(s), "/entities/0/samplers/1/name: duplicate sampler name \"desk1.top\" (also at /entities/0/samplers/0)");
+    s = validScene();
+    s["samplers"][0]["name"] = "desk1.top";
+    EXPECT_EQ(onlyProblem(s),
+              "/samplers/0/name: names must be non-empty and must not contain '.' (it separates an entity's path from the name)");
 }
 
 TEST(SceneLoader, OpeningsMustFitAndNotOverlap) {

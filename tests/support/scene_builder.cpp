@@ -146,6 +146,7 @@ SceneBuilder& SceneBuilder::emitter(const std::string& name, std::shared_ptr<con
     e.shape = std::move(shape);
     e.fluxLm = fluxLm;
     if (Entity* owner = open()) {
+        e.name = owner->path + "." + name;  // scoped by its entity, as the loader does
         e.entity = stack_.back();
         e.jsonPath = owner->jsonPath + "/emitters/" + std::to_string(entities_[size_t(stack_.back())].emitterCount++);
     } else {
@@ -169,6 +170,7 @@ SceneBuilder& SceneBuilder::sampler(const std::string& name, std::shared_ptr<con
     if (!(fallback > 0)) fallback = 1;
     s.tolerance = tolerance.value_or(fallback);
     if (Entity* owner = open()) {
+        s.name = owner->path + "." + name;  // scoped by its entity, as the loader does
         s.entity = stack_.back();
         s.jsonPath = owner->jsonPath + "/samplers/" + std::to_string(entities_[size_t(stack_.back())].samplerCount++);
     } else {

@@ -3,6 +3,7 @@
 // all definitions are read, so every problem of a file is reported in one run.
 #include <luxplan/io/scene_loader.h>
 
+#include <algorithm>
 #include <fstream>
 #include <map>
 #include <set>
@@ -78,11 +79,20 @@ public:
             // A library's exception (or one of ours) still names the file.
             sink_.error("", std::string("cannot load the scene: ") + e.what());
         }
-        if (sink_.count()) throw SceneError(sink_.diagnostics);
+        if (sink_.count()) throw SceneError(distinct(sink_.diagnostics));
         return std::move(scene_);
     }
 
 private:
+    // The same problem at the same place once: a template used by six entities
+    // reports its own mistakes once.
+    static std::vector<Diagnostic> distinct(const std::vector<Diagnostic>& all) {
+        std::vector<Diagnostic> kept;
+        for (const Diagnostic& d : all)
+            if (std::none_of(kept.begin(), kept.end(), [&](const Diagnostic& k) { return k.str() == d.str(); })) kept.push_back(d);
+        return kept;
+    }
+
     // The keys every kind of a family reads, for finish().
     template <class Kind, class ReadKind>
     std::vector<std::string> familyKeys(const std::vector<Kind>& kinds, ReadKind readKind) {
@@ -106,6 +116,7 @@ private:
             for (size_t i = 0; i < a->size(); ++i) readStatic((*a)[i], pointer(f.at("geometry"), i));
         if (auto* a = f.array("luminaires"))
             for (size_t i = 0; i < a->size(); ++i) readEmitter((*a)[i], pointer(f.at("luminaires"), i), -1);
+        if (f.has("templates")) readTemplates(f.get("templates"), f.at("templates"));
         size_t before = sink_.count();
         if (auto* a = f.array("entities"))
             for (size_t i = 0; i < a->size(); ++i) readEntity((*a)[i], pointer(f.at("entities"), i), -1);
@@ -114,7 +125,8 @@ private:
         if (auto* a = f.array("samplers"))
             for (size_t i = 0; i < a->size(); ++i) readSampler((*a)[i], pointer(f.at("samplers"), i), -1);
         if (auto* a = f.array("constraints"))
-            for (size_t i = 0; i < a->size(); ++i) readConstraint((*a)[i], pointer(f.at("constraints"), i));
+            for (size_t i = 0; i < a->size(); ++i) readConstraint((*a)[i], pointer(f.at("constraints"), i), -1);
+        for (const ScopedConstraint& c : entityConstraints_) readConstraint(c.json, c.path, c.entity);
         if (f.has("objective")) {
             Fields o(sink_, f.get("objective"), f.at("objective"));
             scene_.objective.lightingWeight = o.number("lighting_weight", 0.5, kUnit);
@@ -525,7 +537,7 @@ private:
         Emitter e;
         e.jsonPath = path;
         e.entity = entity;
-        e.name = f.string("name", true).value_or("");
+        e.name = scopedName(f, entity);
         auto shape = f.string("shape", true);
         const EmitterShapeEntry* entry = shape ? findEmitterShape(*shape) : nullptr;
         if (shape && !entry)
@@ -621,9 +633,88 @@ private:
         return r;
     }
 
+    // "templates": {"name": an entity without its name}. A template is read where an
+    // entity uses it, so its problems are found (and reported once, at the template)
+    // when it is used.
+    void readTemplates(const Json& j, const std::string& path) {
+        if (!j.is_object()) {
+            sink_.error(path, "expected an object of templates by name, got " + typeName(j));
+            templatesInvalid_ = true;
+            return;
+        }
+        for (const auto& [name, value] : j.items()) {
+            const std::string at = pointer(path, name);
+            if (name.empty() || name.find('.') != std::string::npos) {
+                sink_.error(at, "template names must be non-empty and must not contain '.'");
+                continue;
+            }
+            if (!value.is_object()) {
+                sink_.error(at, "expected a template object (an entity without \"name\"), got " + typeName(value));
+                continue;
+            }
+            if (value.contains("name"))
+                sink_.error(pointer(at, "name"), "a template takes its name from the entity that uses it");
+            if (value.contains("template"))
+                sink_.error(pointer(at, "template"), "a template cannot be made from another template (use it as a child)");
+            templates_[name] = {&value, at};
+        }
+    }
+
+    // An entity that uses a template: the template's keys, replaced by the entity's
+    // own; each key's problems are reported where it was written.
+    struct Instance {
+        Json merged;
+        std::map<std::string, std::string> keyPaths;
+        std::string templateName;
+    };
+    std::optional<Instance> instantiate(const Json& j, const std::string& path) {
+        const Json& name = j["template"];
+        const std::string at = pointer(path, "template");
+        if (!name.is_string()) {
+            sink_.error(at, "expected a template name, got " + typeName(name));
+            return std::nullopt;
+        }
+        auto it = templates_.find(name.get<std::string>());
+        if (it == templates_.end() && templatesInvalid_) return std::nullopt;  // that error says it
+        if (it == templates_.end()) {
+            std::vector<std::string> names;
+            for (const auto& [n, _] : templates_) names.push_back(n);
+            sink_.error(at, "unknown template \"" + name.get<std::string>() + "\"" + didYouMean(name.get<std::string>(), names) +
+                                (names.empty() ? " (the scene has no \"templates\")" : " (" + listNames(names) + ")"));
+            return std::nullopt;
+        }
+        if (std::find(activeTemplates_.begin(), activeTemplates_.end(), it->first) != activeTemplates_.end()) {
+            sink_.error(at, "template \"" + it->first + "\" contains itself");
+            return std::nullopt;
+        }
+        Instance instance{*it->second.json, {}, it->first};
+        for (const auto& [key, _] : it->second.json->items()) instance.keyPaths[key] = pointer(it->second.path, key);
+        for (const auto& [key, value] : j.items()) {
+            instance.merged[key] = value;
+            instance.keyPaths.erase(key);
+        }
+        return instance;
+    }
+
     void readEntity(const Json& j, const std::string& path, int parent) {
+        if (j.is_object() && j.contains("template")) {
+            auto instance = instantiate(j, path);
+            if (!instance) return;
+            activeTemplates_.push_back(instance->templateName);
+            Fields f(sink_, instance->merged, path, std::move(instance->keyPaths));
+            f.get("template");
+            readEntityKeys(f, parent);
+            activeTemplates_.pop_back();
+            return;
+        }
         Fields f(sink_, j, path);
+        readEntityKeys(f, parent);
+    }
+
+    void readEntityKeys(const Fields& f, int parent) {
         if (!f.valid()) return;
+        const std::string& path = f.path();
+        f.has("template");  // a known key of every entity
         int index = int(scene_.entities.size());
         scene_.entities.emplace_back();
         {
@@ -695,6 +786,11 @@ private:
             else
                 for (size_t i = 0; i < children->size(); ++i) readEntity((*children)[i], pointer(f.at("children"), i), index);
         }
+        // Rules among the entity's members, naming them relatively: read once every
+        // entity is known.
+        if (auto* constraints = f.array("constraints"))
+            for (size_t i = 0; i < constraints->size(); ++i)
+                entityConstraints_.push_back({(*constraints)[i], pointer(f.at("constraints"), i), index});
         f.finish();
     }
 
@@ -799,7 +895,7 @@ private:
         s.jsonPath = path;
         s.file = sink_.file;
         s.entity = entity;
-        s.name = f.string("name", true).value_or("");
+        s.name = scopedName(f, entity);
         auto type = f.string("type", true);
         const SamplerTypeEntry* entry = type ? findSamplerType(*type) : nullptr;
         if (type && !entry) {
@@ -819,6 +915,18 @@ private:
         int index = int(scene_.samplers.size());
         scene_.samplers.push_back(s);
         if (entity >= 0) scene_.entities[entity].samplers.push_back(index);
+    }
+
+    // A sampler's, emitter's or constraint's name, scoped by the entity it belongs to
+    // ("ws1.desk.task"), so that two entities may use the same one.
+    std::string scopedName(const Fields& f, int entity, bool required = true) {
+        auto name = f.string("name", required);
+        if (!name) return "";
+        if (name->empty() || name->find('.') != std::string::npos) {
+            f.error("name", "names must be non-empty and must not contain '.' (it separates an entity's path from the name)");
+            return "";
+        }
+        return entity >= 0 ? scene_.entities[entity].path + "." + *name : *name;
     }
 
     // "target": [min, max], null for an open end (0 and infinity); true when valid.
@@ -946,13 +1054,28 @@ private:
         return names;
     }
 
-    int entityRef(const Fields& f, const char* key, bool allowRoom) {
+    // `scope`: the entity whose "constraints" the reference is in (its members are named
+    // relatively), -1 for the scene's.
+    int entityRef(const Fields& f, const char* key, bool allowRoom, int scope = -1) {
         auto name = f.string(key, true);
         if (!name) return -1;
         if (*name == "room") {
             if (allowRoom) return kRoomEntity;
             f.error(key, "\"room\" is only valid as \"b\" of " + roomConstraints());
             return -1;
+        }
+        if (scope >= 0) {
+            const std::string& prefix = scene_.entities[scope].path;
+            int e = scene_.findEntity(prefix + "." + *name);
+            if (e < 0 && !entitiesIncomplete_) {
+                std::vector<std::string> members;
+                for (const Entity& m : scene_.entities)
+                    if (m.path.rfind(prefix + ".", 0) == 0) members.push_back(m.path.substr(prefix.size() + 1));
+                f.error(key, "\"" + prefix + "\" has no member \"" + *name + "\"" + didYouMean(*name, members) +
+                                 (members.empty() ? "" : " (" + listNames(members) + ")") +
+                                 "; an entity's constraints name its members relatively");
+            }
+            return e;
         }
         int e = scene_.findEntity(*name);
         if (e < 0) {
@@ -972,10 +1095,10 @@ private:
 
     // A relational constraint's keys besides "type" and "weight": its type's own,
     // then the two ends every type has.
-    void readRelational(const Fields& f, const ConstraintKindEntry& entry, ConstraintSpec& c) {
+    void readRelational(const Fields& f, const ConstraintKindEntry& entry, ConstraintSpec& c, int scope = -1) {
         c.kind = entry.read(f);
-        c.a = entityRef(f, "a", false);
-        c.b = entityRef(f, "b", c.kind->acceptsRoom());
+        c.a = entityRef(f, "a", false, scope);
+        c.b = entityRef(f, "b", c.kind->acceptsRoom(), scope);
         if (c.a >= 0 && c.a == c.b) f.error("b", "a constraint needs two different entities");
     }
 
@@ -985,7 +1108,7 @@ private:
         rule.wallTolerance = 1e-3 * f.number("wall_tolerance_l", 1e3 * rule.wallTolerance, Range::atLeast(0, "l"));
     }
 
-    void readConstraint(const Json& j, const std::string& path) {
+    void readConstraint(const Json& j, const std::string& path, int scope) {
         Fields f(sink_, j, path);
         if (!f.valid()) return;
         static const std::vector<std::string> family = [this] {
@@ -994,6 +1117,7 @@ private:
                 lists.push_back(json::probeKeys([&](const Fields& p) {
                     ConstraintSpec c;
                     readRelational(p, k, c);
+                    p.has("name");
                 }));
             lists.push_back(json::probeKeys([](const Fields& p) {
                 OverlapRule rule;
@@ -1005,7 +1129,11 @@ private:
         double weight = f.number("weight", 1.0, kNonNegative);
         const bool overlap = type && *type == kOverlapRuleName;
         const ConstraintKindEntry* entry = type ? findConstraintKind(*type) : nullptr;
-        if (overlap) {
+        if (overlap && scope >= 0) {
+            f.error("type", "the overlap rule holds for the whole scene: set it in the top-level \"constraints\"");
+            OverlapRule ignored;
+            readOverlapRule(f, ignored);
+        } else if (overlap) {
             readOverlapRule(f, scene_.overlap);
             scene_.overlap.weight = weight;
             scene_.overlap.jsonPath = path;
@@ -1016,7 +1144,10 @@ private:
         ConstraintSpec c;
         c.jsonPath = path;
         c.weight = weight;
-        if (entry) readRelational(f, *entry, c);
+        if (entry) {
+            readRelational(f, *entry, c, scope);
+            c.name = scopedName(f, scope, /*required=*/false);
+        }
         f.finish(entry || overlap ? article(*type + " constraint") : "", family);
         if (entry) scene_.constraints.push_back(c);
     }
@@ -1032,6 +1163,7 @@ private:
         for (const auto& e : scene_.emitters) unique("emitter", e.name, e.jsonPath);
         for (const auto& e : scene_.entities) unique("entity", e.path, e.jsonPath);
         for (const auto& s : scene_.samplers) unique("sampler", s.name, s.jsonPath);
+        for (const auto& c : scene_.constraints) unique("constraint", c.name, c.jsonPath);
     }
 
     // What only the whole scene shows: its triangle count.
@@ -1050,6 +1182,20 @@ private:
         for (auto& g : scene_.geometry)
             if (g.kind != StaticKind::Room) g.voxels = voxelizeSolid(g.mesh, options_.voxelSize);
     }
+
+    struct Template {
+        const Json* json;  // in the scene's document, which outlives the reading
+        std::string path;
+    };
+    struct ScopedConstraint {
+        Json json;
+        std::string path;
+        int entity;
+    };
+    std::map<std::string, Template> templates_;
+    bool templatesInvalid_ = false;
+    std::vector<std::string> activeTemplates_;  // the templates being instantiated, outermost first
+    std::vector<ScopedConstraint> entityConstraints_;
 
     LoadOptions options_;
     bool entitiesIncomplete_ = false;

@@ -65,6 +65,16 @@ Fields::Fields(DiagnosticSink& sink, const Json& value, std::string path, const 
     valid_ = true;
 }
 
+Fields::Fields(DiagnosticSink& sink, const Json& value, std::string path, std::map<std::string, std::string> keyPaths)
+    : Fields(sink, value, std::move(path)) {
+    keyPaths_ = std::move(keyPaths);
+}
+
+std::string Fields::at(const char* key) const {
+    auto it = keyPaths_.find(key);
+    return it != keyPaths_.end() ? it->second : pointer(path_, key);
+}
+
 void Fields::note(const char* key) const {
     if (std::find(known_.begin(), known_.end(), key) == known_.end()) known_.emplace_back(key);
 }
@@ -93,9 +103,9 @@ void Fields::finish(const std::string& kind, const std::vector<std::string>& fam
         if (ofFamily && kind.empty()) continue;  // the kind is unknown: its keys cannot be judged
         bool known = std::find(all.begin(), all.end(), key) != all.end();
         if (known && !kind.empty())
-            sink_.error(pointer(path_, key), "\"" + key + "\" does not apply to " + kind);
+            sink_.error(at(key.c_str()), "\"" + key + "\" does not apply to " + kind);
         else
-            sink_.error(pointer(path_, key), "unknown key \"" + key + "\"" + didYouMean(key, all) + " (known keys: " +
+            sink_.error(at(key.c_str()), "unknown key \"" + key + "\"" + didYouMean(key, all) + " (known keys: " +
                                                  listNames(all, ",") + ")");
     }
 }

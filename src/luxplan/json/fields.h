@@ -6,6 +6,7 @@
 #pragma once
 
 #include <functional>
+#include <map>
 #include <optional>
 #include <set>
 #include <string>
@@ -72,11 +73,15 @@ inline Range offsetRange() { return Range::atLeast(0).limitedTo(limits::kMaxLeng
 class Fields {
 public:
     Fields(DiagnosticSink& sink, const Json& value, std::string path, const char* what = "an object");
+    // An object merged from several places of the file (an entity made from a
+    // template): `keyPaths` gives the JSON Pointer of each key that came from
+    // elsewhere, so that its problems name the place it was written.
+    Fields(DiagnosticSink& sink, const Json& value, std::string path, std::map<std::string, std::string> keyPaths);
 
     bool valid() const { return valid_; }
     bool has(const char* key) const;         // also makes `key` a known key of this object
     const Json& get(const char* key) const;  // only when has(key); marks it read
-    std::string at(const char* key) const { return pointer(path_, key); }
+    std::string at(const char* key) const;
     const std::string& path() const { return path_; }
     void error(const char* key, std::string message) const { sink_.error(at(key), std::move(message)); }
     void error(std::string message) const { sink_.error(path_, std::move(message)); }  // the object itself
@@ -115,6 +120,7 @@ private:
     DiagnosticSink& sink_;
     const Json* value_;
     std::string path_;
+    std::map<std::string, std::string> keyPaths_;
     bool valid_ = false;
     mutable std::vector<std::string> known_;
     mutable std::set<std::string> read_;

@@ -51,7 +51,9 @@ Json termJson(const Scene& scene, const PenaltyTerm& t) {
         j["unit"] = "m3";
         j["reference"] = t.reference;
     } else {
-        j["json_path"] = scene.constraints[t.constraint].jsonPath;
+        const ConstraintSpec& c = scene.constraints[t.constraint];
+        if (!c.name.empty()) j["name"] = c.name;
+        j["json_path"] = c.jsonPath;
         j["a"] = scene.entities[t.a].path;
         j["b"] = t.b == kRoomEntity ? std::string("room") : scene.entities[t.b].path;
         t.kind->report(t, j);

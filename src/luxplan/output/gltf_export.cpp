@@ -294,7 +294,7 @@ void writeGlb(const std::filesystem::path& file, const Scene& scene, const Layou
         if (mesh >= 0) glb.addNode(e.path, mesh, toGltf * world[i] * fromGltf, e.jsonPath);
     }
     for (const Emitter& e : scene.emitters) {
-        std::string name = e.entity >= 0 ? scene.entities[size_t(e.entity)].path + "." + e.name : e.name;
+        const std::string& name = e.name;  // scoped by its entity already ("desk1.lamp.shade")
         Vec3 rgb = blackBodyRgb(e.cctK);
         Transform owner = e.entity >= 0 ? world[size_t(e.entity)] : Transform();
         EmitterMesh shape = e.shape->mesh();

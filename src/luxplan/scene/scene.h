@@ -129,6 +129,7 @@ inline constexpr int kRoomEntity = -2;  // constraint target "room"
 
 // A relational constraint (Section 5.2) between two entities.
 struct ConstraintSpec {
+    std::string name;  // optional; scoped by its entity ("ws1.reach") when an entity holds it
     std::string jsonPath;
     std::shared_ptr<const ConstraintKind> kind;  // alignment, distance, focus, conversation (constraints/)
     int a = -1, b = -1;  // entity indices (b may be kRoomEntity where the kind accepts the room)
