@@ -20,6 +20,7 @@
 #include <luxplan/io/scene_loader.h>
 #include <luxplan/optimizer/flatten.h>
 #include <luxplan/optimizer/optimizer.h>
+#include <luxplan/optimizer/progress_line.h>
 #include <luxplan/optimizer/path_traced_lighting.h>
 #include <luxplan/optimizer/report.h>
 #include <luxplan/output/outputs.h>
@@ -65,31 +66,25 @@ struct OptimizeArgs {
     std::string sampling = "sobol";
 };
 
-std::string duration(double seconds) {
-    char buf[32];
-    int s = int(seconds + 0.5);
-    if (s >= 3600) std::snprintf(buf, sizeof buf, "%dh%02dm", s / 3600, s / 60 % 60);
-    else if (s >= 60) std::snprintf(buf, sizeof buf, "%dm%02ds", s / 60, s % 60);
-    else std::snprintf(buf, sizeof buf, "%ds", s);
-    return buf;
-}
-
-// One status line, redrawn in place on a terminal, printed every few seconds otherwise.
+// One status line, redrawn in place on a terminal, printed every few seconds
+// otherwise; and once, the moment the first layout passes the rules (the cost then
+// starts to include the light).
 void showProgress(const Progress& p, bool tty) {
     static auto lastPrint = std::chrono::steady_clock::now() - std::chrono::hours(1);
+    static bool feasibleSeen = false;
     auto now = std::chrono::steady_clock::now();
+    if (p.feasible && !feasibleSeen && p.iteration > 0) {
+        feasibleSeen = true;
+        std::cerr << (tty ? "\r\033[K" : "") << lightingStartsLine(p) << "\n";
+    }
+    feasibleSeen = feasibleSeen || p.feasible;
     bool done = p.iteration >= p.iterations;
     if (!tty && !done && now - lastPrint < std::chrono::seconds(5)) return;
     lastPrint = now;
-    const int width = 24;
+    const int width = 20;
     int filled = p.iterations > 0 ? int(double(width) * p.iteration / p.iterations) : width;
-    char line[256];
-    std::snprintf(line, sizeof line,
-                  "[%s%s] %d/%d  C %.4f  best %s  accepted T %.0f%% R %.0f%% S %.0f%% J %.0f%%  %s  ETA %s",
-                  std::string(size_t(filled), '#').c_str(), std::string(size_t(width - filled), '.').c_str(), p.iteration,
-                  p.iterations, p.current, p.feasible ? std::to_string(p.best).substr(0, 6).c_str() : "-",
-                  100 * p.acceptance[0], 100 * p.acceptance[1], 100 * p.acceptance[2], 100 * p.acceptance[3],
-                  duration(p.seconds).c_str(), duration(p.etaSeconds).c_str());
+    std::string line = tty ? "[" + std::string(size_t(filled), '#') + std::string(size_t(width - filled), '.') + "] " : "";
+    line += progressLine(p);
     std::cerr << (tty ? "\r" : "") << line << (tty ? "\033[K" : "\n") << std::flush;
 }
 
@@ -166,7 +161,7 @@ int runOptimize(const OptimizeArgs& args) {
     } else {
         io::writeLayout(std::filesystem::path(args.out) / "layout.json", scene, result.best);
     }
-    std::cout << "optimize: " << result.iterations << " iterations in " << duration(result.seconds) << " ("
+    std::cout << "optimize: " << result.iterations << " iterations in " << durationText(result.seconds) << " ("
               << stopReasonName(result.stop) << ")";
     if (result.feasible) {
         const Evaluation& best = result.bestEvaluation;
@@ -174,9 +169,10 @@ int runOptimize(const OptimizeArgs& args) {
         if (best.costError > 0) std::cout << " +- " << best.costError;
         std::cout << " (L " << best.lighting << ", G " << best.geometry << ") at iteration " << result.bestIteration;
         if (best.lightingEvaluated && result.independentMeasurements > 0)
-            std::cout << "\n  measured independently at " << reportPaths << " paths per point; the search estimated C "
-                      << result.bestSearchEvaluation.cost << " (candidate " << result.chosenCandidate + 1 << " of "
-                      << result.candidates.size() << ")";
+            std::cout << "\n  that C is a fresh measurement of the result, with " << reportPaths
+                      << " paths per point and a seed of its own, so it differs from the progress line: the search "
+                      << "estimated C " << result.bestSearchEvaluation.cost << "; the result is the best of "
+                      << result.candidates.size() << " candidates re-measured (candidate " << result.chosenCandidate + 1 << ")";
     }
     else
         std::cout << "; no layout passed the geometric rules";
@@ -208,7 +204,7 @@ int runOptimize(const OptimizeArgs& args) {
         } else {
             std::cout << "  wrote";
             for (const auto& f : outputs.files) std::cout << " " << f.filename().string();
-            std::cout << " in " << duration(outputs.seconds) << (outputs.cancelled ? " (stopped: the rest skipped)" : "") << "\n";
+            std::cout << " in " << durationText(outputs.seconds) << (outputs.cancelled ? " (stopped: the rest skipped)" : "") << "\n";
         }
     }
     if (lighting)

@@ -376,6 +376,7 @@ OptimizerResult Optimizer::run(const ProgressCallback& progress, const std::atom
         pr.current = currentEval_.cost;
         pr.best = feasible_ ? bestEval_.cost : kInf;
         pr.feasible = !currentEval_.rejected;
+        pr.lightingMeasured = currentEval_.lightingEvaluated;
         pr.temperature = temperature();
         for (MoveType t : kMoveTypes) {
             MoveStats total;
@@ -384,6 +385,7 @@ OptimizerResult Optimizer::run(const ProgressCallback& progress, const std::atom
                 total.accepted += level.moves[int(t)].accepted;
             }
             pr.acceptance[int(t)] = total.acceptance();
+            pr.proposed[int(t)] = uint64_t(total.proposed);
         }
         pr.seconds = seconds();
         int done = iteration_ - first;

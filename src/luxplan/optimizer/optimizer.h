@@ -115,8 +115,10 @@ const char* stopReasonName(StopReason reason);
 struct Progress {
     int iteration = 0, iterations = 0;
     double current = 0, best = 0, temperature = 0;
-    bool feasible = false;
+    bool feasible = false;          // the chain's layout passes the geometric rules
+    bool lightingMeasured = false;  // ... and its cost includes the light (L)
     std::array<double, kMoveTypeCount> acceptance{};  // per move type, over the run so far
+    std::array<uint64_t, kMoveTypeCount> proposed{};  // ... of how many proposals
     double seconds = 0, etaSeconds = 0;
 };
 using ProgressCallback = std::function<void(const Progress&)>;

@@ -1,0 +1,57 @@
+#include <luxplan/optimizer/progress_line.h>
+
+#include <cmath>
+#include <cstdio>
+
+namespace luxplan {
+namespace {
+
+std::string fixed(double v, int digits) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.*f", digits, v);
+    return buf;
+}
+
+// Enough digits to see a cost change near zero, few when it is large.
+std::string cost(double c) {
+    if (!std::isfinite(c)) return "-";
+    return fixed(c, std::abs(c) >= 10 ? 1 : std::abs(c) >= 1 ? 3 : 4);
+}
+
+}  // namespace
+
+std::string durationText(double seconds) {
+    char buf[32];
+    long s = std::lround(std::max(0.0, seconds));
+    if (s >= 3600) std::snprintf(buf, sizeof buf, "%ldh%02ldm", s / 3600, s / 60 % 60);
+    else if (s >= 60) std::snprintf(buf, sizeof buf, "%ldm%02lds", s / 60, s % 60);
+    else std::snprintf(buf, sizeof buf, "%lds", s);
+    return buf;
+}
+
+std::string progressLine(const Progress& p) {
+    std::string line = "iteration " + std::to_string(p.iteration) + " of " + std::to_string(p.iterations) + " | ";
+    if (!p.feasible) {
+        line += "arranging: no layout keeps every rule within its limit yet (rules' cost " + cost(p.current) + ", light not measured)";
+    } else {
+        line += "cost " + cost(p.current) + ", best " + cost(p.best);
+        if (p.lightingMeasured) line += " (light and rules)";
+    }
+    std::string moves;
+    for (MoveType t : kMoveTypes) {
+        if (p.proposed[int(t)] == 0) continue;  // a move the scene does not allow
+        moves += (moves.empty() ? "" : ", ") + std::string(moveName(t)) + " " + fixed(100 * p.acceptance[int(t)], 0) + "%";
+    }
+    if (!moves.empty()) line += " | accepted: " + moves;
+    line += " | " + durationText(p.seconds);
+    if (p.iteration < p.iterations) line += ", about " + durationText(p.etaSeconds) + " left";
+    return line;
+}
+
+std::string lightingStartsLine(const Progress& p) {
+    std::string line = "by iteration " + std::to_string(p.iteration) + ": a layout keeps every rule within its limit";
+    if (p.lightingMeasured) line += "; from here the cost includes the light, so it may rise";
+    return line;
+}
+
+}  // namespace luxplan

@@ -1,0 +1,52 @@
+// The progress line in words.
+#include <gtest/gtest.h>
+
+#include <luxplan/optimizer/progress_line.h>
+
+namespace luxplan {
+namespace {
+
+Progress running() {
+    Progress p;
+    p.iteration = 1400, p.iterations = 3000;
+    p.current = 0.01612, p.best = 0.01491;
+    p.feasible = p.lightingMeasured = true;
+    p.acceptance = {0.52, 0.74, 0.0, 0.0};
+    p.proposed = {700, 500, 0, 0};
+    p.seconds = 37, p.etaSeconds = 42.4;
+    return p;
+}
+
+TEST(ProgressLine, SaysWhereTheSearchIsInWords) {
+    EXPECT_EQ(progressLine(running()),
+              "iteration 1400 of 3000 | cost 0.0161, best 0.0149 (light and rules) | accepted: translate 52%, rotate 74% | "
+              "37s, about 42s left");
+}
+
+TEST(ProgressLine, NamesTheArrangingPhase) {
+    Progress p = running();
+    p.feasible = p.lightingMeasured = false;
+    p.current = 0.84;
+    p.best = kInf;
+    p.proposed[3] = 10, p.acceptance[3] = 0.1;
+    EXPECT_EQ(progressLine(p),
+              "iteration 1400 of 3000 | arranging: no layout keeps every rule within its limit yet (rules' cost 0.8400, "
+              "light not measured) | accepted: translate 52%, rotate 74%, jump 10% | 37s, about 42s left");
+    p.feasible = true;
+    EXPECT_EQ(lightingStartsLine(p), "by iteration 1400: a layout keeps every rule within its limit");
+    p.lightingMeasured = true;
+    EXPECT_EQ(lightingStartsLine(p), "by iteration 1400: a layout keeps every rule within its limit; from here the "
+                                     "cost includes the light, so it may rise");
+}
+
+TEST(ProgressLine, TheLastLineHasNoTimeLeftAndDurationsReadAsTime) {
+    Progress p = running();
+    p.iteration = 3000;
+    p.seconds = 3725;
+    EXPECT_EQ(progressLine(p).substr(progressLine(p).rfind('|')), "| 1h02m");
+    EXPECT_EQ(durationText(185), "3m05s");
+    EXPECT_EQ(durationText(-1), "0s");
+}
+
+}  // namespace
+}  // namespace luxplan
