@@ -1,4 +1,4 @@
-// `luxplan measure SCENE [--layout L] [--paths N] [--seed S] [--threads T] [--json] [--flat]`:
+// `luxplan measure SCENE [--layout L] [--paths N] [--seed S] [--threads T] [--json] [--flat] [--at TIME]`:
 // evaluates every light sampler by path tracing. --flat: in the flattened scene (the
 // layout_flat.json of an `optimize --flat` run).
 #include <chrono>
@@ -10,6 +10,7 @@
 #include "commands.h"
 #include <luxplan/constraints/geometry_cost.h>
 #include <luxplan/constraints/penalty.h>
+#include <luxplan/daylight/datetime.h>
 #include <luxplan/daylight/daylight.h>
 #include <luxplan/io/layout_io.h>
 #include <luxplan/io/scene_loader.h>
@@ -29,7 +30,21 @@ struct MeasureArgs {
     int64_t seed = -1;
     bool json = false, flat = false, adaptive = false;
     std::string sampling = "sobol";
+    std::string at;  // ISO 8601: one instant of daylight instead of the period
 };
+
+// The scene's daylight at one instant (--at) instead of its period's average.
+DaylightParams daylightAt(const Scene& scene, const std::string& at) {
+    if (!scene.daylight)
+        throw std::runtime_error("--at " + at + ": the scene has no \"daylight\" to evaluate at an instant");
+    std::string why;
+    auto t = parseIso8601(at, &why);
+    if (!t) throw std::runtime_error("--at " + why);
+    DaylightParams d = *scene.daylight;
+    d.from = *t;
+    d.to.reset();
+    return d;
+}
 
 void runMeasure(const MeasureArgs& args) {
     auto start = std::chrono::steady_clock::now();
@@ -38,7 +53,8 @@ void runMeasure(const MeasureArgs& args) {
     if (args.flat) scene = flattenScene(scene).scene;
     Layout layout = args.layout.empty() ? initialLayout(scene) : io::readLayout(args.layout, scene);
     std::optional<DaylightEnvironment> daylight;
-    if (scene.daylight) daylight = buildDaylight(*scene.daylight, scene.site);
+    if (!args.at.empty()) daylight = buildDaylight(daylightAt(scene, args.at), scene.site);
+    else if (scene.daylight) daylight = buildDaylight(*scene.daylight, scene.site);
     EmbreeScene rt(scene, layout);
     PathTracer tracer(rt, daylight ? &*daylight : nullptr);
     MeasureOptions options;
@@ -82,9 +98,11 @@ void runMeasure(const MeasureArgs& args) {
                               {"G", geometry.cost}, {"C", cost}, {"C_std_error", w * lightingError},
                               {"geometric_rules_pass", !geometry.rejected},
                               {"seconds", seconds}};
+        if (!args.at.empty()) out["at"] = args.at;
         std::cout << out.dump(2) << "\n";
         return;
     }
+    if (!args.at.empty()) std::cout << "daylight at " << args.at << " (one instant, not the scene's period)\n";
     std::cout << std::left << std::setw(24) << "sampler" << std::setw(12) << "type" << std::right << std::setw(12)
               << "value" << std::setw(10) << "+-" << std::setw(8) << "unit" << std::setw(22) << "target" << std::setw(10)
               << "penalty" << "\n";
@@ -136,6 +154,9 @@ void registerMeasureCommand(CLI::App& app, int& threads) {
     cmd->add_option("--seed", args->seed, "Random seed (default: optimizer.seed)")->check(CLI::NonNegativeNumber);
     cmd->add_option("--threads", threads, "Worker threads (default: all cores)")->check(CLI::NonNegativeNumber);
     cmd->add_flag("--json", args->json, "Print JSON with per-point values");
+    cmd->add_option("--at", args->at,
+                    "One instant of daylight (ISO 8601 with its UTC offset, e.g. 2026-03-20T16:30+02:00) instead of the "
+                    "scene's period averaged");
     cmd->add_flag("--adaptive", args->adaptive,
                   "Stop each sampler once value +- 3 standard errors lies inside one linear piece of its penalty "
                   "(--paths is then the most per point)");
