@@ -1,9 +1,12 @@
 // `luxplan render SCENE [--layout L] -o OUTDIR`: render.png, plan.png and scene.glb
 // for a layout; `luxplan report SCENE [--layout L] -o OUTDIR`: every picture and
 // report.html for a layout, measured but not optimized.
+#include <cmath>
 #include <iostream>
 
 #include "commands.h"
+#include <luxplan/core/limits.h>
+#include <luxplan/core/names.h>
 #include <luxplan/daylight/daylight.h>
 #include <luxplan/io/layout_io.h>
 #include <luxplan/io/scene_loader.h>
@@ -19,6 +22,9 @@ struct PictureArgs {
     double cell = 0;
     int cellPaths = 0;
     bool raw = false;
+    std::string camera;                // a scene camera's name
+    std::vector<double> eye, target;  // or a view from the command line
+    double fov = 0;
 };
 
 void addPictureOptions(CLI::App* cmd, PictureArgs& args, int& threads) {
@@ -40,6 +46,37 @@ void addPictureOptions(CLI::App* cmd, PictureArgs& args, int& threads) {
         ->check(CLI::PositiveNumber);
     cmd->add_option("--threads", threads, "Worker threads (default: all cores)")->check(CLI::NonNegativeNumber);
     cmd->add_option("--seed", args.seed, "Random seed (default: optimizer.seed)")->check(CLI::NonNegativeNumber);
+    auto* camera = cmd->add_option("--camera", args.camera, "render.png from the scene's camera of that name (\"cameras\")");
+    auto* eye = cmd->add_option("--eye", args.eye, "render.png from this point: X,Y,Z in metres (with --target)")
+                    ->delimiter(',')->expected(3);
+    auto* target = cmd->add_option("--target", args.target, "... looking at this point: X,Y,Z in metres")->delimiter(',')->expected(3);
+    cmd->add_option("--fov", args.fov, "Vertical field of view in degrees, (0, 180) (default: the camera's, or 60)")
+        ->check(CLI::Range(1e-3, 179.999));
+    eye->needs(target);
+    target->needs(eye);
+    camera->excludes(eye)->excludes(target);
+}
+
+// The view render.png is drawn from: a scene camera, a command-line one, or none
+// (the default corner view).
+std::optional<Camera> chosenCamera(const PictureArgs& args, const Scene& scene) {
+    if (!args.camera.empty()) {
+        std::vector<std::string> names;
+        for (const SceneCamera& c : scene.cameras) {
+            if (c.name == args.camera) return lookingAt(c.eye, c.target, args.fov > 0 ? args.fov : c.fovDeg);
+            names.push_back(c.name);
+        }
+        throw std::runtime_error("--camera: unknown camera \"" + args.camera + "\"" + didYouMean(args.camera, names) +
+                                 (names.empty() ? " (the scene has no \"cameras\")" : " (" + listNames(names) + ")"));
+    }
+    if (args.eye.empty()) return std::nullopt;
+    const Vec3 eye(args.eye[0], args.eye[1], args.eye[2]), target(args.target[0], args.target[1], args.target[2]);
+    for (double v : {eye.x, eye.y, eye.z, target.x, target.y, target.z})
+        if (!std::isfinite(v) || std::abs(v) > limits::kMaxCoordinate)
+            throw std::runtime_error("--eye/--target: coordinates must be finite and within " +
+                                     std::to_string(int(limits::kMaxCoordinate)) + " m");
+    if (length(target - eye) < 1e-6) throw std::runtime_error("--target is the same point as --eye: the camera looks nowhere");
+    return lookingAt(eye, target, args.fov > 0 ? args.fov : 60);
 }
 
 OutputOptions outputOptions(const PictureArgs& args, const Scene& scene) {
@@ -52,6 +89,7 @@ OutputOptions outputOptions(const PictureArgs& args, const Scene& scene) {
     if (args.cell > 0) o.cellSize = args.cell;
     if (args.cellPaths > 0) o.cellPaths = args.cellPaths;
     o.seed = args.seed >= 0 ? uint64_t(args.seed) : scene.optimizer.seed;
+    o.camera = chosenCamera(args, scene);
     return o;
 }
 

@@ -127,6 +127,8 @@ private:
         if (auto* a = f.array("constraints"))
             for (size_t i = 0; i < a->size(); ++i) readConstraint((*a)[i], pointer(f.at("constraints"), i), -1);
         for (const ScopedConstraint& c : entityConstraints_) readConstraint(c.json, c.path, c.entity);
+        if (auto* a = f.array("cameras"))
+            for (size_t i = 0; i < a->size(); ++i) readCamera((*a)[i], pointer(f.at("cameras"), i));
         if (f.has("objective")) {
             Fields o(sink_, f.get("objective"), f.at("objective"));
             scene_.objective.lightingWeight = o.number("lighting_weight", 0.5, kUnit);
@@ -135,6 +137,25 @@ private:
         if (f.has("optimizer")) readOptimizer(f.get("optimizer"), f.at("optimizer"));
         f.finish();
         checkUniqueNames();
+    }
+
+    void readCamera(const Json& j, const std::string& path) {
+        Fields f(sink_, j, path);
+        if (!f.valid()) return;
+        SceneCamera c;
+        c.jsonPath = path;
+        c.name = scopedName(f, -1);
+        auto eye = f.vec3("eye", true, kCoordinate);
+        auto target = f.vec3("target", true, kCoordinate);
+        c.fovDeg = f.number("fov_deg", 60.0, Range{0, 180, true, true, "deg"});
+        f.finish();
+        if (!eye || !target) return;
+        if (length(*target - *eye) < 1e-6) {
+            f.error("target", "the camera's target is its eye: it looks nowhere");
+            return;
+        }
+        c.eye = *eye, c.target = *target;
+        scene_.cameras.push_back(c);
     }
 
     void readOptimizer(const Json& j, const std::string& path) {
@@ -1164,6 +1185,7 @@ private:
         for (const auto& e : scene_.entities) unique("entity", e.path, e.jsonPath);
         for (const auto& s : scene_.samplers) unique("sampler", s.name, s.jsonPath);
         for (const auto& c : scene_.constraints) unique("constraint", c.name, c.jsonPath);
+        for (const auto& c : scene_.cameras) unique("camera", c.name, c.jsonPath);
     }
 
     // What only the whole scene shows: its triangle count.

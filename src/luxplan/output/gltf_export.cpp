@@ -307,6 +307,24 @@ void writeGlb(const std::filesystem::path& file, const Scene& scene, const Layou
         node.extensions[kLights] = tinygltf::Value(tinygltf::Value::Object{{"light", tinygltf::Value(light)}});
     }
 
+    // The scene's cameras: a glTF camera looks down its -z with +y up.
+    for (const SceneCamera& c : scene.cameras) {
+        const Vec3 f = normalize(c.target - c.eye);
+        const Vec3 up = std::abs(f.z) > 0.999 ? Vec3(0, 1, 0) : Vec3(0, 0, 1);
+        const Vec3 r = normalize(cross(f, up)), u = cross(r, f);
+        Transform view;
+        view.m = {r.x, u.x, -f.x, r.y, u.y, -f.y, r.z, u.z, -f.z};
+        view.t = c.eye;
+        tinygltf::Camera camera;
+        camera.name = c.name;
+        camera.type = "perspective";
+        camera.perspective.yfov = c.fovDeg * kPi / 180;
+        camera.perspective.znear = 0.05;
+        glb.model().cameras.push_back(camera);
+        tinygltf::Node& node = glb.addNode(c.name, -1, toGltf * view, c.jsonPath);
+        node.camera = int(glb.model().cameras.size()) - 1;
+    }
+
     // WriteGltfSceneToStream(binary) writes what WriteGltfSceneToFile(embedImages,
     // embedBuffers, binary) would; the stream is ours so that a file that cannot be
     // opened or written is reported (tinygltf 2.7's file writer does not check).

@@ -18,7 +18,8 @@ Vec3 blackBodyRgb(double kelvin);
 // parts (its mesh in its own frame, the node placing it by worldTransforms) and one
 // per emitter (an emissive rect, disk or sphere carrying a point light for a sphere, a
 // spot light along the normal for a rect or disk, intensity in candela). Invisible
-// blockers are left out. Throws IoError when the file cannot be written.
+// blockers are left out. Each scene camera is a perspective camera node of its name.
+// Throws IoError when the file cannot be written.
 void writeGlb(const std::filesystem::path& file, const Scene& scene, const Layout& layout);
 
 }  // namespace luxplan

@@ -87,7 +87,7 @@ RunOutputs writeRunOutputs(const std::filesystem::path& folder, const Scene& sce
         ro.denoise = options.renderDenoise;
         ro.seed = options.seed;
         ro.cancel = options.cancel;
-        Image render = renderPerspective(tracer, defaultCamera(scene), ro);
+        Image render = renderPerspective(tracer, options.camera.value_or(defaultCamera(scene)), ro);
         if (stopped()) return finish();  // rows after the signal were not traced
         writePng(render, folder / "render.png");
         wrote(folder / "render.png");

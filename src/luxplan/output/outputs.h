@@ -12,6 +12,7 @@
 
 #include <luxplan/daylight/environment.h>
 #include <luxplan/optimizer/optimizer.h>
+#include <luxplan/output/render.h>
 #include <luxplan/output/report_html.h>
 
 namespace luxplan {
@@ -25,7 +26,8 @@ struct OutputOptions {
     bool convergence = true;  // convergence.png (only with an optimizer result)
     bool glb = true;          // scene.glb
     bool html = true;         // report.html (written last; links what exists)
-    int renderWidth = 480, renderHeight = 320, renderSamplesPerPixel = 16;
+    int renderWidth = 660, renderHeight = 440, renderSamplesPerPixel = 8;
+    std::optional<Camera> camera;   // render.png's view; unset: defaultCamera(scene)
     bool renderDenoise = true;      // edge-avoiding filter on render.png (denoise.h)
     double cellSize = 0.25;         // work-plane grid cell (m)
     int cellPaths = 32;             // illuminance samples per cell

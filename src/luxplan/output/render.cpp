@@ -30,6 +30,16 @@ double glazedArea(const RoomShell& room, Wall wall) {
 
 }  // namespace
 
+Camera lookingAt(Vec3 eye, Vec3 target, double fovDeg) {
+    Camera c;
+    c.position = eye;
+    c.lookAt = target;
+    c.fovDeg = fovDeg;
+    const Vec3 d = normalize(target - eye);
+    c.up = std::abs(d.z) > 0.999 ? Vec3(0, 1, 0) : Vec3(0, 0, 1);
+    return c;
+}
+
 Camera defaultCamera(const Scene& scene) {
     Camera camera;
     camera.fovDeg = 65;

@@ -21,6 +21,10 @@ struct Camera {
     double fovDeg = 65;  // vertical field of view
 };
 
+// From `eye` towards `target` (distinct points), with +z up unless the view is
+// vertical (then +y is up in the picture).
+Camera lookingAt(Vec3 eye, Vec3 target, double fovDeg);
+
 // From high in the corner of the room nearest its south-west (x, y minimal), looking at
 // the opposite lower corner; for scenes without a room shell, from outside the bounds
 // of all geometry.

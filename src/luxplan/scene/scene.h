@@ -176,6 +176,14 @@ struct OptimizerSettings {
 const EnumNames<Wall>& wallNames();
 const EnumNames<MaterialType>& materialTypeNames();
 
+// A named view of the room ("cameras"), for render.png and the glTF.
+struct SceneCamera {
+    std::string name;
+    std::string jsonPath;
+    Vec3 eye, target;
+    double fovDeg = 60;  // vertical field of view
+};
+
 struct Scene {
     std::filesystem::path file;
     std::string name;
@@ -188,6 +196,7 @@ struct Scene {
     std::vector<Entity> entities;   // depth first: a parent before its children
     std::vector<LightSamplerSpec> samplers;
     std::vector<ConstraintSpec> constraints;
+    std::vector<SceneCamera> cameras;
     OverlapRule overlap;
     Objective objective;
     OptimizerSettings optimizer;
