@@ -512,6 +512,14 @@ private:
         Opening o;
         auto wall = f.string("wall", true);
         if (f.has("material")) o.material = materialRef(f, "material", true);
+        if (f.has("blind")) {
+            Fields b(sink_, f.get("blind"), f.at("blind"), "a blind object");
+            if (b.valid()) {
+                o.blindMaterial = materialRef(b, "material", true);
+                o.blindDeployed = b.boolean("deployed").value_or(true);
+                b.finish();
+            }
+        }
         auto parsed = wall ? wallNames().parse(*wall) : std::nullopt;
         if (wall && !parsed) f.error("wall", wallNames().unknown("wall", *wall));
         if (!parsed) {

@@ -81,6 +81,13 @@ TriangleMesh buildRoomShell(const RoomShell& room) {
                 auto h = openingRect(r, o);
                 addOrientedQuad(mesh, f, h[0], h[1], h[2], h[3], *o.material);
             }
+        for (const Opening& o : room.openings)
+            if (o.wall == wall && o.blindMaterial && o.blindDeployed) {
+                WallFrame inside = f;
+                inside.origin = f.origin + f.inward * kBlindInset;
+                auto h = openingRect(r, o);
+                addOrientedQuad(mesh, inside, h[0], h[1], h[2], h[3], *o.blindMaterial);
+            }
     }
     return mesh;
 }

@@ -30,7 +30,14 @@ struct Opening {
     double offset = 0, width = 1, sill = 0, height = 1;  // walls: metres along the wall / above the floor
     Vec2 center, size;                                    // ceiling openings
     std::optional<uint32_t> material;                     // the pane's material, if glazed
+    // A blind or curtain ("blind"): a layer of this material over the whole opening,
+    // kBlindInset inside the room, when deployed.
+    std::optional<uint32_t> blindMaterial;
+    bool blindDeployed = true;
 };
+
+// How far inside the room a deployed blind hangs in front of its opening (m).
+inline constexpr double kBlindInset = 0.005;
 
 struct RoomShell {
     Bounds3 box;
