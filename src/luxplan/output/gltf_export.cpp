@@ -16,6 +16,7 @@
 #include <luxplan/core/atomic_file.h>
 #include <luxplan/core/error.h>
 #include <luxplan/emitters/emitter_shape.h>
+#include <luxplan/output/render.h>
 
 namespace luxplan {
 namespace {
@@ -309,9 +310,9 @@ void writeGlb(const std::filesystem::path& file, const Scene& scene, const Layou
 
     // The scene's cameras: a glTF camera looks down its -z with +y up.
     for (const SceneCamera& c : scene.cameras) {
-        const Vec3 f = normalize(c.target - c.eye);
-        const Vec3 up = std::abs(f.z) > 0.999 ? Vec3(0, 1, 0) : Vec3(0, 0, 1);
-        const Vec3 r = normalize(cross(f, up)), u = cross(r, f);
+        const Camera look = lookingAt(c.eye, c.target, c.fovDeg);  // render.png's up, too
+        const Vec3 f = normalize(look.lookAt - look.position);
+        const Vec3 r = normalize(cross(f, look.up)), u = cross(r, f);
         Transform view;
         view.m = {r.x, u.x, -f.x, r.y, u.y, -f.y, r.z, u.z, -f.z};
         view.t = c.eye;
