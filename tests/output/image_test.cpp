@@ -131,9 +131,15 @@ TEST(Image, TextUsesTheBitmapFont) {
         for (int x = 50; x < 60; ++x) EXPECT_EQ(r.at(x, y), kWhite);
 }
 
+FalseColor scaleOf(ColorScale scale, double maxValue, double decades = 3) {
+    FalseColor f;
+    f.scale = scale, f.maxValue = maxValue, f.decades = decades;
+    return f;
+}
+
 TEST(FalseColor, ScaleIsMonotoneAndSaturates) {
-    FalseColor linear{ColorScale::Linear, 500};
-    FalseColor log{ColorScale::Log, 1000, 3};
+    FalseColor linear = scaleOf(ColorScale::Linear, 500);
+    FalseColor log = scaleOf(ColorScale::Log, 1000, 3);
     double previous = -1, previousLog = -1;
     for (double v = 0; v <= 600; v += 5) {
         double f = linear.fraction(v), g = log.fraction(v);
@@ -175,7 +181,7 @@ TEST(FalseColor, AutomaticMaximumIsARoundNumberAboveThePercentile) {
 
 TEST(FalseColor, LegendDrawsTheBarAndItsLabels) {
     Image image(200, 260, kWhite);
-    FalseColor scale{ColorScale::Linear, 1000};
+    FalseColor scale = scaleOf(ColorScale::Linear, 1000);
     int used = drawLegend(image, scale, 20, 30, 16, 200, "lx");
     EXPECT_GT(used, 16 + textWidth("1000"));
     // Top of the bar is the top colour, bottom the bottom colour.
@@ -188,8 +194,60 @@ TEST(FalseColor, LegendDrawsTheBarAndItsLabels) {
     EXPECT_GT(ink, 60);
     // Log legend: one tick per decade.
     Image logImage(200, 260, kWhite);
-    drawLegend(logImage, FalseColor{ColorScale::Log, 1000, 3}, 20, 30, 16, 200, "lx");
+    drawLegend(logImage, scaleOf(ColorScale::Log, 1000, 3), 20, 30, 16, 200, "lx");
     EXPECT_NE(logImage.pixels(), image.pixels());
+}
+
+TEST(FalseColor, TargetScaleIsCentredOnTheBand) {
+    // 300-500 lx: 30 to 5000 lx, the band's geometric mean in the middle.
+    FalseColor f = targetFalseColor(300, 500);
+    EXPECT_EQ(f.scale, ColorScale::Log);
+    EXPECT_NEAR(f.minValue(), 30, 1e-9);
+    EXPECT_NEAR(f.maxValue, 5000, 1e-9);
+    EXPECT_NEAR(f.fraction(std::sqrt(300.0 * 500.0)), 0.5, 1e-12);
+    ASSERT_TRUE(f.band);
+    EXPECT_EQ((*f.band)[0], 300);
+    EXPECT_EQ((*f.band)[1], 500);
+    // "At least 500": 50 to 50000, the band open to the top.
+    FalseColor atLeast = targetFalseColor(500, kInf);
+    EXPECT_NEAR(atLeast.minValue(), 50, 1e-9);
+    EXPECT_NEAR(atLeast.maxValue, 50000, 1e-9);
+    EXPECT_NEAR(atLeast.fraction(500), 1.0 / 3, 1e-12);
+    EXPECT_EQ((*atLeast.band)[1], atLeast.maxValue);
+    // "At most 2000 cd/m2": 20 to 20000.
+    FalseColor atMost = targetFalseColor(0, 2000);
+    EXPECT_NEAR(atMost.minValue(), 20, 1e-9);
+    EXPECT_NEAR(atMost.maxValue, 20000, 1e-9);
+    // No band at all: a plain three-decade scale, nothing marked.
+    FalseColor none = targetFalseColor(0, kInf);
+    EXPECT_FALSE(none.band);
+    EXPECT_NEAR(none.decades, 3, 1e-12);
+}
+
+TEST(FalseColor, LogTicksAreTheOneTwoFiveValuesAndTheEnds) {
+    std::vector<double> ticks = legendTicks(targetFalseColor(300, 500));
+    std::vector<double> expected{30, 50, 100, 200, 500, 1000, 2000, 5000};
+    ASSERT_EQ(ticks.size(), expected.size());
+    for (size_t i = 0; i < ticks.size(); ++i) EXPECT_NEAR(ticks[i], expected[i], 1e-9 * expected[i]) << i;
+    std::vector<double> linear = legendTicks(scaleOf(ColorScale::Linear, 1000), 4);
+    EXPECT_EQ(linear, (std::vector<double>{0, 250, 500, 750, 1000}));
+}
+
+TEST(FalseColor, LegendBracketsTheTargetBand) {
+    Image plain(260, 260, kWhite), marked(260, 260, kWhite);
+    FalseColor f = targetFalseColor(300, 500);
+    FalseColor unmarked = f;
+    unmarked.band.reset();
+    drawLegend(plain, unmarked, 80, 30, 16, 200, "lx");
+    drawLegend(marked, f, 80, 30, 16, 200, "lx");
+    // The bracket is left of the bar, between the band's ends and nowhere else.
+    auto rowOf = [&](double v) { return int(30 + (1 - f.fraction(v)) * 200); };
+    int inside = 0, outside = 0;
+    for (int y = 0; y < 260; ++y)
+        for (int x = 0; x < 80; ++x)
+            if (marked.at(x, y) != plain.at(x, y)) (y >= rowOf(500) - 2 && y <= rowOf(300) + 2 ? inside : outside) += 1;
+    EXPECT_GT(inside, 40);
+    EXPECT_EQ(outside, 0);
 }
 
 }  // namespace

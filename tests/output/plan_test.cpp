@@ -109,5 +109,80 @@ TEST(Plan, WorkPlaneMapAndLegendColourTheFloor) {
     EXPECT_GE(scale.maxValue, under * 0.5);
 }
 
+TEST(Plan, CellsInsideFurnitureAreNoPartOfTheWorkPlane) {
+    // A 0.6 x 0.6 x 1.6 m cabinet at (6, 1): four cell centres of a 0.5 m grid are inside
+    // it; the table (0.75 m high) is under the 0.8 m plane, so its cells are free.
+    Scene scene = test::SceneBuilder()
+                      .material("wall", test::diffuse(0.5))
+                      .material("wood", test::diffuse(0.4))
+                      .room({0, 0, 0}, {8, 4, 3}, "wall", "wall", "wall")
+                      .emitter("lamp", rectEmitter({4, 2, 2.99}, {0, 0, -1}, {0, 1, 0}, {0.6, 0.6}), 6000)
+                      .entity("table", {1.5, 2, 0}).preset("table", "wood", Vec3(1.0, 0.8, 0.75)).end()
+                      .entity("cabinet", {6, 1, 0}).part({0.6, 0.6, 1.6}, "wood").end()
+                      .build();
+    test::SceneLab lab(scene);
+    IlluminanceGrid grid = measureWorkPlane(*lab.tracer, lab.scene.room()->box, 0.8, 0.5, 4, 1);
+    std::vector<char> free = freeCells(lab.scene, initialLayout(lab.scene), grid);
+    ASSERT_EQ(free.size(), grid.values.size());
+    EXPECT_EQ(std::count(free.begin(), free.end(), 0), 4);
+    for (auto [i, j] : {std::pair{11, 1}, {12, 1}, {11, 2}, {12, 2}}) EXPECT_EQ(free[size_t(j * grid.nx + i)], 0) << i << j;
+    EXPECT_EQ(free[size_t(4 * grid.nx + 3)], 1);  // over the table
+    // Moved, the cabinet takes its cells with it.
+    Layout moved = initialLayout(lab.scene);
+    moved.placements[1].position = {2, 1, 0};
+    std::vector<char> after = freeCells(lab.scene, moved, grid);
+    EXPECT_EQ(after[size_t(2 * grid.nx + 12)], 1);
+    EXPECT_EQ(after[size_t(2 * grid.nx + 4)], 0);
+}
+
+TEST(Plan, WorkPlaneStatisticsAreOverTheFreeCells) {
+    IlluminanceGrid g;
+    g.nx = 2, g.ny = 2;
+    g.values = {100, 200, 300, 5};
+    g.errors = {1, 1, 1, 1};
+    PointStatistics all = workPlaneStatistics(g);
+    EXPECT_NEAR(all.mean.value, 151.25, 1e-9);
+    EXPECT_EQ(all.min.value, 5);
+    PointStatistics st = workPlaneStatistics(g, {1, 1, 1, 0});
+    EXPECT_NEAR(st.mean.value, 200, 1e-9);
+    EXPECT_EQ(st.min.value, 100);
+    EXPECT_EQ(st.max.value, 300);
+    EXPECT_NEAR(st.u0.value, 0.5, 1e-12);
+}
+
+TEST(Plan, ScaleCentresOnTheTargetsAndATableListsTheWorkPlanes) {
+    test::SceneLab lab(roomWithTable());
+    // The reading sampler asks at least 300 lx: 30 to 30000 lx, 300 a third of the way.
+    FalseColor f = planFalseColor(lab.scene, {});
+    EXPECT_NEAR(f.minValue(), 30, 1e-9);
+    EXPECT_NEAR(f.fraction(300), 1.0 / 3, 1e-12);
+    ASSERT_TRUE(f.band);
+    // Without illuminance targets: a log scale of the values.
+    Scene bare = test::SceneBuilder().material("wall", test::diffuse(0.5)).room({0, 0, 0}, {4, 4, 3}, "wall", "wall", "wall").build();
+    FalseColor automatic = planFalseColor(bare, {100, 200, 300});
+    EXPECT_FALSE(automatic.band);
+    EXPECT_EQ(automatic.scale, ColorScale::Log);
+
+    PlanData data;
+    data.workPlane = measureWorkPlane(*lab.tracer, lab.scene.room()->box, 0.8, 0.5, 4, 1);
+    Image mapOnly = renderPlan(lab.scene, initialLayout(lab.scene), {}, data);
+    data.samplers = std::vector<SamplerResult>(1);
+    (*data.samplers)[0].value = 450;
+    (*data.samplers)[0].points = {440, 460, 450, 450};
+    (*data.samplers)[0].pointErrors = {1, 1, 1, 1};
+    Image withTable = renderPlan(lab.scene, initialLayout(lab.scene), {}, data);
+    // A header and one row (9 + 3 px each) and 8 px of space.
+    EXPECT_EQ(withTable.height(), mapOnly.height() + 2 * (kLineAdvance + 3) + 8);
+    // The row is green: the sampler meets its target.
+    int green = 0;
+    for (int y = mapOnly.height(); y < withTable.height(); ++y)
+        for (int x = 0; x < withTable.width(); ++x) green += withTable.at(x, y).g > 100 && withTable.at(x, y).r < 60;
+    EXPECT_GT(green, 20);
+    // Contours can be turned off; on, they draw dark lines over the map.
+    PlanOptions noLines;
+    noLines.contours = false;
+    EXPECT_NE(renderPlan(lab.scene, initialLayout(lab.scene), noLines, data).pixels(), withTable.pixels());
+}
+
 }  // namespace
 }  // namespace luxplan

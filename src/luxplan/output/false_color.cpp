@@ -33,7 +33,7 @@ Rgb falseColorRamp(double t) {
 }
 
 double FalseColor::minValue() const {
-    return scale == ColorScale::Log ? maxValue * std::pow(10.0, -std::max(1, decades)) : 0.0;
+    return scale == ColorScale::Log ? maxValue * std::pow(10.0, -std::max(0.1, decades)) : 0.0;
 }
 
 double FalseColor::fraction(double v) const {
@@ -41,7 +41,7 @@ double FalseColor::fraction(double v) const {
     if (scale == ColorScale::Log) {
         double lo = minValue();
         if (v <= lo) return 0;
-        return std::clamp(std::log10(v / lo) / std::max(1, decades), 0.0, 1.0);
+        return std::clamp(std::log10(v / lo) / std::max(0.1, decades), 0.0, 1.0);
     }
     return maxValue > 0 ? std::clamp(v / maxValue, 0.0, 1.0) : 0.0;
 }
@@ -74,6 +74,43 @@ FalseColor autoFalseColor(const std::vector<double>& values, ColorScale scale, d
     return f;
 }
 
+FalseColor targetFalseColor(double targetMin, double targetMax) {
+    FalseColor f;
+    f.scale = ColorScale::Log;
+    double bottom = 1, top = 1000;
+    if (targetMin > 0 && std::isfinite(targetMin) && targetMax < 100 * targetMin) {
+        bottom = targetMin / 10, top = 10 * targetMax;  // a band
+        f.band = std::array<double, 2>{targetMin, targetMax};
+    } else if (targetMin > 0 && std::isfinite(targetMin)) {
+        bottom = targetMin / 10, top = 100 * targetMin;  // at least targetMin
+        f.band = std::array<double, 2>{targetMin, top};
+    } else if (targetMax > 0 && std::isfinite(targetMax)) {
+        bottom = targetMax / 100, top = 10 * targetMax;  // at most targetMax
+        f.band = std::array<double, 2>{bottom, targetMax};
+    }
+    f.maxValue = top;
+    f.decades = std::log10(top / bottom);
+    return f;
+}
+
+std::vector<double> legendTicks(const FalseColor& scale, int ticks) {
+    std::vector<double> out;
+    if (scale.scale == ColorScale::Log) {
+        const double lo = scale.minValue(), hi = scale.maxValue;
+        out.push_back(lo);
+        for (double p = std::pow(10.0, std::floor(std::log10(lo))); p <= hi; p *= 10)
+            for (double m : {1.0, 2.0, 5.0}) {
+                double v = m * p;
+                if (v > lo * 1.15 && v < hi / 1.15) out.push_back(v);
+            }
+        out.push_back(hi);
+        return out;
+    }
+    ticks = std::max(1, ticks);
+    for (int k = 0; k <= ticks; ++k) out.push_back(scale.maxValue * k / ticks);
+    return out;
+}
+
 std::string formatValue(double v) {
     char buffer[32];
     double a = std::abs(v);
@@ -92,23 +129,23 @@ int drawLegend(Image& image, const FalseColor& scale, int x, int y, int width, i
         image.fillRect(x, y + r, x + width, y + r + 1, falseColorRamp(1 - (r + 0.5) / height));
     image.drawRect(x - 0.5, y - 0.5, x + width + 0.5, y + height + 0.5, kBlack, 1);
 
-    std::vector<std::pair<double, double>> marks;  // (fraction, value)
-    if (scale.scale == ColorScale::Log) {
-        for (int k = 0; k <= std::max(1, scale.decades); ++k) {
-            double v = scale.minValue() * std::pow(10.0, k);
-            marks.push_back({scale.fraction(v), v});
-        }
-    } else {
-        ticks = std::max(1, ticks);
-        for (int k = 0; k <= ticks; ++k) marks.push_back({double(k) / ticks, scale.maxValue * k / ticks});
-    }
     int widest = 0;
-    for (auto [t, v] : marks) {
-        double py = y + (1 - t) * height;
+    for (double v : legendTicks(scale, ticks)) {
+        double py = y + (1 - scale.fraction(v)) * height;
         image.drawLine({double(x + width), py}, {double(x + width + 4), py}, kBlack, 1);
         std::string label = formatValue(v);
         image.drawText(x + width + 7, py - 3, label, kBlack, 1, TextAlign::Left);
         widest = std::max(widest, textWidth(label));
+    }
+    if (scale.band) {
+        // A bracket left of the bar from the band's top to its bottom, "target" beside it.
+        double top = y + (1 - scale.fraction((*scale.band)[1])) * height;
+        double bottom = y + (1 - scale.fraction((*scale.band)[0])) * height;
+        double bx = x - 5;
+        image.drawLine({bx, top}, {bx, bottom}, kBlack, 2);
+        image.drawLine({bx, top}, {double(x), top}, kBlack, 2);
+        image.drawLine({bx, bottom}, {double(x), bottom}, kBlack, 2);
+        image.drawText(bx - 3, (top + bottom) / 2 - 3, "target", kBlack, 1, TextAlign::Right);
     }
     return width + 7 + widest;
 }

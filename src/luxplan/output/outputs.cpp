@@ -110,7 +110,7 @@ RunOutputs writeRunOutputs(const std::filesystem::path& folder, const Scene& sce
         timed("samplers and work plane (" + options.initialLabel + ")");
     }
 
-    // Plans on one colour scale, so that the two sides compare.
+    // Plans on one colour scale (centred on the targets), so that the two sides compare.
     if (stopped()) return finish();
     PlanOptions plan;
     if (grids) {
@@ -119,7 +119,7 @@ RunOutputs writeRunOutputs(const std::filesystem::path& folder, const Scene& sce
             const std::vector<double>& more = initialData.workPlane->values;
             values.insert(values.end(), more.begin(), more.end());
         }
-        plan.maxLux = autoFalseColor(values).maxValue;
+        plan.colors = planFalseColor(scene, values);
     }
     if (options.plan) {
         PlanOptions titled = plan;

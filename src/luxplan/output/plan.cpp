@@ -11,6 +11,7 @@
 #include <luxplan/emitters/emitter_shape.h>
 #include <luxplan/constraints/penalty.h>
 #include <luxplan/lightsamplers/sampler_type.h>
+#include <luxplan/output/contours.h>
 
 namespace luxplan {
 namespace {
@@ -27,6 +28,8 @@ constexpr Rgb kPassColor{0, 165, 60};
 constexpr Rgb kFailColor{220, 30, 30};
 constexpr Rgb kUnknownColor{110, 110, 110};
 constexpr Rgb kStaticColor{150, 150, 150};
+constexpr Rgb kHatchColor{205, 205, 205};
+constexpr Rgb kContourColor{40, 40, 40};
 
 // World (x, y) to pixels: +y up.
 struct PlanMapping {
@@ -114,22 +117,34 @@ class LabelPlacer {
 public:
     explicit LabelPlacer(Image& image) : image_(image) {}
 
-    // `anchor` is the top centre of the text. Without a free spot the label is drawn at
-    // its anchor when `force`, else left out.
+    // `anchor` is the top centre of the text. Tries the anchor, then shifts down and up
+    // by whole label heights, then the same to the left and right of the anchor, and
+    // takes the first spot that overlaps no label placed before; a label moved off its
+    // anchor by more than its height gets a thin leader line back to it. Without a free
+    // spot the label is drawn at its anchor when `force`, else left out.
     void place(Vec2 anchor, const std::string& text, Rgb color, double backgroundAlpha, bool force) {
         const double w = textWidth(text), h = textHeight(text), step = h + 5;
-        for (int k = 0; k < 9; ++k) {
-            double dy = (k + 1) / 2 * step * (k % 2 ? 1 : -1);
-            Box b{anchor.x - w / 2 - 2, anchor.y + dy - 2, anchor.x + w / 2 + 2, anchor.y + dy + h + 2};
-            if (b.x0 < 0 || b.y0 < 0 || b.x1 > image_.width() || b.y1 > image_.height() || overlaps(b)) continue;
-            draw(b, {anchor.x, anchor.y + dy}, text, color, backgroundAlpha);
-            return;
-        }
+        for (int column : {0, -1, 1})
+            for (int k = 0; k < 9; ++k) {
+                double dy = (k + 1) / 2 * step * (k % 2 ? 1 : -1), dx = column * (w + 8);
+                Vec2 at{anchor.x + dx, anchor.y + dy};
+                Box b{at.x - w / 2 - 2, at.y - 2, at.x + w / 2 + 2, at.y + h + 2};
+                if (b.x0 < 0 || b.y0 < 0 || b.x1 > image_.width() || b.y1 > image_.height() || overlaps(b)) continue;
+                if (std::abs(dx) + std::abs(dy) > step) {
+                    Vec2 near{std::clamp(anchor.x, b.x0, b.x1), std::clamp(anchor.y, b.y0, b.y1)};
+                    image_.drawLine(anchor, near, color, 1, 0.8);
+                }
+                draw(b, at, text, color, backgroundAlpha);
+                return;
+            }
         if (force) {
             Box b{anchor.x - w / 2 - 2, anchor.y - 2, anchor.x + w / 2 + 2, anchor.y + h + 2};
             draw(b, anchor, text, color, backgroundAlpha);
         }
     }
+
+    // Reserves an area (a legend, a table) that no label may cover.
+    void reserve(double x0, double y0, double x1, double y1) { boxes_.push_back({x0, y0, x1, y1}); }
 
 private:
     struct Box {
@@ -210,6 +225,46 @@ IlluminanceGrid measureWorkPlane(const PathTracer& tracer, const Bounds3& room, 
     return grid;
 }
 
+std::vector<char> freeCells(const Scene& scene, const Layout& layout, const IlluminanceGrid& grid) {
+    const std::vector<Transform> world = worldTransforms(scene, layout);
+    std::vector<Transform> local(world.size());
+    for (size_t e = 0; e < world.size(); ++e) local[e] = world[e].inverse();
+    std::vector<char> free(size_t(grid.nx) * size_t(grid.ny), 1);
+    for (int j = 0; j < grid.ny; ++j)
+        for (int i = 0; i < grid.nx; ++i) {
+            const Vec3 p = grid.cellCenter(i, j);
+            bool inside = false;
+            for (size_t e = 0; e < scene.entities.size() && !inside; ++e)
+                for (const PartInfo& part : scene.entities[e].parts)
+                    if (part.bounds.contains(local[e].applyPoint(p))) inside = true;
+            for (const StaticItem& item : scene.geometry)
+                if (!inside && item.kind != StaticKind::Room && !item.invisible && !item.mesh.empty() &&
+                    item.mesh.bounds().contains(p))
+                    inside = true;
+            free[size_t(j) * size_t(grid.nx) + size_t(i)] = inside ? 0 : 1;
+        }
+    return free;
+}
+
+PointStatistics workPlaneStatistics(const IlluminanceGrid& grid, const std::vector<char>& free) {
+    std::vector<double> values, errors;
+    for (size_t c = 0; c < grid.values.size(); ++c)
+        if (free.empty() || free[c]) {
+            values.push_back(grid.values[c]);
+            errors.push_back(c < grid.errors.size() ? grid.errors[c] : 0.0);
+        }
+    return pointStatistics(values, errors);
+}
+
+FalseColor planFalseColor(const Scene& scene, const std::vector<double>& values) {
+    double lo = kInf, hi = -kInf;
+    for (const LightSamplerSpec& spec : scene.samplers)
+        if (spec.type->hasPointStatistics() && std::string_view(spec.type->unit()) == "lx")
+            lo = std::min(lo, spec.targetMin), hi = std::max(hi, spec.targetMax);
+    if (lo <= hi && (lo > 0 || std::isfinite(hi))) return targetFalseColor(lo, hi);
+    return autoFalseColor(values, ColorScale::Log);
+}
+
 Image renderPlan(const Scene& scene, const Layout& layout, const PlanOptions& options, const PlanData& data) {
     const std::vector<Transform> world = worldTransforms(scene, layout);
     const Bounds3 bounds = planBounds(scene, world);
@@ -218,11 +273,46 @@ Image renderPlan(const Scene& scene, const Layout& layout, const PlanOptions& op
     const int margin = std::max(40, options.margin);
     const int titleHeight = options.title.empty() ? 0 : 24;
     const bool hasMap = data.workPlane && !data.workPlane->values.empty();
-    const int legendWidth = hasMap ? 110 : 0;
+    const int legendWidth = hasMap ? 150 : 0;
     const Vec3 size = bounds.size();
     const int planW = int(std::ceil(size.x * s)), planH = int(std::ceil(size.y * s));
 
-    Image image(planW + 2 * margin + legendWidth, planH + 2 * margin + titleHeight + 10, kWhite);
+    // One row per work plane (an illuminance sampler with points) that has results.
+    struct TableRow {
+        std::string text;
+        bool met = false;
+    };
+    std::vector<TableRow> tableRows;
+    size_t nameWidth = 10;
+    for (const LightSamplerSpec& spec : scene.samplers) nameWidth = std::max(nameWidth, spec.name.size());
+    char tableHeader[200];
+    std::snprintf(tableHeader, sizeof tableHeader, "%-*s %8s %8s %8s %6s  target (lx)", int(nameWidth), "work plane", "Em",
+                  "Emin", "Emax", "U0");
+    if (data.samplers)
+        for (size_t k = 0; k < scene.samplers.size() && k < data.samplers->size(); ++k) {
+            const LightSamplerSpec& spec = scene.samplers[k];
+            if (!spec.type->hasPointStatistics() || std::string_view(spec.type->unit()) != "lx") continue;
+            const SamplerResult& r = (*data.samplers)[k];
+            const PointStatistics st = pointStatistics(r.points, r.pointErrors);
+            std::string target = formatValue(spec.targetMin);
+            if (std::isfinite(spec.targetMax)) {
+                target += '-';
+                target += formatValue(spec.targetMax);
+            } else {
+                target += '+';
+            }
+            char row[300];
+            std::snprintf(row, sizeof row, "%-*s %8s %8s %8s %6.2f  %s", int(nameWidth), spec.name.c_str(),
+                          formatValue(st.mean.value).c_str(), formatValue(st.min.value).c_str(),
+                          formatValue(st.max.value).c_str(), st.u0.value, target.c_str());
+            tableRows.push_back({row, allMet(lightingTerms(spec, r))});
+        }
+    const int tableHeight = tableRows.empty() ? 0 : int(tableRows.size() + 1) * (kLineAdvance + 3) + 8;
+    const int tableWidth = tableRows.empty() ? 0 : textWidth(tableRows.front().text) + 2 * margin;
+
+    Image image(std::max(planW + 2 * margin + legendWidth, tableWidth), planH + 2 * margin + titleHeight + 10 + tableHeight,
+                kWhite);
+    const int planTop = titleHeight;
     PlanMapping map{bounds.lo.x, bounds.hi.y, s, double(margin), double(margin + titleHeight)};
     // The plan area's top-left and bottom-right corners in pixels.
     const Vec2 roomLo = map(bounds.lo.x, bounds.hi.y), roomHi = map(bounds.hi.x, bounds.lo.y);
@@ -234,12 +324,13 @@ Image renderPlan(const Scene& scene, const Layout& layout, const PlanOptions& op
     if (room) image.fillRect(roomLo.x - wall, roomLo.y - wall, roomHi.x + wall, roomHi.y + wall, kWallColor);
     image.fillRect(roomLo.x, roomLo.y, roomHi.x, roomHi.y, kFloorColor);
 
-    // Work-plane illuminance, clipped to the plan area.
+    // Work-plane illuminance, clipped to the plan area; cells inside furniture hatched.
     FalseColor falseColor;
+    std::vector<char> free;
     if (hasMap) {
         const IlluminanceGrid& g = *data.workPlane;
-        falseColor = autoFalseColor(g.values, options.scale);
-        if (options.maxLux && *options.maxLux > 0) falseColor.maxValue = *options.maxLux;
+        falseColor = options.colors ? *options.colors : planFalseColor(scene, g.values);
+        free = freeCells(scene, layout, g);
         for (int j = 0; j < g.ny; ++j)
             for (int i = 0; i < g.nx; ++i) {
                 double x0 = std::max(bounds.lo.x, g.origin.x + i * g.cellSize);
@@ -248,8 +339,61 @@ Image renderPlan(const Scene& scene, const Layout& layout, const PlanOptions& op
                 double y1 = std::min(bounds.hi.y, g.origin.y + (j + 1) * g.cellSize);
                 if (x1 <= x0 || y1 <= y0) continue;
                 Vec2 a = map(x0, y1), b = map(x1, y0);
-                image.fillRect(a.x, a.y, b.x, b.y, falseColor.color(g.at(i, j)));
+                if (free[size_t(j) * size_t(g.nx) + size_t(i)]) {
+                    image.fillRect(a.x, a.y, b.x, b.y, falseColor.color(g.at(i, j)));
+                    continue;
+                }
+                image.fillRect(a.x, a.y, b.x, b.y, kHatchColor);
+                for (int y = int(std::ceil(a.y - 0.5)); y < int(std::ceil(b.y - 0.5)); ++y)
+                    for (int x = int(std::ceil(a.x - 0.5)); x < int(std::ceil(b.x - 0.5)); ++x)
+                        if ((x + y) % 6 == 0 && x >= 0 && y >= 0 && x < image.width() && y < image.height())
+                            image.at(x, y) = kStaticColor;
             }
+    }
+
+    // Isolux contours at the legend's ticks (the target band's ends bolder), each
+    // labelled once where a label fits.
+    struct ContourLabel {
+        Vec2 at;
+        std::string text;
+    };
+    std::vector<ContourLabel> contourLabels;
+    if (hasMap && options.contours) {
+        const IlluminanceGrid& g = *data.workPlane;
+        auto toPixels = [&](Vec2 p) {
+            return map(g.origin.x + (p.x + 0.5) * g.cellSize, g.origin.y + (p.y + 0.5) * g.cellSize);
+        };
+        // Contours of the map smoothed by a 3 x 3 binomial filter over free cells, so that
+        // the lines follow the light and not the per-cell noise of a quick grid.
+        std::vector<double> smooth(g.values.size(), 0.0);
+        for (int j = 0; j < g.ny; ++j)
+            for (int i = 0; i < g.nx; ++i) {
+                double sum = 0, weight = 0;
+                for (int dj = -1; dj <= 1; ++dj)
+                    for (int di = -1; di <= 1; ++di) {
+                        int a = i + di, b = j + dj;
+                        if (a < 0 || b < 0 || a >= g.nx || b >= g.ny || !free[size_t(b) * size_t(g.nx) + size_t(a)]) continue;
+                        double w = (di ? 1 : 2) * (dj ? 1 : 2);
+                        sum += w * g.at(a, b), weight += w;
+                    }
+                smooth[size_t(j) * size_t(g.nx) + size_t(i)] = weight > 0 ? sum / weight : g.at(i, j);
+            }
+        std::vector<double> levels = legendTicks(falseColor);
+        if (falseColor.band) levels.insert(levels.end(), falseColor.band->begin(), falseColor.band->end());
+        std::sort(levels.begin(), levels.end());
+        levels.erase(std::unique(levels.begin(), levels.end(), [](double a, double b) { return std::abs(a - b) <= 1e-9 * b; }),
+                     levels.end());
+        for (double level : levels) {
+            if (!(level > falseColor.minValue()) || !(level < falseColor.maxValue)) continue;
+            std::vector<ContourSegment> segments = isolines(smooth, g.nx, g.ny, level, free);
+            if (segments.empty()) continue;
+            const bool bandEdge = falseColor.band && (std::abs(level - (*falseColor.band)[0]) <= 1e-9 * level ||
+                                                     std::abs(level - (*falseColor.band)[1]) <= 1e-9 * level);
+            for (const ContourSegment& seg : segments)
+                image.drawLine(toPixels(seg.a), toPixels(seg.b), kContourColor, bandEdge ? 2 : 1, bandEdge ? 0.9 : 0.6);
+            const ContourSegment& mid = segments[segments.size() / 2];
+            contourLabels.push_back({(toPixels(mid.a) + toPixels(mid.b)) * 0.5 - Vec2(0, 3), formatValue(level)});
+        }
     }
 
     // Openings: glazed ones light blue across the wall band, open ones a gap.
@@ -365,23 +509,41 @@ Image renderPlan(const Scene& scene, const Layout& layout, const PlanOptions& op
         if (options.samplerLabels) samplerLabels.push_back({c + Vec2(0, 8), text}), samplerColors.push_back(color);
     }
 
-    // Labels last, so nothing covers them: sampler results always, names where they fit.
+    // The legend right of the plan, the work plane's statistics under it.
     LabelPlacer labels(image);
+    if (hasMap) {
+        const IlluminanceGrid& g = *data.workPlane;
+        int lx = int(roomHi.x + wall + 62), ly = int(roomLo.y + 30);
+        int lh = std::min(300, std::max(60, int(roomHi.y - roomLo.y) - 110));
+        char text[160];
+        std::snprintf(text, sizeof text, "lx at %.2g m", g.height - bounds.lo.z);
+        drawLegend(image, falseColor, lx, ly, 16, lh, text);
+        const PointStatistics st = workPlaneStatistics(g, free);
+        std::snprintf(text, sizeof text, "work plane\nEm   %s lx\nEmin %s lx\nEmax %s lx\nU0   %.2f", formatValue(st.mean.value).c_str(),
+                      formatValue(st.min.value).c_str(), formatValue(st.max.value).c_str(), st.u0.value);
+        const double sx = lx - 50, sy = ly + lh + 16;
+        image.drawText(sx, sy, text, kBlack, 1, TextAlign::Left);
+        labels.reserve(lx - 50, ly - 14, image.width(), sy + textHeight(text) + 2);
+    }
+
+    // Labels last, so nothing covers them: sampler results always, names and contour
+    // values where they fit.
     for (size_t i = 0; i < samplerLabels.size(); ++i)
         labels.place(samplerLabels[i].at, samplerLabels[i].text, darker(samplerColors[i], 0.7), 0.85, true);
     for (const Label& l : entityLabels) labels.place(l.at, l.text, kBlack, 0.7, false);
     for (const Label& l : staticLabels) labels.place(l.at, l.text, darker(kStaticColor, 0.4), 0.5, false);
+    for (const ContourLabel& l : contourLabels) labels.place(l.at, l.text, kContourColor, 0.6, false);
 
     // Scale bar under the plan, north arrow in the top-right margin.
     drawScaleBar(image, map, {roomLo.x, roomHi.y + wall + 12}, size.x);
     drawNorthArrow(image, {roomHi.x + margin / 2.0, roomLo.y - margin / 2.0 + 6}, scene.site.northDeg);
 
-    if (hasMap) {
-        int lx = int(roomHi.x + wall + 28), ly = int(roomLo.y + 30);
-        int lh = std::min(300, std::max(60, int(roomHi.y - roomLo.y) - 30));
-        char unit[48];
-        std::snprintf(unit, sizeof unit, "lx at %.2g m", data.workPlane->height - bounds.lo.z);
-        drawLegend(image, falseColor, lx, ly, 16, lh, unit);
+    // The work planes' table under the plan.
+    double rowY = planTop + planH + 2 * margin + 4;
+    if (!tableRows.empty()) image.drawText(margin, rowY, tableHeader, kBlack, 1, TextAlign::Left);
+    for (const TableRow& row : tableRows) {
+        rowY += kLineAdvance + 3;
+        image.drawText(margin, rowY, row.text, row.met ? darker(kPassColor, 0.8) : darker(kFailColor, 0.8), 1, TextAlign::Left);
     }
     return image;
 }

@@ -1,6 +1,7 @@
 // The plan view: the room from above with walls, openings, luminaires, furniture
 // footprints and fronts, the light samplers coloured by whether they meet their
-// targets, and a false-colour map of work-plane illuminance underneath.
+// targets, and a false-colour map of work-plane illuminance underneath with isolux
+// contours, a legend centred on the targets and Em, Emin, Emax and U0.
 #pragma once
 
 #include <cstdint>
@@ -8,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include <luxplan/core/point_statistics.h>
 #include <luxplan/lightsamplers/light_samplers.h>
 #include <luxplan/output/false_color.h>
 #include <luxplan/output/image.h>
@@ -40,14 +42,28 @@ struct IlluminanceGrid {
 IlluminanceGrid measureWorkPlane(const PathTracer& tracer, const Bounds3& room, double height = 0.8,
                                  double cellSize = 0.25, int paths = 64, uint64_t seed = 1);
 
+// Which cells of `grid` are free floor: 1 unless the cell's centre is inside a part of
+// furniture (where the layout puts it) or inside fixed geometry. Those cells read
+// about 0 lx and are no part of a work plane, so the plan hatches them and leaves them
+// out of its statistics and contours.
+std::vector<char> freeCells(const Scene& scene, const Layout& layout, const IlluminanceGrid& grid);
+
+// Em, Emin, Emax and U0 over the free cells (all cells when `free` is empty).
+PointStatistics workPlaneStatistics(const IlluminanceGrid& grid, const std::vector<char>& free = {});
+
+// The plan's colour scale: targetFalseColor over the targets of the scene's
+// illuminance samplers that have point statistics (planar and volume: the lowest
+// minimum to the highest maximum), else a logarithmic autoFalseColor of `values`.
+FalseColor planFalseColor(const Scene& scene, const std::vector<double>& values);
+
 struct PlanOptions {
     double pixelsPerMetre = 80;
     int margin = 50;            // pixels around the room
     std::string title;          // drawn at the top when not empty
     bool entityLabels = true;
     bool samplerLabels = true;
-    ColorScale scale = ColorScale::Linear;
-    std::optional<double> maxLux;  // the false-colour maximum; default: autoFalseColor
+    bool contours = true;       // isolux lines at the legend's ticks
+    std::optional<FalseColor> colors;  // default: planFalseColor of the work plane
 };
 
 // What was measured for the layout (all optional).
@@ -57,9 +73,10 @@ struct PlanData {
 };
 
 // The plan at PlanOptions::pixelsPerMetre, +y up, with a scale bar, a north arrow
-// (Site::northDeg) and, when a work-plane grid is given, its legend on the right.
-// Samplers are green when their value is in [targetMin, targetMax], red otherwise, grey
-// when no results are given.
+// (Site::northDeg) and, when a work-plane grid is given, its isolux contours, its
+// legend and its Em, Emin, Emax and U0 on the right. Samplers are green when they meet
+// their targets, red otherwise, grey when no results are given; with results, a table
+// under the plan gives each work plane's (planar sampler's) Em, Emin, Emax and U0.
 Image renderPlan(const Scene& scene, const Layout& layout, const PlanOptions& options = {},
                  const PlanData& data = {});
 
