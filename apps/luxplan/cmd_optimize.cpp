@@ -13,6 +13,7 @@
 #include <unistd.h>
 
 #include "commands.h"
+#include "picture_progress.h"
 #include <luxplan/core/atomic_file.h>
 #include <luxplan/core/error.h>
 #include <luxplan/daylight/daylight.h>
@@ -198,7 +199,11 @@ int runOptimize(const OptimizeArgs& args) {
         interrupted.store(false);
         pictures.cancel = &interrupted;
         if (args.spp > 0) pictures.renderSamplesPerPixel = args.spp;
-        RunOutputs outputs = writeRunOutputs(args.out, scene, start, result.best, &result, daylight ? &*daylight : nullptr, pictures);
+        RunOutputs outputs;
+        {
+            PictureProgress progress(pictures);
+            outputs = writeRunOutputs(args.out, scene, start, result.best, &result, daylight ? &*daylight : nullptr, pictures);
+        }
         if (outputs.files.empty() && outputs.cancelled) {
             std::cout << "  pictures: stopped before the first was written\n";
         } else {

@@ -44,6 +44,9 @@ RunOutputs writeRunOutputs(const std::filesystem::path& folder, const Scene& sce
         lap = now;
     };
     auto wrote = [&](const std::filesystem::path& file) { out.files.push_back(file); };
+    auto begin = [&](const std::string& step) {
+        if (options.onStep) options.onStep(step);
+    };
     // A stop signal (options.cancel) skips every step not yet begun; what is written stays.
     auto stopped = [&] { return out.cancelled = out.cancelled || (options.cancel && options.cancel->load()); };
     auto finish = [&] {
@@ -68,18 +71,25 @@ RunOutputs writeRunOutputs(const std::filesystem::path& folder, const Scene& sce
 
     // The final layout: samplers, work plane, view, glTF.
     PlanData finalData, initialData;
-    if (fromResult) out.samplers = result->bestEvaluation.samplers.samplers;
-    else if (!scene.samplers.empty() && (options.plan || compare || options.html))
+    if (fromResult) {
+        out.samplers = result->bestEvaluation.samplers.samplers;
+    } else if (!scene.samplers.empty() && (options.plan || compare || options.html)) {
+        begin("measuring " + std::to_string(scene.samplers.size()) + " samplers at " + std::to_string(options.samplerPaths) +
+              " paths per point");
         out.samplers = measureSamplers(tracer, measure).samplers;
+    }
     if (!scene.samplers.empty()) finalData.samplers = out.samplers;
     if (!fromResult && !scene.samplers.empty()) timed("samplers (" + options.finalLabel + ")");
     if (stopped()) return finish();
     if (grids) {
+        begin("measuring the work plane");
         finalData.workPlane = workPlane();
         timed("work plane (" + options.finalLabel + ")");
     }
     if (stopped()) return finish();
     if (options.render) {
+        begin("rendering " + std::to_string(options.renderWidth) + " x " + std::to_string(options.renderHeight) + " px at " +
+              std::to_string(options.renderSamplesPerPixel) + " samples per pixel");
         RenderOptions ro;
         ro.width = options.renderWidth;
         ro.height = options.renderHeight;
@@ -87,15 +97,20 @@ RunOutputs writeRunOutputs(const std::filesystem::path& folder, const Scene& sce
         ro.denoise = options.renderDenoise;
         ro.seed = options.seed;
         ro.cancel = options.cancel;
-        Image render = renderPerspective(tracer, options.camera.value_or(defaultCamera(scene)), ro);
+        ro.rowsDone = options.renderRowsDone;
+        LuminanceImage view = renderView(tracer, options.camera.value_or(defaultCamera(scene)), ro);
         if (stopped()) return finish();  // rows after the signal were not traced
-        writePng(render, folder / "render.png");
+        writePng(toneMap(view, autoExposure(view)), folder / "render.png");
         wrote(folder / "render.png");
+        if (options.luminanceView) {
+            writePng(falseColorView(view, luminanceFalseColor(view)), folder / "render_luminance.png");
+            wrote(folder / "render_luminance.png");
+        }
         timed("render.png");
     }
     if (stopped()) return finish();
     if (options.glb) {
-        writeGlb(folder / "scene.glb", scene, finalLayout);
+        writeGlb(folder / "scene.glb", scene, finalLayout, daylight);
         wrote(folder / "scene.glb");
         timed("scene.glb");
     }
@@ -103,6 +118,7 @@ RunOutputs writeRunOutputs(const std::filesystem::path& folder, const Scene& sce
     // The initial layout, for the comparison.
     if (stopped()) return finish();
     if (compare) {
+        begin("measuring the " + options.initialLabel + " layout for the comparison");
         rt.setLayout(initialLayout);
         tracer.updateLayout();
         if (!scene.samplers.empty()) initialData.samplers = measureSamplers(tracer, measure).samplers;

@@ -40,10 +40,11 @@ footer { margin-top: 3em; color: #888; font-size: 0.85em; }
 
 // Captions of kReportImages, in its order.
 constexpr const char* kImageCaptions[] = {
-    "Plan: work-plane illuminance in false colour; light samplers green where they meet their target, red where "
-    "they miss it.",
+    "Plan: work-plane illuminance in false colour on a scale centred on the targets, isolux lines, Em, Emin, Emax "
+    "and U0; light samplers green where they meet their targets, red where they miss them.",
     "The start layout and the shown layout side by side (same colour scale).",
-    "Path-traced view (luminance, tone mapped).",
+    "Path-traced view (luminance tone mapped, colour from what each pixel sees).",
+    "The same view in false colour of luminance (cd/m2, logarithmic).",
     "Convergence: current cost (grey) and best cost so far (blue) per iteration."};
 static_assert(std::size(kImageCaptions) == std::size(kReportImages));
 

@@ -34,7 +34,7 @@ struct ReportData {
 
 // The pictures and files the page refers to, relative to its folder, in page order;
 // the page links each one only if it exists in the folder when the page is written.
-inline constexpr const char* kReportImages[] = {"plan.png", "plan_initial_vs_optimized.png", "render.png",
+inline constexpr const char* kReportImages[] = {"plan.png", "plan_initial_vs_optimized.png", "render.png", "render_luminance.png",
                                                "convergence.png"};
 inline constexpr const char* kReportFiles[] = {"scene.glb", "layout.json", "report.json", "trace.csv"};
 

@@ -84,6 +84,7 @@ public:
 
     const EmbreeScene& rayTracer() const { return rt_; }
     const EmitterSet& emitters() const { return emitters_; }
+    const DaylightEnvironment* daylight() const { return daylight_; }  // null at night
 
 private:
     // Transmittance along p + t w up to tMax (the distance to the sampled point on
