@@ -5,11 +5,13 @@
 #include <chrono>
 
 #include <luxplan/constraints/geometry_cost.h>
+#include <luxplan/lightsamplers/light_budget.h>
 #include <luxplan/core/error.h>
 #include <luxplan/output/gltf_export.h>
 #include <luxplan/output/plan.h>
 #include <luxplan/output/plot.h>
 #include <luxplan/output/render.h>
+#include <luxplan/output/report_viewer.h>
 #include <luxplan/rt/embree_scene.h>
 
 namespace luxplan {
@@ -80,6 +82,12 @@ RunOutputs writeRunOutputs(const std::filesystem::path& folder, const Scene& sce
     }
     if (!scene.samplers.empty()) finalData.samplers = out.samplers;
     if (!fromResult && !scene.samplers.empty()) timed("samplers (" + options.finalLabel + ")");
+    std::vector<SamplerBudget> budgets;
+    if (options.html && !scene.samplers.empty() && options.budgetPaths > 0 && !stopped()) {
+        begin("tracing the samplers' light budgets");
+        budgets = measureLightBudgets(tracer, options.budgetPaths, options.seed);
+        timed("light budgets");
+    }
     if (stopped()) return finish();
     if (grids) {
         begin("measuring the work plane");
@@ -168,6 +176,13 @@ RunOutputs writeRunOutputs(const std::filesystem::path& folder, const Scene& sce
             data.geometry = geometry.evaluate(worldTransforms(scene, finalLayout), true);
         }
         data.timings = out.timings;
+        data.budgets = budgets;
+        if (options.viewer) {
+            if (!std::filesystem::is_regular_file(folder / "scene.glb")) data.viewerNote = "scene.glb was not written.";
+            else data.viewerNote = copyViewerScripts(folder);
+            if (!data.viewerNote.empty() && options.onStep) options.onStep("no 3D view in report.html: " + data.viewerNote);
+            else if (data.viewerNote.empty()) for (const char* script : kViewerScripts) wrote(folder / script);
+        }
         double total = std::chrono::duration<double>(Clock::now() - start).count();
         data.timings.push_back({"pictures and scene.glb, total", total});
         writeReportHtml(folder, scene, result, data);

@@ -28,6 +28,8 @@ struct OutputOptions {
     bool convergence = true;  // convergence.png (only with an optimizer result)
     bool glb = true;          // scene.glb
     bool html = true;         // report.html (written last; links what exists)
+    bool viewer = true;       // report.html's 3D view: three.js copied into viewer/ (report_viewer.h)
+    int budgetPaths = 32;     // per sampler item, for report.html's light budgets; 0: none
     int renderWidth = 660, renderHeight = 440, renderSamplesPerPixel = 8;
     std::optional<Camera> camera;   // render.png's view; unset: defaultCamera(scene)
     bool renderDenoise = true;      // edge-avoiding filter on render.png (denoise.h)
