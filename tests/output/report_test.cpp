@@ -151,5 +151,20 @@ TEST(ReportViewer, MissingPackageIsSaidAndTheSectionLeftOut) {
     EXPECT_NE(html.find("<script src=\"viewer/three.min.js\"></script>"), std::string::npos);
 }
 
+TEST(ReportHtml, HourByHourTableColoursEachHour) {
+    Scene scene = makeScene();  // 300-500 lx, and at least 100 lx
+    ReportData data;
+    data.hours.push_back({"2026-06-21T09:00+01:00", {SamplerResult{}, SamplerResult{}}});
+    data.hours[0].samplers[0].value = 420, data.hours[0].samplers[1].value = 50;
+    test::TempDir dir;
+    const std::string html = reportHtml(dir.path(), scene, nullptr, data);
+    EXPECT_NE(html.find("<h2>The daylight hour by hour</h2>"), std::string::npos);
+    EXPECT_NE(html.find("<td>2026-06-21T09:00+01:00</td><td class=\"num met\">420.0</td><td class=\"num missed\">50.0</td>"
+                        "<td class=\"num\">1 of 2</td>"),
+              std::string::npos)
+        << html;
+    EXPECT_EQ(reportHtml(dir.path(), scene, nullptr, {}).find("hour by hour"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace luxplan

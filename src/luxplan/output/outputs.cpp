@@ -7,6 +7,7 @@
 #include <luxplan/constraints/geometry_cost.h>
 #include <luxplan/lightsamplers/light_budget.h>
 #include <luxplan/core/error.h>
+#include <luxplan/daylight/daylight.h>
 #include <luxplan/output/gltf_export.h>
 #include <luxplan/output/plan.h>
 #include <luxplan/output/plot.h>
@@ -87,6 +88,24 @@ RunOutputs writeRunOutputs(const std::filesystem::path& folder, const Scene& sce
         begin("tracing the samplers' light budgets");
         budgets = measureLightBudgets(tracer, options.budgetPaths, options.seed);
         timed("light budgets");
+    }
+    std::vector<ReportData::Hour> hours;
+    if (options.html && !scene.samplers.empty() && options.hourlyPaths > 0 && scene.daylight && scene.daylight->from &&
+        scene.daylight->to && !stopped()) {
+        begin("measuring the daylight period hour by hour");
+        MeasureOptions hourly = measure;
+        hourly.pathsPerPoint = options.hourlyPaths;
+        const DateTime from = *scene.daylight->from, to = *scene.daylight->to;
+        const double span = (to.julianDayUT() - from.julianDayUT()) * 24 * 60;
+        for (double minutes = 0; minutes <= span + 1e-6 && hours.size() < 48 && !stopped(); minutes += 60) {
+            DaylightParams instant = *scene.daylight;
+            instant.from = from.plusMinutes(minutes);
+            instant.to.reset();
+            const DaylightEnvironment environment = buildDaylight(instant, scene.site);
+            PathTracer at(rt, &environment);
+            hours.push_back({instant.from->str(), measureSamplers(at, hourly).samplers});
+        }
+        timed("hour by hour");
     }
     if (stopped()) return finish();
     if (grids) {
@@ -177,6 +196,7 @@ RunOutputs writeRunOutputs(const std::filesystem::path& folder, const Scene& sce
         }
         data.timings = out.timings;
         data.budgets = budgets;
+        data.hours = hours;
         if (options.viewer) {
             if (!std::filesystem::is_regular_file(folder / "scene.glb")) data.viewerNote = "scene.glb was not written.";
             else data.viewerNote = copyViewerScripts(folder);

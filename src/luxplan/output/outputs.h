@@ -30,6 +30,9 @@ struct OutputOptions {
     bool html = true;         // report.html (written last; links what exists)
     bool viewer = true;       // report.html's 3D view: three.js copied into viewer/ (report_viewer.h)
     int budgetPaths = 32;     // per sampler item, for report.html's light budgets; 0: none
+    // report.html's daylight hour by hour: each whole hour of a daylight period (at
+    // most 48), its samplers measured at hourlyPaths per point; 0: none.
+    int hourlyPaths = 64;
     int renderWidth = 660, renderHeight = 440, renderSamplesPerPixel = 8;
     std::optional<Camera> camera;   // render.png's view; unset: defaultCamera(scene)
     bool renderDenoise = true;      // edge-avoiding filter on render.png (denoise.h)

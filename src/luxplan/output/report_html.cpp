@@ -276,6 +276,32 @@ void samplerTable(std::ostringstream& out, const Scene& scene, const std::vector
     }
 }
 
+// The period hour by hour: one row per instant, one column per sampler, each value
+// green when it meets the sampler's goals at that hour, red when not.
+void hourTable(std::ostringstream& out, const Scene& scene, const std::vector<ReportData::Hour>& hours) {
+    if (hours.empty() || scene.samplers.empty()) return;
+    out << "<h2>The daylight hour by hour</h2>\n<p class=\"muted\">Each instant measured alone (as <code>measure --at</code>), "
+           "for the layout shown; the tables above average the whole period.</p>\n<table>\n<tr><th>time</th>";
+    for (const LightSamplerSpec& s : scene.samplers)
+        out << "<th>" << escapeHtml(s.name) << " (" << escapeHtml(s.type->unit()) << ")</th>";
+    out << "<th>met</th></tr>\n";
+    for (const ReportData::Hour& h : hours) {
+        out << "<tr>" << cell(escapeHtml(h.at));
+        int met = 0;
+        for (size_t k = 0; k < scene.samplers.size(); ++k) {
+            if (k >= h.samplers.size()) {
+                out << cell("&ndash;");
+                continue;
+            }
+            const bool ok = allMet(lightingTerms(scene.samplers[k], h.samplers[k]));
+            met += ok;
+            out << "<td class=\"num " << (ok ? "met" : "missed") << "\">" << number(h.samplers[k].value, 1) << "</td>";
+        }
+        out << "<td class=\"num\">" << met << " of " << scene.samplers.size() << "</td></tr>\n";
+    }
+    out << "</table>\n";
+}
+
 void constraintTables(std::ostringstream& out, const Scene& scene, const GeometryResult& g) {
     std::ostringstream rel, pairs;
     int relCount = 0, pairCount = 0;
@@ -403,6 +429,7 @@ std::string reportHtml(const std::filesystem::path& folder, const Scene& scene, 
     if (std::string viewer = viewerSection(folder); !viewer.empty()) out << viewer;
     else if (!data.viewerNote.empty()) out << "<h2>The room in 3D</h2>\n<p class=\"muted\">" << escapeHtml(data.viewerNote) << "</p>\n";
     samplerTable(out, scene, data.samplers, result, data.budgets);
+    hourTable(out, scene, data.hours);
     if (data.geometry) constraintTables(out, scene, *data.geometry);
     else if (result) constraintTables(out, scene, result->bestGeometry);
     if (result) moveTable(out, *result);

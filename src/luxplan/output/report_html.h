@@ -36,6 +36,13 @@ struct ReportData {
     std::vector<SamplerBudget> budgets;
     // Why the page has no 3D view, when it has none (e.g. the viewer's files are missing).
     std::string viewerNote;
+    // The daylight period hour by hour: each instant's sampler measurements (Scene::samplers
+    // order) for the layout shown; empty: not shown.
+    struct Hour {
+        std::string at;  // ISO 8601
+        std::vector<SamplerResult> samplers;
+    };
+    std::vector<Hour> hours;
 };
 
 // What a sampler that misses its target could do, from where its light comes from:
