@@ -3,6 +3,8 @@
 #include <luxplan/constraints/penalty.h>
 #include <luxplan/core/rng.h>
 
+#include <cmath>
+
 namespace luxplan {
 namespace {
 
@@ -19,7 +21,18 @@ double PathTracedLighting::evaluate(const Layout& /*layout*/, const std::vector<
         fresh.seed = hashValues({options_.seed, kFreshTag, ++freshDraws_});
         return measure(world, fresh, nullptr, out);
     }
-    return measure(world, options_, incremental_ ? &cache_ : nullptr, out);
+    if (!threshold_ || !options_.adaptive) return measure(world, options_, incremental_ ? &cache_ : nullptr, out);
+    MeasureOptions decide = options_;
+    const double threshold = *threshold_, z = decisionZ_;
+    bool early = false;
+    decide.decided = [&](const std::vector<SamplerResult>& sofar) {
+        const double L = lightingCostOfResults(scene_, sofar), error = lightingCostError(scene_, sofar);
+        early = std::abs(L - threshold) > z * error;
+        return early;
+    };
+    const double L = measure(world, decide, incremental_ ? &cache_ : nullptr, out);
+    decidedEarly_ += early;
+    return L;
 }
 
 double PathTracedLighting::measureIndependently(const Layout& /*layout*/, const std::vector<Transform>& world,
