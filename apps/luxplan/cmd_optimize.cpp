@@ -63,7 +63,7 @@ struct OptimizeArgs {
     int iterations = -1, paths = 0, spp = 0, inner = -1;
     int64_t seed = -1;
     bool flat = false, quiet = false, noPictures = false, fixedPaths = false, fullEvaluation = false,
-         freshNoise = false, noiseBlind = false, nested = false, cycle = false, singleTest = false, noSequential = false;
+         freshNoise = false, noiseBlind = false, nested = false, cycle = false, singleTest = false;
     std::string sampling = "sobol";
 };
 
@@ -115,7 +115,6 @@ int runOptimize(const OptimizeArgs& args) {
     if (args.flat) options.hierarchy = Hierarchy::Flat;
     if (args.noiseBlind) options.noiseAware = false;
     if (args.singleTest) options.delayedAcceptance = false;
-    if (args.noSequential) options.sequentialTest = false;
     if (args.inner >= 0) options.innerIterations = args.inner;
     if (args.nested) options.focusInner = true;
     if (args.cycle) options.focusInner = false;
@@ -251,8 +250,6 @@ void registerOptimizeCommand(CLI::App& app, int& threads) {
     cmd->add_flag("--single-test", args->singleTest,
                   "One Metropolis test after lighting every proposal, instead of the rules' change first and the light's "
                   "only for proposals that pass (delayed acceptance)");
-    cmd->add_flag("--no-sequential-test", args->noSequential,
-                  "Measure every lit proposal until each sampler is settled, instead of until the acceptance decision is clear");
     cmd->add_option("--inner", args->inner,
                     "Object-level proposals per group-level one (default: optimizer.inner_iterations; 0: by degrees of freedom)")
         ->check(CLI::Range(0, 1000));

@@ -80,7 +80,7 @@ test::SceneBuilder noisyChainScene() {
 struct ChainSetup {
     double temperature = 0.2;
     int samples = 20000;
-    int thin = 50;  // steps between samples: far enough apart that the chi-square test's independence holds
+    int thin = 25;
     Hierarchy hierarchy = Hierarchy::Hierarchical;
     bool hastings = true;
     uint64_t seed = 1;

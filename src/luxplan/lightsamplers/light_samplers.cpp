@@ -211,25 +211,9 @@ MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& op
         return e;
     };
 
-    // Sampler k's measurement from what its work items traced so far.
-    auto measurementOf = [&](size_t k) {
-        SamplerResult r;
-        if (firstWork[k + 1] == firstWork[k]) return r;
-        const ItemEstimates e = estimates(k);
-        for (int i = 0; i < e.items(); ++i) {
-            Estimate x = e.of(i);
-            r.points.push_back(x.value);
-            r.pointErrors.push_back(x.standardError);
-        }
-        Estimate value = placed[k]->combine(e);
-        r.value = value.value;
-        r.standardError = value.standardError;
-        return r;
-    };
-
     // Rounds of options.batchPaths paths per point (one round of all when not
     // adaptive); a sampler leaves once its value is settled, and an item once its
-    // sampler no longer needs it; all stop once options.decided says so.
+    // sampler no longer needs it.
     std::vector<int> traced(work.size(), 0);
     std::vector<char> active(samplers, 1), needed(work.size(), 1);
     for (int from = 0; from < paths;) {
@@ -253,11 +237,6 @@ MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& op
             const std::vector<char> keep = placed[k]->stillNeeded(e, options.confidenceZ);
             for (size_t i = 0; i < keep.size(); ++i) needed[firstWork[k] + i] = needed[firstWork[k] + i] && keep[i];
         }
-        if (options.decided) {
-            std::vector<SamplerResult> sofar(samplers);
-            for (size_t k = 0; k < samplers; ++k) sofar[k] = measurementOf(k);
-            if (options.decided(sofar)) break;
-        }
         from = to;
     }
 
@@ -274,8 +253,16 @@ MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& op
             result.paths += uint64_t(traced[index]);
         }
         result.droppedNonFinite += r.droppedNonFinite;
-        const SamplerResult m = measurementOf(k);
-        r.points = m.points, r.pointErrors = m.pointErrors, r.value = m.value, r.standardError = m.standardError;
+        if (firstWork[k + 1] == firstWork[k]) continue;
+        const ItemEstimates e = estimates(k);
+        for (int i = 0; i < e.items(); ++i) {
+            Estimate x = e.of(i);
+            r.points.push_back(x.value);
+            r.pointErrors.push_back(x.standardError);
+        }
+        Estimate value = placed[k]->combine(e);
+        r.value = value.value;
+        r.standardError = value.standardError;
     }
     return result;
 }

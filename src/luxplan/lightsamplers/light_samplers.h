@@ -5,7 +5,6 @@
 #pragma once
 
 #include <cstdint>
-#include <functional>
 #include <memory>
 #include <vector>
 
@@ -36,11 +35,6 @@ struct MeasureOptions {
     // scrambled sequence (one per fold for types that compare folds,
     // PlacedSampler::independentFolds). Off: PCG only.
     bool lowDiscrepancy = true;
-    // Adaptive only: after each round, every sampler's measurement so far (Scene::samplers
-    // order; a sampler that left early holds its final one); returning true ends the
-    // measurement there (a decision the caller needs is already clear: the optimizer's
-    // sequential test). Unset: rounds go on until every sampler is settled.
-    std::function<bool(const std::vector<SamplerResult>&)> decided;
 };
 
 struct MeasureResult {

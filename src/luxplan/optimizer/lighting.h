@@ -4,7 +4,6 @@
 #pragma once
 
 #include <cstdint>
-#include <optional>
 #include <vector>
 
 #include <luxplan/lightsamplers/sampler_result.h>
@@ -44,14 +43,6 @@ public:
     // estimates are a fixed function of the layout). If they do, the chain measures
     // its current layout again before each test, as the penalty method needs.
     virtual bool drawsAnew() const { return false; }
-    // The optimizer's sequential test: the next evaluate() only has to tell whether L
-    // is below `threshold`, and may stop measuring once L's confidence interval (z
-    // standard errors) lies on one side of it; nullopt: measure fully. An evaluator
-    // that measures exactly ignores it.
-    virtual void setDecisionThreshold(std::optional<double> threshold, double z) {
-        (void)threshold;
-        (void)z;
-    }
     // The chain accepted (commit) or refused (revert) the layout last evaluated: an
     // evaluator that keeps work between layouts (the path cache) keeps it for the
     // accepted layout only. Evaluations measure against the last committed layout.

@@ -358,19 +358,8 @@ void Optimizer::step() {
                 ++stats.screened;
             } else if (!e.rejected) {
                 if (lighting_ && lighting_->drawsAnew() && currentEval_.lightingEvaluated) refreshCurrent();
-                const double w = scene_->objective.lightingWeight;
-                if (options_.sequentialTest && lighting_ && !lighting_->drawsAnew() && currentEval_.lightingEvaluated && w > 0) {
-                    // The sequential test: accept iff L' <= L - T log(u) / w, u drawn first.
-                    const double u = 1 - rng.uniform();  // in (0, 1]
-                    const double threshold = currentEval_.lighting - t * std::log(u) / w;
-                    lighting_->setDecisionThreshold(threshold, options_.sequentialZ);
-                    addLighting(e, proposed, world);
-                    lighting_->setDecisionThreshold(std::nullopt, options_.sequentialZ);
-                    accept = e.lighting <= threshold;
-                } else {
-                    addLighting(e, proposed, world);
-                    accept = lightingStage(e, t, rng);
-                }
+                addLighting(e, proposed, world);
+                accept = lightingStage(e, t, rng);
             }
         } else {
             if (lighting_ && lighting_->drawsAnew() && currentEval_.lightingEvaluated) refreshCurrent();

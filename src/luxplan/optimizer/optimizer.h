@@ -83,15 +83,6 @@ struct OptimizerOptions {
     // detailed balance, and a proposal that worsens the layout's rules beyond the
     // temperature costs no light. Off: one test on dC after lighting every proposal.
     bool delayedAcceptance = true;
-    // With delayed acceptance, common random numbers and an adaptive evaluator: the
-    // second stage's uniform number is drawn first, which fixes the lighting cost the
-    // proposal must stay under, L_current - T log(u) / w; the evaluator may stop tracing
-    // once L's interval (MeasureOptions::confidenceZ standard errors) is on one side of
-    // it (a sequential test: paths are spent until the decision is clear, not until
-    // every sampler is). The decision is then wrong with probability about Phi(-z) per
-    // step, an approximation of the search only: the result is measured independently.
-    bool sequentialTest = true;
-    double sequentialZ = 3;
     // How many distinct layouts the run keeps for its result, and what distinct means
     // (optimizer/candidates.h). At the end, each is measured again independently and
     // the best of those measurements is the result, measured once more for the report.

@@ -3,8 +3,6 @@
 #include <luxplan/constraints/penalty.h>
 #include <luxplan/core/rng.h>
 
-#include <cmath>
-
 namespace luxplan {
 namespace {
 
@@ -21,18 +19,7 @@ double PathTracedLighting::evaluate(const Layout& /*layout*/, const std::vector<
         fresh.seed = hashValues({options_.seed, kFreshTag, ++freshDraws_});
         return measure(world, fresh, nullptr, out);
     }
-    if (!threshold_ || !options_.adaptive) return measure(world, options_, incremental_ ? &cache_ : nullptr, out);
-    MeasureOptions decide = options_;
-    const double threshold = *threshold_, z = decisionZ_;
-    bool early = false;
-    decide.decided = [&](const std::vector<SamplerResult>& sofar) {
-        const double L = lightingCostOfResults(scene_, sofar), error = lightingCostError(scene_, sofar);
-        early = std::abs(L - threshold) > z * error;
-        return early;
-    };
-    const double L = measure(world, decide, incremental_ ? &cache_ : nullptr, out);
-    decidedEarly_ += early;
-    return L;
+    return measure(world, options_, incremental_ ? &cache_ : nullptr, out);
 }
 
 double PathTracedLighting::measureIndependently(const Layout& /*layout*/, const std::vector<Transform>& world,

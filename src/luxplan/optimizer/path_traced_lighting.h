@@ -31,14 +31,6 @@ public:
     // exact for the true costs, at twice the evaluations, none of them incremental.
     void setFreshNoise(bool on) { fresh_ = on; }
     bool drawsAnew() const override { return fresh_; }
-    // Adaptive measurements only (MeasureOptions::adaptive): rounds stop once L's
-    // interval is on one side of the threshold.
-    void setDecisionThreshold(std::optional<double> threshold, double z) override {
-        threshold_ = threshold;
-        decisionZ_ = z;
-    }
-    // Evaluations the sequential test ended early.
-    uint64_t decidedEarly() const { return decidedEarly_; }
 
     // The full measurement of the last evaluated layout (per-point values, errors).
     const MeasureResult& lastMeasurement() const { return last_; }
@@ -65,9 +57,6 @@ private:
     uint64_t evaluations_ = 0;
     RayStats rays_;
     uint64_t tracedPaths_ = 0, reusedPaths_ = 0;
-    std::optional<double> threshold_;
-    double decisionZ_ = 3;
-    uint64_t decidedEarly_ = 0;
 };
 
 }  // namespace luxplan
