@@ -202,6 +202,7 @@ int runOptimize(const OptimizeArgs& args) {
         if (args.spp > 0) pictures.renderSamplesPerPixel = args.spp;
         RunOutputs outputs;
         {
+            std::cout.flush();  // the summary before the pictures' progress on stderr, also in a log
             PictureProgress progress(pictures);
             outputs = writeRunOutputs(args.out, scene, start, result.best, &result, daylight ? &*daylight : nullptr, pictures);
         }

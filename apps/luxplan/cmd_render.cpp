@@ -113,6 +113,7 @@ void runPictures(const PictureArgs& args, bool report) {
     }
     RunOutputs outputs;
     {
+        std::cout.flush();
         PictureProgress progress(options);
         outputs = writeRunOutputs(args.out, scene, initial, layout, nullptr, daylight ? &*daylight : nullptr, options);
     }
