@@ -77,7 +77,15 @@ void worker(const Seeds& seeds, const Options& o, int w, const std::filesystem::
     for (uint64_t i = uint64_t(w); i < o.count; i += uint64_t(o.jobs)) {
         if (o.only >= 0 && i != uint64_t(o.only)) continue;
         if (o.seconds > 0 && std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > o.seconds) break;
-        Case c = makeCase(seeds, o.seed, i);
+        Case c;
+        try {
+            c = makeCase(seeds, o.seed, i);
+        } catch (const std::exception& e) {
+            // A mutation the harness could not make: its own bug, never the program's.
+            say("skip #" + std::to_string(i) + ": the harness could not make this input: " + e.what());
+            ++counts[{"skipped", "harness"}];
+            continue;
+        }
         std::error_code ec;
         std::filesystem::remove_all(dir, ec);
         writeCase(c, dir);
@@ -128,7 +136,8 @@ int fuzz(const Options& o) {
         std::ifstream in(root / ("counts-" + std::to_string(w)));
         std::string outcome, mutation;
         uint64_t n;
-        while (in >> outcome >> mutation >> n) byOutcome[outcome] += n, byMutation[mutation][outcome] += n, total += n;
+        while (in >> outcome >> mutation >> n)
+            byOutcome[outcome] += n, byMutation[mutation][outcome] += n, total += outcome == "skipped" ? 0 : n;
     }
     std::error_code ec;
     std::filesystem::remove_all(root, ec);

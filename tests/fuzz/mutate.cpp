@@ -61,6 +61,9 @@ std::vector<Node> filter(const Json& doc, const std::vector<Node>& all, const st
     return out;
 }
 
+// Strings the mutations set may hold invalid UTF-8: written replaced (U+FFFD).
+std::string dump(const Json& j, int indent = -1) { return j.dump(indent, ' ', false, Json::error_handler_t::replace); }
+
 const std::vector<std::string> kExtremeNumbers = {"0", "-0", "-1", "1e-300", "1e300", "-1e300", "1.7976931348623157e308", "1e6",
                                                   "2147483648", "4294967296", "-2147483649", "9223372036854775807",
                                                   "18446744073709551616", "1e20", "0.5", "3", "100000000", "-1e-320", "1e-9"};
@@ -149,7 +152,7 @@ std::string genericJson(Rng& rng, Json doc, std::string& mutation) {
             break;
         }
     }
-    return doc.dump(chance(rng, 0.5) ? 2 : -1);
+    return dump(doc, chance(rng, 0.5) ? 2 : -1);
 }
 
 // Byte-level damage to any text: the result may be valid or not.
@@ -215,14 +218,14 @@ Case sceneCase(const Seeds& seeds, Rng& rng) {
         (*entities)[0] = e;
         c.mutation = "json.children-deep";
         c.expect = depth > 32 ? Expect::Refuse : Expect::Either;
-        text = doc.dump();
+        text = dump(doc);
     } else if (r < 0.55) {
         const int depth = chance(rng, 0.5) ? 200 : 100000;
         const Node& n = pickOf(rng, all);
-        text = doc.dump();
+        text = dump(doc);
         if (n.ptr.empty()) return sceneCase(seeds, rng);
         doc[n.ptr] = nullptr;
-        text = doc.dump();
+        text = dump(doc);
         const size_t at = text.find("null");  // not necessarily n's, any is fine
         if (at == std::string::npos) return sceneCase(seeds, rng);
         text.replace(at, 4, std::string(size_t(depth), '[') + std::string(size_t(depth), ']'));
@@ -233,16 +236,18 @@ Case sceneCase(const Seeds& seeds, Rng& rng) {
         doc[pickOf(rng, objs).ptr]["fuzz_unknown_key"] = 1;
         c.mutation = "json.unknown-key";
         c.expect = Expect::Refuse;
-        text = doc.dump(2);
+        text = dump(doc, 2);
     } else if (r < 0.66) {
         c.expect = Expect::Refuse;
         if (!setNumbers(
                 [&](const Node& n, const Json& j) {
-                    return j.is_number() && isCoordinateKey(n.key) && n.ptr.to_string().find("statistics") == std::string::npos;
+                    // An element of a coordinate array (a scalar "min" is a constraint's distance).
+                    return j.is_number() && isCoordinateKey(n.key) && doc.at(n.ptr.parent_pointer()).is_array() &&
+                           n.ptr.to_string().find("statistics") == std::string::npos;
                 },
                 {"1e6", "-1e6", "1e9", "1e308", "-1.7976931348623157e308", "100001"}, "json.coordinate-far"))
             return sceneCase(seeds, rng);
-        text = doc.dump();
+        text = dump(doc);
     } else if (r < 0.70) {
         c.expect = Expect::Refuse;
         if (!setNumbers(
@@ -250,16 +255,16 @@ Case sceneCase(const Seeds& seeds, Rng& rng) {
                     return j.is_number() && (n.key == "size" || n.key == "radius" || n.key == "width" || n.key == "height" ||
                                              n.key == "flux_lm");
                 },
-                {"0", "-1", "-1e-9", "1e9", "1e308"}, "json.size-out-of-range"))
+                {"0", "-1", "-1e-9", "1e10", "1e308"}, "json.size-out-of-range"))
             return sceneCase(seeds, rng);
-        text = doc.dump();
+        text = dump(doc);
     } else if (r < 0.72) {
         c.expect = Expect::Refuse;
         c.mutation = "json.version";
         static const std::vector<std::string> v = {"0", "2", "\"1\"", "1.5", "null"};
         if (chance(rng, 0.2)) doc.erase("luxplan");
         else doc["luxplan"] = Json::parse(pickOf(rng, v));
-        text = doc.dump();
+        text = dump(doc);
     } else if (r < 0.76) {
         c.expect = Expect::Refuse;
         c.mutation = "json.count-range";
@@ -268,7 +273,7 @@ Case sceneCase(const Seeds& seeds, Rng& rng) {
         static const std::vector<std::string> counts = {"2147483648", "1e10", "-1", "1.5", "9223372036854775808", "1e300", "\"5\""};
         static const std::vector<std::string> seedValues = {"18446744073709551616", "-1", "1.5", "1e300", "\"5\""};
         doc["optimizer"][key] = Json::parse(key == "seed" ? pickOf(rng, seedValues) : pickOf(rng, counts));
-        text = doc.dump();
+        text = dump(doc);
     } else if (r < 0.80) {
         c.expect = Expect::Refuse;
         c.mutation = "json.bad-reference";
@@ -278,11 +283,11 @@ Case sceneCase(const Seeds& seeds, Rng& rng) {
         });
         if (refs.empty()) return sceneCase(seeds, rng);
         doc[pickOf(rng, refs).ptr] = "fuzz_no_such_name";
-        text = doc.dump();
+        text = dump(doc);
     } else if (r < 0.84) {
         c.expect = Expect::Refuse;
         c.mutation = "json.not-json";
-        text = doc.dump(2);
+        text = dump(doc, 2);
         static const std::vector<std::string> bad = {"NaN", "Infinity", "-Infinity", "1e", "0x10", "01", "+1", ".5", "1..2"};
         // Replace the value of a numeric member ("key": number).
         std::vector<size_t> starts;
@@ -315,7 +320,7 @@ Case sceneCase(const Seeds& seeds, Rng& rng) {
             doc["optimizer"]["seed"] = std::uniform_int_distribution<uint64_t>(1ull << 31, (1ull << 63) - 1)(rng);
         else
             doc["optimizer"]["iterations"] = std::uniform_int_distribution<int64_t>(1, 2147483647)(rng);
-        text = doc.dump();
+        text = dump(doc);
     }
     if (c.expect != Expect::Refuse && !c.measure) c.measure = chance(rng, 0.08);
     c.files["scene.json"] = text;
@@ -354,30 +359,30 @@ Case layoutCase(const Seeds& seeds, Rng& rng) {
         static const std::vector<std::string> v = {"1e9", "-1e6", "1e308", "100001"};
         Json& p = entities[entity]["position"];
         p[pick(rng, p.size())] = Json::parse(pickOf(rng, v));
-        text = doc.dump();
+        text = dump(doc);
     } else if (r < 0.72) {
         c.expect = Expect::Refuse;
         c.mutation = "layout.unknown-entity";
         entities["fuzz.no.such"] = entities[entity];
-        text = doc.dump();
+        text = dump(doc);
     } else if (r < 0.78) {
         c.expect = Expect::Refuse;
         c.mutation = "layout.unknown-key";
         if (chance(rng, 0.5)) entities[entity]["fuzz_key"] = 1;
         else doc["fuzz_key"] = 1;
-        text = doc.dump();
+        text = dump(doc);
     } else if (r < 0.84) {
         c.expect = Expect::Refuse;
         c.mutation = "layout.region-range";
         static const std::vector<std::string> v = {"1000", "-1", "2147483648", "1.5", "\"0\""};
         entities[entity]["region"] = Json::parse(pickOf(rng, v));
-        text = doc.dump();
+        text = dump(doc);
     } else if (r < 0.88) {
         c.expect = Expect::Refuse;
         c.mutation = "layout.rotation-range";
         static const std::vector<std::string> v = {"1e300", "-1e308", "\"90\"", "[90]", "null"};
         entities[entity]["rotation"] = Json::parse(pickOf(rng, v));
-        text = doc.dump();
+        text = dump(doc);
     } else if (r < 0.93) {
         c.expect = Expect::Refuse;
         c.mutation = "layout.truncate";
@@ -582,7 +587,7 @@ Case gltfCase(const Seeds& seeds, Rng& rng) {
                 break;
             }
         }
-        text = doc.dump();
+        text = dump(doc);
     } else if (r < 0.90) {
         c.expect = Expect::Refuse;
         c.mutation = "gltf.truncate";

@@ -51,6 +51,10 @@ inline constexpr double kMaxFluxLm = 1e9;
 inline constexpr double kMaxIlluminanceLx = 1e7;
 inline constexpr double kMaxLuminanceNits = 1e10;
 
+// A luminous intensity in a photometric file, cd, after its multipliers (a narrow
+// stadium floodlight peaks at a few 10^6 cd).
+inline constexpr double kMaxCandela = 1e9;
+
 // Candela values in one IES file (horizontal x vertical angles; EULUMDAT's own
 // bounds, 3600 x 1801 planes, are below it).
 inline constexpr std::int64_t kMaxPhotometryValues = 10'000'000;
