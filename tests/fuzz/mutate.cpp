@@ -250,12 +250,16 @@ Case sceneCase(const Seeds& seeds, Rng& rng) {
         text = dump(doc);
     } else if (r < 0.70) {
         c.expect = Expect::Refuse;
+        // Sizes are positive; a flux may be 0 (a luminaire switched off).
+        const bool flux = chance(rng, 0.3);
         if (!setNumbers(
                 [&](const Node& n, const Json& j) {
-                    return j.is_number() && (n.key == "size" || n.key == "radius" || n.key == "width" || n.key == "height" ||
-                                             n.key == "flux_lm");
+                    return j.is_number() && (flux ? n.key == "flux_lm"
+                                                  : n.key == "size" || n.key == "radius" || n.key == "width" || n.key == "height");
                 },
-                {"0", "-1", "-1e-9", "1e10", "1e308"}, "json.size-out-of-range"))
+                flux ? std::vector<std::string>{"-1", "-1e-9", "1e10", "1e308"}
+                     : std::vector<std::string>{"0", "-1", "-1e-9", "1e10", "1e308"},
+                "json.size-out-of-range"))
             return sceneCase(seeds, rng);
         text = dump(doc);
     } else if (r < 0.72) {
