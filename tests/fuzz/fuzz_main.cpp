@@ -111,7 +111,7 @@ int fuzz(const Options& o) {
         return 2;
     }
     std::cout << "luxplan_fuzz: seed " << o.seed << ", " << o.count << " inputs" << (o.seconds > 0 ? " at most" : "") << ", "
-              << seeds.scenes.size() << " scenes, " << seeds.objs.size() << " OBJ, " << seeds.gltfs.size() << " glTF, "
+              << seeds.scenes.size() << " scenes, " << seeds.objs.size() << " OBJ, " << seeds.gltfs.size() << " glTF, " << seeds.glbs.size() << " GLB, "
               << seeds.ies.size() << " IES, " << seeds.ldts.size() << " LDT seeds, " << o.jobs << " jobs" << std::endl;
     const std::filesystem::path root = tempRoot();
     std::vector<pid_t> workers;

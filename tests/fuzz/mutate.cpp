@@ -415,10 +415,63 @@ const char* kMeshScene = R"({"luxplan": 1,
   "samplers": [{"name": "top", "type": "planar", "center": [3,2,0.8], "size": [1,1], "target": [300,500]}],
   "optimizer": {"paths_per_point": 4}})";
 
-std::string meshScene(const std::string& mesh) {
-    std::string s = kMeshScene;
-    s.replace(s.find("MESH"), 4, mesh);
-    return s;
+// The mesh as a static item, or as a part of the movable desk (half of the time).
+std::string meshScene(const std::string& mesh, Rng& rng) {
+    Json s = Json::parse(kMeshScene);
+    if (chance(rng, 0.5)) {
+        s["geometry"][1]["mesh"] = mesh;
+    } else {
+        s["geometry"].erase(1);
+        s["entities"][0]["parts"].push_back(
+            Json{{"mesh", mesh}, {"material", "wall"}, {"transform", Json{{"translate", Json::array({0, 0, 0.9})}, {"scale", 0.2}}}});
+    }
+    return s.dump(2);
+}
+
+std::string base64Decode(const std::string& in) {
+    std::string out;
+    int val = 0, bits = -8;
+    for (unsigned char ch : in) {
+        int d = ch >= 'A' && ch <= 'Z' ? ch - 'A' : ch >= 'a' && ch <= 'z' ? ch - 'a' + 26 : ch >= '0' && ch <= '9' ? ch - '0' + 52
+              : ch == '+' ? 62 : ch == '/' ? 63 : -1;
+        if (d < 0) break;
+        val = (val << 6) + d;
+        bits += 6;
+        if (bits >= 0) {
+            out.push_back(char((val >> bits) & 0xff));
+            bits -= 8;
+        }
+    }
+    return out;
+}
+
+void put32(std::string& s, uint32_t v) {
+    for (int k = 0; k < 4; ++k) s.push_back(char((v >> (8 * k)) & 0xff));
+}
+
+// A binary glTF of a .gltf whose one buffer is a data: URI ("" if it is not).
+std::string toGlb(const std::string& gltf) {
+    Json doc = Json::parse(gltf);
+    if (!doc.contains("buffers") || doc["buffers"].size() != 1) return "";
+    const std::string uri = doc["buffers"][0].value("uri", "");
+    const size_t comma = uri.find(";base64,");
+    if (uri.rfind("data:", 0) != 0 || comma == std::string::npos) return "";
+    std::string bin = base64Decode(uri.substr(comma + 8));
+    doc["buffers"][0].erase("uri");
+    doc["buffers"][0]["byteLength"] = bin.size();
+    std::string json = doc.dump();
+    while (json.size() % 4) json.push_back(' ');
+    while (bin.size() % 4) bin.push_back('\0');
+    std::string glb = "glTF";
+    put32(glb, 2);
+    put32(glb, uint32_t(12 + 8 + json.size() + 8 + bin.size()));
+    put32(glb, uint32_t(json.size()));
+    glb += "JSON";
+    glb += json;
+    put32(glb, uint32_t(bin.size()));
+    glb += std::string("BIN\0", 4);
+    glb += bin;
+    return glb;
 }
 
 std::vector<std::string> splitLines(const std::string& s) {
@@ -456,7 +509,7 @@ const std::vector<std::string> kTokenValues = {"0", "-1", "1e38", "1e39", "-1e39
 Case objCase(const Seeds& seeds, Rng& rng) {
     const auto& [name, original] = pickOf(rng, seeds.objs);
     Case c;
-    c.files["scene.json"] = meshScene("m.obj");
+    c.files["scene.json"] = meshScene("m.obj", rng);
     std::vector<std::string> lines = splitLines(original);
     int vertices = 0;
     for (const auto& l : lines) vertices += l.rfind("v ", 0) == 0;
@@ -541,7 +594,7 @@ Case objCase(const Seeds& seeds, Rng& rng) {
 Case gltfCase(const Seeds& seeds, Rng& rng) {
     const auto& [name, original] = pickOf(rng, seeds.gltfs);
     Case c;
-    c.files["scene.json"] = meshScene("m.gltf");
+    c.files["scene.json"] = meshScene("m.gltf", rng);
     Json doc = Json::parse(original);
     const double r = std::uniform_real_distribution<double>(0, 1)(rng);
     std::string text;
@@ -608,6 +661,54 @@ Case gltfCase(const Seeds& seeds, Rng& rng) {
     }
     if (c.expect != Expect::Refuse && !c.measure) c.measure = chance(rng, 0.1);
     c.files["m.gltf"] = text;
+    return c;
+}
+
+Case glbCase(const Seeds& seeds, Rng& rng) {
+    const auto& [name, original] = pickOf(rng, seeds.glbs);
+    Case c;
+    c.files["scene.json"] = meshScene("m.glb", rng);
+    std::string glb = original;
+    const double r = std::uniform_real_distribution<double>(0, 1)(rng);
+    auto set32 = [&](size_t at, uint32_t v) {
+        for (int k = 0; k < 4 && at + size_t(k) < glb.size(); ++k) glb[at + size_t(k)] = char((v >> (8 * k)) & 0xff);
+    };
+    const uint32_t jsonLength = uint32_t((unsigned char)glb[12]) | uint32_t((unsigned char)glb[13]) << 8 |
+                                uint32_t((unsigned char)glb[14]) << 16 | uint32_t((unsigned char)glb[15]) << 24;
+    const size_t binHeader = 20 + jsonLength;
+    static const std::vector<uint32_t> lengths = {0, 1, 3, 7, 0x7fffffff, 0xffffffff, 0xfffffff0, 100000};
+    if (r < 0.45) {
+        c.expect = Expect::Either;
+        c.mutation = "glb.bytes";
+        glb = bytes(rng, glb);
+    } else if (r < 0.60) {
+        c.expect = Expect::Either;
+        c.mutation = "glb.lengths";
+        const std::vector<size_t> fields = {8, 12, binHeader};
+        set32(pickOf(rng, fields), pickOf(rng, lengths));
+    } else if (r < 0.75) {
+        // The JSON chunk's text, mutated like a .gltf's (lengths fixed up).
+        c.expect = Expect::Either;
+        std::string json = glb.substr(20, jsonLength), mutation;
+        json = genericJson(rng, Json::parse(json), mutation);
+        while (json.size() % 4) json.push_back(' ');
+        c.mutation = "glb." + mutation;
+        std::string out = glb.substr(0, 12);
+        put32(out, uint32_t(json.size()));
+        out += "JSON" + json + glb.substr(binHeader);
+        glb = out;
+        set32(8, uint32_t(glb.size()));
+    } else if (r < 0.90) {
+        c.expect = Expect::Refuse;
+        c.mutation = "glb.truncate";
+        glb.resize(pick(rng, glb.size() - 4));
+    } else {
+        c.expect = Expect::Accept;
+        c.mutation = "glb.valid";
+        c.measure = chance(rng, 0.3);
+    }
+    if (c.expect != Expect::Refuse && !c.measure) c.measure = chance(rng, 0.1);
+    c.files["m.glb"] = glb;
     return c;
 }
 
@@ -708,7 +809,10 @@ Seeds loadSeeds(const std::filesystem::path& sourceDir) {
         const std::string ext = p.extension().string();
         const std::string rel = std::filesystem::relative(p, sourceDir).string();
         if (ext == ".obj") seeds.objs.push_back({rel, readFile(p)});
-        else if (ext == ".gltf") seeds.gltfs.push_back({rel, readFile(p)});
+        else if (ext == ".gltf") {
+            seeds.gltfs.push_back({rel, readFile(p)});
+            if (std::string glb = toGlb(seeds.gltfs.back().second); !glb.empty()) seeds.glbs.push_back({rel + " as GLB", glb});
+        } else if (ext == ".glb") seeds.glbs.push_back({rel, readFile(p)});
         else if (ext == ".ies" || ext == ".IES") seeds.ies.push_back({rel, readFile(p)});
         else if (ext == ".ldt" || ext == ".LDT") seeds.ldts.push_back({rel, readFile(p)});
         else if (ext == ".json" && rel.rfind("scenes/", 0) == 0) {
@@ -751,7 +855,8 @@ Case makeCase(const Seeds& seeds, std::uint64_t seed, std::uint64_t index) {
     if (r < 0.45 || (seeds.objs.empty() && seeds.ies.empty())) c = sceneCase(seeds, rng);
     else if (r < 0.60) c = layoutCase(seeds, rng);
     else if (r < 0.75 && !seeds.objs.empty()) c = objCase(seeds, rng);
-    else if (r < 0.85 && !seeds.gltfs.empty()) c = gltfCase(seeds, rng);
+    else if (r < 0.81 && !seeds.gltfs.empty()) c = gltfCase(seeds, rng);
+    else if (r < 0.86 && !seeds.glbs.empty()) c = glbCase(seeds, rng);
     else if (!seeds.ies.empty() && !seeds.photometryScene.empty()) c = photometryCase(seeds, rng);
     else c = sceneCase(seeds, rng);
     if (!c.layout.empty() && !c.files.count(c.layout)) c.layout.clear();

@@ -23,7 +23,7 @@ struct Seeds {
         std::string layout;                        // a valid layout.json for it ("" if none movable)
     };
     std::vector<SceneSeed> scenes;
-    std::vector<std::pair<std::string, std::string>> objs, gltfs, ies, ldts;  // name, bytes
+    std::vector<std::pair<std::string, std::string>> objs, gltfs, glbs, ies, ldts;  // name, bytes
     std::string photometryScene;  // a scene with luminaires naming "PHOTOMETRY"
 };
 
