@@ -109,10 +109,10 @@ TEST(OutputSafety, KillNineAtAnyMomentLeavesWholeFilesOrNone) {
     std::mt19937 rng(15);
     int killedWithFiles = 0;
     for (int k = 0; k < 20; ++k) {
-        const std::string out = (dir.path() / ("k" + std::to_string(k))).string();
+        const std::string out = (dir.path() / (std::string("k").append(std::to_string(k)))).string();
         const bool pictures = k % 2 == 0;
         const pid_t pid = startOptimize(scene, out, pictures ? std::vector<std::string>{} : std::vector<std::string>{"--no-pictures"});
-        const double at = std::uniform_real_distribution<double>(0.02, 1.05)(rng) * seconds;
+        const double at = std::uniform_real_distribution<double>(0.02, 0.9)(rng) * seconds;
         std::this_thread::sleep_for(std::chrono::duration<double>(at));
         kill(pid, SIGKILL);
         int status = 0;

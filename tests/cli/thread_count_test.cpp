@@ -39,7 +39,7 @@ TEST(ThreadCount, OptimizeFindsTheSameLayoutAtAnyThreadCount) {
     test::TempDir dir;
     std::string first;
     for (int threads : {1, 3, 7}) {
-        const auto out = dir.path() / ("t" + std::to_string(threads));
+        const auto out = dir.path() / (std::string("t").append(std::to_string(threads)));
         test::CliResult r = test::runCli("optimize " + kScene + " -o " + out.string() + " --iterations 150 --paths 4 -q --no-pictures --threads " +
                                          std::to_string(threads));
         ASSERT_EQ(r.exitCode, 0) << r.output;
