@@ -22,6 +22,7 @@
 #include <luxplan/daylight/daylight.h>
 #include <luxplan/io/layout_io.h>
 #include <luxplan/io/scene_loader.h>
+#include <luxplan/json/fields.h>
 #include <luxplan/lightsamplers/light_samplers.h>
 #include <luxplan/pathtracer/path_tracer.h>
 #include <luxplan/rt/embree_scene.h>
@@ -122,7 +123,10 @@ bool finite(double v) { return std::isfinite(v); }
 // `fd`: ACCEPT, NONFINITE what, MEMORY, SCENE + one "file\tpath\tmessage" per
 // diagnostic, IO message, OTHER message.
 [[noreturn]] void child(const Case& c, const std::filesystem::path& dir, const Bounds& bounds, int fd) {
-    alarm(unsigned(std::ceil(bounds.seconds)));
+    alarm(unsigned(std::ceil(bounds.wallSeconds)));
+    const rlim_t cpu = rlim_t(std::ceil(bounds.seconds));
+    rlimit cpuLimit{cpu, cpu + 1};
+    setrlimit(RLIMIT_CPU, &cpuLimit);
 #ifndef LUXPLAN_FUZZ_ASAN
     rlimit lim{bounds.memoryBytes, bounds.memoryBytes};
     setrlimit(RLIMIT_AS, &lim);
@@ -214,7 +218,7 @@ Result runCase(const Case& c, const std::filesystem::path& dir, const Bounds& bo
         timespec now{};
         clock_gettime(CLOCK_MONOTONIC, &now);
         const double elapsed = double(now.tv_sec - start.tv_sec) + 1e-9 * double(now.tv_nsec - start.tv_nsec);
-        const double left = bounds.seconds + 2 - elapsed;
+        const double left = bounds.wallSeconds + 2 - elapsed;
         if (left <= 0) {
             timedOut = true;
             kill(pid, SIGKILL);
@@ -236,7 +240,9 @@ Result runCase(const Case& c, const std::filesystem::path& dir, const Bounds& bo
     }
     const std::string err = tail(dir / "stderr.log", 2000);
     if (timedOut || (WIFSIGNALED(status) && WTERMSIG(status) == SIGALRM))
-        return {Outcome::Hang, "no answer within " + std::to_string(bounds.seconds) + " s"};
+        return {Outcome::Hang, "no answer within " + json::formatNumber(bounds.wallSeconds) + " s"};
+    if (WIFSIGNALED(status) && WTERMSIG(status) == SIGXCPU)
+        return {Outcome::Hang, "more than " + json::formatNumber(bounds.seconds) + " s of CPU time"};
     if (WIFSIGNALED(status)) {
         if (WTERMSIG(status) == SIGKILL) return {Outcome::Memory, "killed (SIGKILL): " + err};
         return {Outcome::Crash, std::string("signal ") + strsignal(WTERMSIG(status)) + "\n" + err};

@@ -36,7 +36,8 @@ struct Result {
 };
 
 struct Bounds {
-    double seconds = 10;              // wall clock per input
+    double seconds = 10;              // CPU time per input (a busy machine does not make a hang)
+    double wallSeconds = 60;          // wall clock per input (an input that blocks)
     std::uint64_t memoryBytes = 3ull << 30;  // address space per input (not under ASan)
 };
 

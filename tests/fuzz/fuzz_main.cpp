@@ -1,6 +1,6 @@
 // luxplan_fuzz: structure-aware fuzzing of luxplan's input path (docs/robustness.md).
 //
-//   luxplan_fuzz [--count N] [--seconds S] [--seed S] [--jobs J] [--timeout S]
+//   luxplan_fuzz [--count N] [--seconds S] [--seed S] [--jobs J] [--timeout CPU_S] [--wall S]
 //                [--save DIR] [--source DIR] [--only INDEX] [--keep DIR] [-v]
 //   luxplan_fuzz --replay DIR...     (each DIR a kept case, or a folder of them)
 //
@@ -35,7 +35,7 @@ struct Options {
     double seconds = 0;  // 0: no time budget
     uint64_t seed = 1;
     int jobs = 1;
-    double timeout = 10;
+    double timeout = 10, wall = 60;
     std::string save, source = LUXPLAN_SOURCE_DIR, keep;
     int64_t only = -1;
     bool verbose = false;
@@ -73,6 +73,7 @@ void worker(const Seeds& seeds, const Options& o, int w, const std::filesystem::
     std::map<std::pair<std::string, std::string>, uint64_t> counts;
     Bounds bounds;
     bounds.seconds = o.timeout;
+    bounds.wallSeconds = o.wall;
     const std::filesystem::path dir = root / ("w" + std::to_string(w));
     for (uint64_t i = uint64_t(w); i < o.count; i += uint64_t(o.jobs)) {
         if (o.only >= 0 && i != uint64_t(o.only)) continue;
@@ -177,6 +178,7 @@ int replay(const Options& o) {
     std::sort(cases.begin(), cases.end());
     Bounds bounds;
     bounds.seconds = o.timeout;
+    bounds.wallSeconds = o.wall;
     const std::filesystem::path root = tempRoot();
     int failures = 0;
     for (const auto& p : cases) {
@@ -213,6 +215,7 @@ int main(int argc, char** argv) {
         else if (a == "--seed") o.seed = std::stoull(next());
         else if (a == "--jobs") o.jobs = std::max(1, std::stoi(next()));
         else if (a == "--timeout") o.timeout = std::stod(next());
+        else if (a == "--wall") o.wall = std::stod(next());
         else if (a == "--save") o.save = next();
         else if (a == "--keep") o.keep = next();
         else if (a == "--source") o.source = next();
