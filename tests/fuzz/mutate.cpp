@@ -213,12 +213,17 @@ Case sceneCase(const Seeds& seeds, Rng& rng) {
         if (entities == doc.end() || !entities->is_array() || entities->empty()) return sceneCase(seeds, rng);
         static const std::vector<int> depths = {1, 5, 20, 31, 33, 40, 60, 200, 10000};
         const int depth = pickOf(rng, depths);
-        Json e = (*entities)[0];
-        for (int k = 0; k < depth; ++k) e = Json{{"name", "g" + std::to_string(k)}, {"children", Json::array({e})}};
-        (*entities)[0] = e;
+        // Built as text: a tree 10^4 deep would overflow the harness's own stack.
+        const std::string inner = dump((*entities)[0]);
+        (*entities)[0] = "FUZZ_DEEP_PLACEHOLDER";
+        std::string nested;
+        for (int k = depth - 1; k >= 0; --k) nested += "{\"name\": \"g" + std::to_string(k) + "\", \"children\": [";
+        nested += inner;
+        for (int k = 0; k < depth; ++k) nested += "]}";
+        text = dump(doc);
+        text.replace(text.find("\"FUZZ_DEEP_PLACEHOLDER\""), 23, nested);
         c.mutation = "json.children-deep";
         c.expect = depth > 32 ? Expect::Refuse : Expect::Either;
-        text = dump(doc);
     } else if (r < 0.55) {
         const int depth = chance(rng, 0.5) ? 200 : 100000;
         const Node& n = pickOf(rng, all);
