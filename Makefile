@@ -5,7 +5,7 @@ JOBS ?= $(shell nproc)
 DEMO_SCENE ?= scenes/paper/fig7-office-morning.json
 DEMO_OUT ?= out/demo
 
-.PHONY: all deps configure build demo test bench clean
+.PHONY: all deps configure build demo test sanitize fuzz bench clean
 
 all: build
 
@@ -23,11 +23,34 @@ demo: configure
 	cmake --build $(BUILD) -j $(JOBS) --target luxplan_cli
 	./scripts/demo.sh $(BUILD)/luxplan $(DEMO_SCENE) $(DEMO_OUT)
 
+# The whole suite in Release, then the sanitizer tree (what .ci/run calls).
 test: build
 	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS)
+	$(MAKE) sanitize
+
+# AddressSanitizer + UndefinedBehaviorSanitizer (docs/robustness.md): a lean tree of
+# the modules that read input (their tests) and the fuzzer, whose regressions and a
+# bounded fresh run are tests there too.
+ASAN_BUILD ?= build-asan
+ASAN_MODULES ?= core;json;io
+ASAN_FUZZ_SECONDS ?= 40
+sanitize: deps
+	cmake -S . -B $(ASAN_BUILD) -DCMAKE_BUILD_TYPE=Debug "-DCMAKE_CXX_FLAGS_DEBUG=-O1 -g" -DLUXPLAN_SANITIZE=ON \
+	  -DLUXPLAN_BUILD_BENCH=OFF "-DLUXPLAN_TEST_MODULES=$(ASAN_MODULES)" -DLUXPLAN_FUZZ_SECONDS=$(ASAN_FUZZ_SECONDS)
+	cmake --build $(ASAN_BUILD) -j $(JOBS) --target luxplan_fuzz $(foreach m,$(subst ;, ,$(ASAN_MODULES)),test_$(m))
+	ASAN_OPTIONS=detect_leaks=1:strict_string_checks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+	  ctest --test-dir $(ASAN_BUILD) --output-on-failure -j $(JOBS)
+
+# A fresh fuzz run of FUZZ_COUNT inputs (docs/robustness.md); failures kept in
+# $(BUILD)/fuzz-failures, to be copied into tests/fuzz/regressions/.
+FUZZ_COUNT ?= 10000
+FUZZ_SEED ?= 1
+fuzz: configure
+	cmake --build $(BUILD) -j $(JOBS) --target luxplan_fuzz
+	./$(BUILD)/tests/luxplan_fuzz --count $(FUZZ_COUNT) --seed $(FUZZ_SEED) --jobs $(JOBS) --save $(BUILD)/fuzz-failures
 
 bench: build
 	./$(BUILD)/bench/luxplan_bench
 
 clean:
-	rm -rf $(BUILD) out
+	rm -rf $(BUILD) $(ASAN_BUILD) out

@@ -190,6 +190,26 @@ TEST(EulumdatReader, ReportsEachProblemWithItsLine) {
     EXPECT_EQ(ldtError(cut), "f.ldt:57: the file ends at line 57; an intensity (cd/klm; 9 in all) should be on line 58");
 }
 
+// Found by luxplan_fuzz (tests/fuzz/regressions/wrong-accept-photometry.candela-bad-*):
+// a finite but absurd intensity passed, and with it a luminaire of 10^300 lm.
+TEST(PhotometryLimits, AnIntensityAboveTheLimitIsRefusedWithItsLine) {
+    std::string good = ies(k2002, {0, 90, 180});
+    std::string text = good;
+    text.replace(text.find("2 3 4"), 5, "2 3e300 4");
+    EXPECT_NE(iesError(text).find("f.ies:9: candela value 3e+300"), std::string::npos) << iesError(text);
+    EXPECT_NE(iesError(text).find("exceeds the limit of 1000000000 cd"), std::string::npos) << iesError(text);
+    // Through the multiplier too.
+    text = good;
+    text.replace(text.find("1 1000 1 3 3 1 2"), 16, "1 1000 1e9 3 3 1 2");
+    EXPECT_NE(iesError(text).find("exceeds the limit of 1000000000 cd"), std::string::npos) << iesError(text);
+    std::string l = ldt(2, 4, 3);
+    size_t at = 0;
+    for (int i = 1; i < 52; ++i) at = l.find('\n', at) + 1;
+    l.replace(at, l.find('\n', at) - at, "1e300");
+    EXPECT_NE(ldtError(l).find("f.ldt:52: intensity 1e+300 cd/klm"), std::string::npos) << ldtError(l);
+    EXPECT_NE(ldtError(l).find("exceeds the limit of 1000000000 cd"), std::string::npos) << ldtError(l);
+}
+
 TEST(PhotometryFile, ChosenByExtensionAndRefusedWithItsName) {
     auto file = io::loadPhotometry(kData + "asymmetric.ies");
     EXPECT_DOUBLE_EQ(file->intensity(PhotometricAngles{kPi / 2, kPi / 6}), 600);

@@ -234,6 +234,25 @@ TEST(SceneLimits, OnlyRegularFilesOfBoundedSize) {
                         "\": not a regular file (a folder, FIFO or device cannot be read)");
 }
 
+// Found by luxplan_fuzz: rotations had no bound (an entity's, a region's, a transform's).
+TEST(SceneLimits, RotationsAreBounded) {
+    json s = smallScene();
+    s["entities"][0]["rotation"] = -1e308;
+    EXPECT_EQ(onlyProblem(s), "/entities/0/rotation: value -1e+308 exceeds the limit of -3600 deg");
+    s = smallScene();
+    s["entities"][0]["placement"]["regions"][0]["rotations"] = {0, 1e300};
+    EXPECT_EQ(onlyProblem(s), "/entities/0/placement/regions/0/rotations/1: value 1e+300 exceeds the limit of 3600 deg");
+    s = smallScene();
+    s["entities"][0]["placement"]["regions"][0].erase("rotations");
+    s["entities"][0]["placement"]["regions"][0]["rotation_range"] = {0, 1e6};
+    EXPECT_EQ(onlyProblem(s), "/entities/0/placement/regions/0/rotation_range/1: value 1000000 exceeds the limit of 3600 deg");
+    s = smallScene();
+    s["entities"][0]["placement"]["regions"][0]["rotation_range"] = {-3600, 3600};
+    s["entities"][0]["placement"]["regions"][0].erase("rotations");
+    test::TempDir dir;
+    EXPECT_TRUE(test::loadProblems(s.dump(), dir).empty());
+}
+
 TEST(LayoutLimits, PositionsAndNumbers) {
     test::TempDir dir;
     Scene scene = io::loadScene(dir.write("scene.json", smallScene().dump()));
@@ -255,6 +274,10 @@ TEST(LayoutLimits, PositionsAndNumbers) {
               "/entities/desk/position/2: number overflow parsing '1e400' (the largest number is about 1.8e308)");
     EXPECT_EQ(layoutProblem(R"({"entities": {"desk": {"rotation": 0, "rotation": 90}}})"),
               "/entities/desk/rotation: duplicate key (JSON objects need unique keys)");
+    // Found by luxplan_fuzz (tests/fuzz/regressions/wrong-accept-layout.rotation-range-*):
+    // a rotation of 1e300 degrees was accepted.
+    EXPECT_EQ(layoutProblem(R"({"entities": {"desk": {"position": [2, 2, 0], "rotation": 1e300}}})"),
+              "/entities/desk/rotation: value 1e+300 exceeds the limit of 3600 deg");
     auto fifo = dir.path() / "fifo.json";
     ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
     try {

@@ -32,6 +32,10 @@ inline constexpr int kMaxEntityDepth = 32;
 inline constexpr double kMaxCoordinate = 1e5;
 // Every size (lengths, widths, radii, side vectors) is positive and at most this, m.
 inline constexpr double kMaxLength = 1e5;
+// Every rotation (an entity's, a layout's, a region's rotations and rotation_range, a
+// mesh transform's rotate_deg) lies in [-kMaxRotationDeg, kMaxRotationDeg] degrees: ten
+// turns either way, beyond which single precision no longer resolves a degree.
+inline constexpr double kMaxRotationDeg = 3600;
 // A mesh transform's scale factor lies in (0, kMaxScale].
 inline constexpr double kMaxScale = 1e4;
 // Triangles in one mesh file (after glTF instancing) and in the whole scene.
@@ -50,6 +54,10 @@ inline constexpr double kMaxFluxLm = 1e9;
 // sky's luminance, cd/m2 (the sun's disk is about 1.6e9).
 inline constexpr double kMaxIlluminanceLx = 1e7;
 inline constexpr double kMaxLuminanceNits = 1e10;
+
+// A luminous intensity in a photometric file, cd, after its multipliers (a narrow
+// stadium floodlight peaks at a few 10^6 cd).
+inline constexpr double kMaxCandela = 1e9;
 
 // Candela values in one IES file (horizontal x vertical angles; EULUMDAT's own
 // bounds, 3600 x 1801 planes, are below it).

@@ -8,6 +8,7 @@
 
 #include <cmath>
 
+#include <luxplan/core/limits.h>
 #include <luxplan/json/fields.h>
 
 namespace luxplan::io {
@@ -109,6 +110,9 @@ PhotometricTable readEulumdat(const std::string& text, const std::string& name) 
     for (int k = 0; k < planes * ng; ++k) {
         double v = in.number(iLine + k, "an intensity (cd/klm; " + std::to_string(planes * ng) + " in all)");
         if (v < 0) fail(name, iLine + k, "negative intensity " + formatNumber(v));
+        if (!(v * toCandela <= limits::kMaxCandela))
+            fail(name, iLine + k, "intensity " + formatNumber(v) + " cd/klm (" + formatNumber(v * toCandela) +
+                                      " cd) exceeds the limit of " + formatNumber(limits::kMaxCandela) + " cd");
         t.candela.push_back(v * toCandela);
     }
     return t;

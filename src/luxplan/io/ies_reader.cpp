@@ -9,6 +9,7 @@
 #include <cctype>
 #include <cmath>
 
+#include <luxplan/core/limits.h>
 #include <luxplan/json/fields.h>
 
 namespace luxplan::io {
@@ -169,6 +170,10 @@ PhotometricTable readIes(const std::string& text, const std::string& name) {
             if (v < 0) fail(name, in.lastReadLine(), "negative candela value " + formatNumber(v));
             if (!std::isfinite(v * factor))
                 fail(name, in.lastReadLine(), "candela value " + formatNumber(v) + " times the multipliers is not finite");
+            if (v * factor > limits::kMaxCandela)
+                fail(name, in.lastReadLine(), "candela value " + formatNumber(v) + " times the multipliers (" +
+                                                  formatNumber(v * factor) + " cd) exceeds the limit of " +
+                                                  formatNumber(limits::kMaxCandela) + " cd");
             t.candela.push_back(v * factor);
         }
     return t;

@@ -61,7 +61,7 @@ Layout readEntities(DiagnosticSink& sink, const Json& root, const Scene& scene) 
                                          coordinateRange());
                     if (n) p.position = Vec3((*n)[0], (*n)[1], n->size() == 3 ? (*n)[2] : e.position.z);
                 }
-                p.rotationDeg = f.number("rotation", p.rotationDeg);
+                p.rotationDeg = f.number("rotation", p.rotationDeg, json::rotationRange());
                 auto region = f.integer("region", Range::closed(0, double(e.regions.size()) - 1));
                 if (region) {
                     p.region = *region;

@@ -367,7 +367,7 @@ private:
             }
         }
         Transform t = Transform::placement(f.vec3("translate", false, kCoordinate).value_or(Vec3()),
-                                           f.number("rotate_deg", 0.0)) *
+                                           f.number("rotate_deg", 0.0, json::rotationRange())) *
                       Transform::scale(scale);
         f.finish();
         return t;
@@ -640,10 +640,15 @@ private:
                     sink_.error(pointer(f.at("rotations"), i), "expected a number, got " + typeName((*rots)[i]));
                     continue;
                 }
-                r.rotationsDeg.push_back((*rots)[i].get<double>());
+                const double deg = (*rots)[i].get<double>();
+                if (const std::string why = json::rotationRange().limitProblem(deg); !why.empty()) {
+                    sink_.error(pointer(f.at("rotations"), i), why);
+                    continue;
+                }
+                r.rotationsDeg.push_back(deg);
             }
         } else if (f.has("rotation_range")) {
-            if (auto range = f.vec2("rotation_range")) {
+            if (auto range = f.vec2("rotation_range", false, json::rotationRange())) {
                 if (range->y < range->x)
                     f.error("rotation_range", "rotation range is inverted: " + formatNumber(range->y) + " < " +
                                                   formatNumber(range->x));
@@ -759,7 +764,7 @@ private:
                 auto n = json::readNumbers(sink_, p, f.at("position"), p.is_array() && p.size() == 3 ? 3 : 2, kCoordinate);
                 if (n) e.position = Vec3((*n)[0], (*n)[1], n->size() == 3 ? (*n)[2] : 0.0);
             }
-            e.rotationDeg = f.number("rotation", 0.0);
+            e.rotationDeg = f.number("rotation", 0.0, json::rotationRange());
         }
         if (parent >= 0) {
             scene_.entities[parent].children.push_back(index);

@@ -1,0 +1,54 @@
+// Results do not depend on the thread count (issue 15, docs/robustness.md): measure and
+// optimize give the same numbers and the same layout at 1, 2, 3 and 7 threads.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "run_cli.h"
+#include "support/temp_files.h"
+
+namespace luxplan {
+namespace {
+
+const std::string kScene = std::string(LUXPLAN_SOURCE_DIR) + "/scenes/paper/fig4-presenter.json";
+
+std::string readAll(const std::filesystem::path& p) {
+    std::ifstream in(p);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+TEST(ThreadCount, MeasureIsTheSameAtAnyThreadCount) {
+    std::string first;
+    for (int threads : {1, 2, 3, 7}) {
+        test::CliResult r = test::runCli("measure " + kScene + " --paths 16 --json --threads " + std::to_string(threads));
+        ASSERT_EQ(r.exitCode, 0) << r.output;
+        // Warnings (stderr) come first; the JSON document is the rest.
+        nlohmann::json j = nlohmann::json::parse(r.output.substr(r.output.find("{\n")));
+        j.erase("seconds");
+        if (first.empty()) first = j.dump();
+        else EXPECT_EQ(j.dump(), first) << threads << " threads";
+    }
+}
+
+TEST(ThreadCount, OptimizeFindsTheSameLayoutAtAnyThreadCount) {
+    test::TempDir dir;
+    std::string first;
+    for (int threads : {1, 3, 7}) {
+        const auto out = dir.path() / (std::string("t").append(std::to_string(threads)));
+        test::CliResult r = test::runCli("optimize " + kScene + " -o " + out.string() + " --iterations 150 --paths 4 -q --no-pictures --threads " +
+                                         std::to_string(threads));
+        ASSERT_EQ(r.exitCode, 0) << r.output;
+        const std::string layout = readAll(out / "layout.json");
+        ASSERT_FALSE(layout.empty());
+        if (first.empty()) first = layout;
+        else EXPECT_EQ(layout, first) << threads << " threads";
+    }
+}
+
+}  // namespace
+}  // namespace luxplan
