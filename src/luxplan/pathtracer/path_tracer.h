@@ -85,12 +85,14 @@ public:
     const EmbreeScene& rayTracer() const { return rt_; }
     const EmitterSet& emitters() const { return emitters_; }
 
-private:
+    const DaylightEnvironment* daylight() const { return daylight_; }
     // Transmittance along p + t w up to tMax (the distance to the sampled point on
     // emitter `target`, or infinity for sun and sky): products of pane transmittances, 0
     // when anything opaque or another luminaire is in the way (the target itself never
-    // shadows itself).
+    // shadows itself). Public for the glare samplers' direct views of their sources.
     double transmittance(const Vec3& p, const Vec3& w, double tMax, int target, RayStats& stats) const;
+
+private:
 
     const EmbreeScene& rt_;
     const DaylightEnvironment* daylight_;
