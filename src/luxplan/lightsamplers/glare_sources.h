@@ -8,6 +8,7 @@
 #include <memory>
 #include <vector>
 
+#include <luxplan/lightsamplers/sampler_result.h>
 #include <luxplan/lightsamplers/sampler_type.h>
 
 namespace luxplan {
@@ -20,29 +21,11 @@ double guthIndex(double tauDeg, double sigmaDeg);
 // the line of sight, Iwata's formula (evalglare's) below it; 16 behind the eye.
 double guthIndexOf(const Vec3& forward, const Vec3& w);
 
-struct GlareSource {
-    double luminance = 0;    // L, cd/m2, mean over its visible part
-    double solidAngle = 0;   // omega, sr
-    double positionIndex = 1;  // P
-    Vec3 direction;          // unit, from the eye (the solid-angle centroid)
-    bool sun = false;        // a sun disk, else a luminaire
-    int index = -1;          // the emitter or sun disk
-};
-
 // 8 log10(0.25 / Lb * sum L^2 omega / P^2), 0 with no source (and never below 0).
 double unifiedGlareRating(double backgroundLuminance, const std::vector<GlareSource>& sources);
 // 5.87e-5 Ev + 0.159 + 0.092 log10(1 + sum L^2 omega / (P^2 Ev^1.87)), times the
 // low-light factor below 1000 lx, clamped to [0, 1].
 double daylightGlareProbability(double verticalIlluminance, const std::vector<GlareSource>& sources);
-
-// What a glare sampler's value is made of, for reports.
-struct GlareSurvey {
-    double verticalIlluminance = 0;  // E_v at the eye over the front hemisphere, lx
-    double directIlluminance = 0;    // of it, the sources' direct light
-    double backgroundLuminance = 0;  // (E_v - direct) / pi
-    std::vector<GlareSource> sources;
-    double value = 0;
-};
 
 // The placed "ugr" or "dgp" sampler. Items: 0 the vertical illuminance at the eye,
 // then per source slot (emitters first, then sun disks, up to kSlots) its visible
