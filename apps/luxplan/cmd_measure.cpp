@@ -112,7 +112,10 @@ void runMeasure(const MeasureArgs& args) {
         const std::vector<LightingTerm> terms = lightingTerms(s, r);
         const double penalty = terms[0].penalty;
         std::ostringstream target;
-        target << "[" << s.targetMin << ", " << (std::isfinite(s.targetMax) ? std::to_string(int(s.targetMax)) : "inf") << "]";
+        target << std::defaultfloat << "[" << s.targetMin << ", ";
+        if (std::isfinite(s.targetMax)) target << s.targetMax;
+        else target << "inf";
+        target << "]";
         // UGR below 10 reads "<10" (CIE 117's scale starts there; JSON keeps the number),
         // DGP is a probability.
         const std::string type = s.type->name();
