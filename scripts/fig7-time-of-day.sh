@@ -41,8 +41,8 @@ for t in ("morning", "afternoon", "evening"):
         d = [9.0 - layout[f"ws{i}"]["position"][0] for i in range(1, 7)]
         means.append(statistics.mean(d))
         s = {x["name"]: x for x in report["samplers"]}
-        desks = sum(1 for i in range(1, 7) if s[f"ws{i}_desk"]["penalty"] == 0)
-        screens = sum(1 for i in range(1, 7) if s[f"ws{i}_glare"]["penalty"] == 0)
+        desks = sum(1 for i in range(1, 7) if s[f"ws{i}.desk.task"]["penalty"] == 0)
+        screens = sum(1 for i in range(1, 7) if s[f"ws{i}.monitor.glare"]["penalty"] == 0)
         print("| %s | %d | %.2f m (%.2f-%.2f) | %d / 6 | %d / 6 | %d / 6 | %.3f |" % (
             t, seed, means[-1], min(d), max(d), sum(1 for x in d if x <= 2.5), desks, screens, report["C"]))
     sd = statistics.stdev(means) if len(means) > 1 else 0.0

@@ -1,7 +1,11 @@
 #!/usr/bin/env bash
-# Installs the Debian 12 packages luxplan builds with. Idempotent: packages
-# already present are skipped, so a second run does nothing and needs no network.
+# Installs what luxplan builds and tests with: Debian 12 packages (the C++ libraries,
+# Chromium for the report's browser test, Node.js and npm where they are missing), then
+# the report viewer's npm packages (web/package-lock.json) into web/node_modules.
+# Idempotent: what is already present is skipped, so a second run does nothing and
+# needs no network.
 set -euo pipefail
+cd "$(dirname "$0")/.."
 
 packages=(
   build-essential cmake pkg-config
@@ -9,7 +13,11 @@ packages=(
   nlohmann-json3-dev libcli11-dev
   libtinyobjloader-dev libtinygltf-dev libstb-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  chromium
 )
+# Node.js may come from elsewhere than Debian (a newer release); only install Debian's
+# when there is none.
+if ! command -v npm > /dev/null; then packages+=(nodejs npm); fi
 
 missing=()
 for p in "${packages[@]}"; do
@@ -20,12 +28,20 @@ done
 
 if [ ${#missing[@]} -eq 0 ]; then
   echo "install-deps: all ${#packages[@]} packages present"
-  exit 0
+else
+  echo "install-deps: installing ${missing[*]}"
+  sudo_cmd=()
+  if [ "$(id -u)" -ne 0 ]; then sudo_cmd=(sudo); fi
+  export DEBIAN_FRONTEND=noninteractive
+  "${sudo_cmd[@]}" apt-get update -qq
+  "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
 
-echo "install-deps: installing ${missing[*]}"
-sudo_cmd=()
-if [ "$(id -u)" -ne 0 ]; then sudo_cmd=(sudo); fi
-export DEBIAN_FRONTEND=noninteractive
-"${sudo_cmd[@]}" apt-get update -qq
-"${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
+# The report's 3D viewer (three.js), exactly as web/package-lock.json pins it.
+if [ ! -f web/node_modules/three/package.json ] ||
+   ! grep -q "\"version\": \"$(sed -n 's/.*"three": "\(.*\)".*/\1/p' web/package.json)\"" web/node_modules/three/package.json; then
+  echo "install-deps: npm ci (web/: the report viewer)"
+  npm ci --prefix web --no-audit --no-fund --loglevel=error
+else
+  echo "install-deps: web/node_modules up to date"
+fi

@@ -13,6 +13,7 @@
 #include <unistd.h>
 
 #include "commands.h"
+#include "picture_progress.h"
 #include <luxplan/core/atomic_file.h>
 #include <luxplan/core/error.h>
 #include <luxplan/daylight/daylight.h>
@@ -62,7 +63,7 @@ struct OptimizeArgs {
     int iterations = -1, paths = 0, spp = 0, inner = -1;
     int64_t seed = -1;
     bool flat = false, quiet = false, noPictures = false, fixedPaths = false, fullEvaluation = false,
-         freshNoise = false, noiseBlind = false, nested = false, cycle = false;
+         freshNoise = false, noiseBlind = false, nested = false, cycle = false, singleTest = false;
     std::string sampling = "sobol";
 };
 
@@ -113,6 +114,7 @@ int runOptimize(const OptimizeArgs& args) {
     if (args.seed >= 0) options.seed = uint64_t(args.seed);
     if (args.flat) options.hierarchy = Hierarchy::Flat;
     if (args.noiseBlind) options.noiseAware = false;
+    if (args.singleTest) options.delayedAcceptance = false;
     if (args.inner >= 0) options.innerIterations = args.inner;
     if (args.nested) options.focusInner = true;
     if (args.cycle) options.focusInner = false;
@@ -198,7 +200,12 @@ int runOptimize(const OptimizeArgs& args) {
         interrupted.store(false);
         pictures.cancel = &interrupted;
         if (args.spp > 0) pictures.renderSamplesPerPixel = args.spp;
-        RunOutputs outputs = writeRunOutputs(args.out, scene, start, result.best, &result, daylight ? &*daylight : nullptr, pictures);
+        RunOutputs outputs;
+        {
+            std::cout.flush();  // the summary before the pictures' progress on stderr, also in a log
+            PictureProgress progress(pictures);
+            outputs = writeRunOutputs(args.out, scene, start, result.best, &result, daylight ? &*daylight : nullptr, pictures);
+        }
         if (outputs.files.empty() && outputs.cancelled) {
             std::cout << "  pictures: stopped before the first was written\n";
         } else {
@@ -241,6 +248,9 @@ void registerOptimizeCommand(CLI::App& app, int& threads) {
                   "true costs, at twice the evaluations and without the path cache (default: common random numbers)");
     cmd->add_flag("--noise-blind", args->noiseBlind,
                   "The paper's plain Metropolis test on the estimates, the temperature free to fall below their noise");
+    cmd->add_flag("--single-test", args->singleTest,
+                  "One Metropolis test after lighting every proposal, instead of the rules' change first and the light's "
+                  "only for proposals that pass (delayed acceptance)");
     cmd->add_option("--inner", args->inner,
                     "Object-level proposals per group-level one (default: optimizer.inner_iterations; 0: by degrees of freedom)")
         ->check(CLI::Range(0, 1000));

@@ -5,6 +5,8 @@
 #include <iostream>
 
 #include "commands.h"
+#include "picture_progress.h"
+#include <luxplan/constraints/penalty.h>
 #include <luxplan/core/limits.h>
 #include <luxplan/core/names.h>
 #include <luxplan/daylight/daylight.h>
@@ -109,14 +111,19 @@ void runPictures(const PictureArgs& args, bool report) {
     } else {
         options.comparison = options.convergence = options.html = false;
     }
-    RunOutputs outputs = writeRunOutputs(args.out, scene, initial, layout, nullptr, daylight ? &*daylight : nullptr, options);
+    RunOutputs outputs;
+    {
+        std::cout.flush();
+        PictureProgress progress(options);
+        outputs = writeRunOutputs(args.out, scene, initial, layout, nullptr, daylight ? &*daylight : nullptr, options);
+    }
     std::cout << (report ? "report" : "render") << ": wrote";
     if (report) std::cout << " " << args.out << "/layout.json";
     for (const auto& f : outputs.files) std::cout << " " << f.string();
     std::cout << " in " << outputs.seconds << " s\n";
     int met = 0;
     for (size_t k = 0; k < outputs.samplers.size() && k < scene.samplers.size(); ++k)
-        met += outputs.samplers[k].value >= scene.samplers[k].targetMin && outputs.samplers[k].value <= scene.samplers[k].targetMax;
+        met += allMet(lightingTerms(scene.samplers[k], outputs.samplers[k]));
     if (!outputs.samplers.empty())
         std::cout << "  samplers: " << met << " of " << outputs.samplers.size() << " meet their targets\n";
 }

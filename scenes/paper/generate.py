@@ -142,10 +142,10 @@ def workstation(name, position, rotation, regions, desk_target=(300, 500)):
             "placement": {"regions": regions},
             "children": [
                 {"name": "desk", "parts": [{"preset": "desk", "material": "wood"}],
-                 "samplers": [planar(f"{name}_desk", [0, -0.1, 0.76], [1.2, 0.5],
+                 "samplers": [planar("task", [0, -0.1, 0.76], [1.2, 0.5],
                                      desk_target, tolerance=200)]},
                 monitor("monitor", [0, 0.12, 0.75], [-30, 30],
-                        ([-0.4, 0.0], [0.4, 0.2]), f"{name}_glare"),
+                        ([-0.4, 0.0], [0.4, 0.2]), "glare"),
                 {"name": "chair", "position": [0, -0.75], "parts": [
                     {"preset": "office_chair", "material": "fabric"}]},
             ]}
@@ -186,7 +186,7 @@ def fig4_sun_patch():
                                         "rotation_range": [0, 360]}]},
              "fronts": [[0, -1], [1, 0]],
              "parts": [{"preset": "table", "material": "wood"}],
-             "samplers": [planar("table_top", [0, 0, 0.76], [1.0, 0.6], [400, 600],
+             "samplers": [planar("top", [0, 0, 0.76], [1.0, 0.6], [400, 600],
                                  grid=(4, 3))],
              # chairs have no degrees of freedom of their own (no placement)
              "children": [
@@ -203,7 +203,7 @@ def fig4_sun_patch():
              "placement": {"regions": rails},
              "parts": [{"preset": "bookshelf", "material": "wood"}],
              # the front face (entity frame: -y), 0.7 x 1.4 m, facing out of the shelf
-             "samplers": [planar("bookshelf_front", [0, -0.17, 1.0], [0.7, 1.4], [400, 600],
+             "samplers": [planar("front", [0, -0.17, 1.0], [0.7, 1.4], [400, 600],
                                  grid=(2, 4), normal=[0, -1, 0], up=[0, 0, 1])]},
         ],
         "constraints": [
@@ -226,7 +226,7 @@ def fig4_glare():
                                      "rotation_range": [0, 360]}]},
           "children": [
               {"name": "desk", "parts": [{"preset": "desk", "material": "wood"}],
-               "samplers": [planar("desk_top", [0, -0.1, 0.76], [1.2, 0.5], [300, 500])]},
+               "samplers": [planar("top", [0, -0.1, 0.76], [1.2, 0.5], [300, 500])]},
               monitor("monitor", [0, 0.12, 0.75], [-40, 40], ([-0.45, -0.05], [0.45, 0.2]),
                       "screen_glare"),
               {"name": "chair", "position": [0, -0.75],
@@ -288,7 +288,7 @@ def fig4_presenter():
         # the table's two short ends: one of them should point at the screen
         "fronts": [[1, 0], [-1, 0]],
         "parts": [{"preset": "conference_table", "material": "wood"}],
-        "samplers": [planar("table_top", [0, 0, 0.76], [2.0, 0.9], [300, 500], grid=(4, 2))]}
+        "samplers": [planar("top", [0, 0, 0.76], [2.0, 0.9], [300, 500], grid=(4, 2))]}
     scene = {
         "luxplan": 1, "name": "fig4-presenter",
         "site": ATHENS,
@@ -375,11 +375,11 @@ def lab_island(name, position, regions):
     for side, sgn, rot in (("a", -1, 0), ("b", 1, 180)):
         ch.append({"name": f"desk_{side}", "position": [0, 0.35 * sgn], "rotation": rot,
                    "parts": [{"preset": "desk", "material": "wood"}],
-                   "samplers": [planar(f"{name}{side}_desk", [0, -0.1, 0.76], [1.2, 0.5],
+                   "samplers": [planar("task", [0, -0.1, 0.76], [1.2, 0.5],
                                        [300, 500], tolerance=200)]})
         y_lo, y_hi = sorted((0.12 * sgn, 0.28 * sgn))
         ch.append(monitor(f"monitor_{side}", [0, 0.2 * sgn, 0.75], [rot - 30, rot + 30],
-                          ([-0.4, y_lo], [0.4, y_hi]), f"{name}{side}_glare"))
+                          ([-0.4, y_lo], [0.4, y_hi]), "glare"))
         ch.append({"name": f"chair_{side}", "position": [0, 1.05 * sgn], "rotation": rot,
                    "parts": [{"preset": "office_chair", "material": "fabric"}]})
     return {"name": name, "position": list(position), "rotation": 0,
@@ -461,7 +461,7 @@ def living_group(position, regions, glare_max, movable_children=False):
     tv = {"name": "tv", "position": [0, 1.4], "rotation": 0,
           "parts": [{"preset": "tv", "materials": {"body": "plastic", "screen": "screen"}}],
           # a viewer on the sofa (2.7 m away, eyes at 1.0 m) looking at the screen
-          "samplers": [directional("tv_glare", [0, -2.7, 1.0], [0, 1, -0.15], [0, glare_max],
+          "samplers": [directional("glare", [0, -2.7, 1.0], [0, 1, -0.15], [0, glare_max],
                                    fov=40, strata=4)]}
     arm = {"name": "armchair", "position": [1.7, -0.2], "rotation": 270,
            "parts": [{"preset": "armchair", "materials": {"body": "wood", "cushion": "fabric"}}]}
@@ -489,7 +489,7 @@ def dining_group(position, regions, target):
     return {"name": "dining", "position": list(position), "rotation": 0,
             "placement": {"regions": regions},
             "parts": [{"preset": "table", "material": "wood"}],
-            "samplers": [planar("dining_table", [0, 0, 0.76], [1.0, 0.6], target, grid=(3, 2))],
+            "samplers": [planar("table", [0, 0, 0.76], [1.0, 0.6], target, grid=(3, 2))],
             "children": ch}
 
 
@@ -503,7 +503,7 @@ def reading_group(position, regions, target, lamp_flux):
             "placement": {"regions": regions},
             "parts": [{"preset": "armchair", "materials": {"body": "wood", "cushion": "fabric"}}],
             # a book on the lap: 40 x 30 cm at 0.75 m, tilted towards the reader
-            "samplers": [planar("reading", [0, -0.25, 0.75], [0.4, 0.3], target, grid=(2, 2),
+            "samplers": [planar("book", [0, -0.25, 0.75], [0.4, 0.3], target, grid=(2, 2),
                                 normal=[0, 0.5, 0.866])],
             "children": [lamp]}
 
@@ -633,7 +633,7 @@ def round_table(name, position, target):
     return {"name": name, "position": list(position), "rotation": 0,
             "placement": {"regions": [{"min": [1.7, 1.7], "max": [HALL[0] - 1.7, HALL[1] - 1.7]}]},
             "parts": parts,
-            "samplers": [planar(f"{name}_top", [0, 0, 0.76], [1.0, 1.0], target, grid=(3, 3))]}
+            "samplers": [planar("top", [0, 0, 0.76], [1.0, 1.0], target, grid=(3, 3))]}
 
 
 def event_hall(variant):

@@ -262,6 +262,8 @@ TEST(Cli, RenderReportAndOptimizeWriteTheirPictures) {
     Result r = run("render " + scene.string() + " --layout " + layout.string() + " -o " + render.string() + tiny + " --raw");
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_EQ(expectPng(render / "render.png"), std::pair(48, 32));
+    EXPECT_EQ(expectPng(render / "render_luminance.png"), std::pair(48 + 90, 140));  // the view and its legend
+    EXPECT_NE(r.output.find("pictures: rendering 48 x 32 px at 1 samples per pixel"), std::string::npos) << r.output;
     expectPng(render / "plan.png");
     expectGlb(render / "scene.glb");
     EXPECT_FALSE(std::filesystem::exists(render / "report.html"));
@@ -269,10 +271,11 @@ TEST(Cli, RenderReportAndOptimizeWriteTheirPictures) {
     auto report = dir.path() / "report";
     r = run("report " + scene.string() + " --layout " + layout.string() + " -o " + report.string() + tiny);
     ASSERT_EQ(r.exitCode, 0) << r.output;
-    for (const char* png : {"plan.png", "plan_initial_vs_optimized.png", "render.png"}) expectPng(report / png);
+    for (const char* png : {"plan.png", "plan_initial_vs_optimized.png", "render.png", "render_luminance.png"})
+        expectPng(report / png);
     EXPECT_FALSE(std::filesystem::exists(report / "convergence.png"));
     expectGlb(report / "scene.glb");
-    EXPECT_GE(expectReport(report), 5);  // 3 pictures (each an img and a link), scene.glb, layout.json
+    EXPECT_GE(expectReport(report), 6);  // 4 pictures (each an img and a link), scene.glb, layout.json
 
     auto optimized = dir.path() / "optimized";
     r = run("optimize " + scene.string() + " -o " + optimized.string() + " --iterations 40 -q" + small);

@@ -3,6 +3,8 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <regex>
 
 #include <nlohmann/json.hpp>
 
@@ -38,6 +40,34 @@ TEST(MeasureAt, IsTheSceneWithThatInstantAsItsPeriod) {
         differsFromThePeriod |= a["samplers"][k]["value"] != period["samplers"][k]["value"];
     }
     EXPECT_TRUE(differsFromThePeriod);
+}
+
+// report.html's hour by hour: each row is measure --at that hour (64 paths per point).
+TEST(MeasureAt, TheReportsHourByHourIsMeasureAtEachHour) {
+    test::TempDir dir;
+    const auto out = dir.path() / "report";
+    test::CliResult r = test::runCli("report " + kOffice + " -o " + out.string() +
+                                     " --seed 3 --paths 8 --width 24 --height 16 --spp 1 --cell 2 --cell-paths 1 --threads 2");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    std::ifstream in(out / "report.html");
+    const std::string html((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    // The office's period is 08:00 to 11:00: four rows.
+    for (const char* hour : {"08:00", "09:00", "10:00", "11:00"})
+        EXPECT_NE(html.find(std::string("<td>2026-03-20T") + hour + "+02:00</td>"), std::string::npos) << hour;
+    const std::string at = "2026-03-20T09:00+02:00";
+    const size_t begin = html.find("<tr><td>" + at + "</td>");
+    ASSERT_NE(begin, std::string::npos);
+    const std::string cells = html.substr(begin, html.find("</tr>", begin) - begin);
+    std::vector<double> shown;
+    std::regex value(R"re(<td class="num (?:met|missed)">([-0-9.]+)</td>)re");
+    for (auto it = std::sregex_iterator(cells.begin(), cells.end(), value); it != std::sregex_iterator(); ++it)
+        shown.push_back(std::stod((*it)[1].str()));
+    test::CliResult m = test::runCli("measure " + kOffice + " --json --paths 64 --seed 3 --threads 2 --at " + at);
+    ASSERT_EQ(m.exitCode, 0) << m.output;
+    const nlohmann::json measured = nlohmann::json::parse(m.output);
+    ASSERT_EQ(shown.size(), measured["samplers"].size());
+    for (size_t k = 0; k < shown.size(); ++k)
+        EXPECT_NEAR(shown[k], measured["samplers"][k]["value"].get<double>(), 0.051) << measured["samplers"][k]["name"];
 }
 
 TEST(MeasureAt, RefusesABadTimeAndASceneWithoutDaylight) {

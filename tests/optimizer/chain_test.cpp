@@ -7,6 +7,8 @@
 #include <cmath>
 #include <functional>
 
+#include <luxplan/constraints/constraint_type.h>
+#include <luxplan/constraints/geometry_cost.h>
 #include <luxplan/core/rng.h>
 #include <luxplan/lightsamplers/sampler_type.h>
 #include <luxplan/optimizer/optimizer.h>
@@ -85,6 +87,7 @@ struct ChainSetup {
     bool noiseAware = true;
     bool nested = false;
     int innerIterations = 4;
+    bool delayedAcceptance = true;
 };
 
 // Runs the chain from the scene's placement and bins the state every `thin` steps.
@@ -103,6 +106,7 @@ test::Chi2Result sampleChain(const Scene& scene, LightingEvaluator& lighting, co
     o.noiseAware = setup.noiseAware;
     o.focusInner = setup.nested;
     o.innerIterations = setup.innerIterations;
+    o.delayedAcceptance = setup.delayedAcceptance;
     Optimizer chain(scene, o, &lighting);
     chain.initialize();
     std::vector<double> observed(weights.size(), 0);
@@ -153,6 +157,47 @@ TEST(Chain, DiscreteStatesFollowTheBoltzmannLaw) {
     for (int st = 0; st < 7; ++st) weights.push_back(std::exp(-cost(st) / setup.temperature));
     auto r = sampleChain(s, lighting, setup, state, weights);
     EXPECT_GT(r.pValue, 1e-3) << r.table;
+}
+
+// Both terms vary: C = 0.5 L + 0.5 G, L from the state and G a distance rule to a
+// fixed entity 12 m along x (soft, tolerance 20 m, so the slots pay 0.55, 0.3 and
+// 0.05). Delayed acceptance (the rules' change first, the light's after) and the
+// single test both sample exp(-C / T).
+TEST(Chain, DelayedAcceptanceFollowsTheBoltzmannLaw) {
+    test::SceneBuilder b;
+    b.lightingWeight(0.5).sampler("s", planarSampler({0, 0, 1}, {0, 0, 1}, {0, 1, 0}, {1, 1}, {4, 4}), 0, 100);
+    b.entity("e")
+        .region({0, 0}, {0, 0}, {0, 90})
+        .region({5, 0}, {5, 0}, {0})
+        .region({10, 0}, {10, 0}, {0, 90, 180, 270})
+        .end();  // first, so that threeSlotsState reads it
+    b.entity("anchor", {12, 0, 0}).end();
+    b.constraint(distanceConstraint({0, 1, 20.0}), "e", "anchor");
+    Scene s = b.build();
+    auto light = [](int state) { return 0.2 + 0.04 * state; };
+    FunctionLighting lighting([&](const std::vector<Transform>& world) { return light(threeSlotsState(world)); });
+    // G of each state, from the evaluator itself.
+    std::vector<double> geometry;
+    for (int st = 0; st < 7; ++st) {
+        Layout l = initialLayout(s);
+        Placement& p = l.placements[size_t(s.findEntity("e"))];
+        p.region = st < 2 ? 0 : st == 2 ? 1 : 2;
+        p.position = {p.region * 5.0, 0, 0};
+        p.rotationDeg = st < 2 ? 90.0 * st : st == 2 ? 0 : 90.0 * (st - 3);
+        GeometryResult g = GeometryEvaluator(s).evaluate(worldTransforms(s, l));
+        ASSERT_FALSE(g.rejected) << st;
+        geometry.push_back(g.cost);
+    }
+    EXPECT_GT(geometry[0] - geometry[3], 0.1);  // the rule matters as much as the light
+    for (bool delayed : {true, false}) {
+        ChainSetup setup;
+        setup.delayedAcceptance = delayed;
+        std::vector<double> weights;
+        for (int st = 0; st < 7; ++st) weights.push_back(std::exp(-(0.5 * light(st) + 0.5 * geometry[size_t(st)]) / setup.temperature));
+        auto r = sampleChain(s, lighting, setup, [](const Layout&, const std::vector<Transform>& w) { return threeSlotsState(w); },
+                             weights);
+        EXPECT_GT(r.pValue, 1e-3) << (delayed ? "delayed" : "single") << "\n" << r.table;
+    }
 }
 
 // The discrete target of the test above with noisy estimates of C.

@@ -97,7 +97,7 @@ TEST(Denoise, ALowSampleRenderComesCloserToAHighSampleOne) {
     const double exposure = autoExposure(reference);
     const Image truth = toneMap(reference, exposure);
     auto meanError = [&](const std::vector<double>& v) {
-        Image image = toneMap(LuminanceImage{o.width, o.height, v, {}, {}}, exposure);
+        Image image = toneMap(LuminanceImage{o.width, o.height, v, {}, {}, {}}, exposure);
         double sum = 0;
         for (size_t i = 0; i < image.pixels().size(); ++i) sum += std::abs(double(image.pixels()[i].r) - truth.pixels()[i].r);
         return sum / double(image.pixels().size());

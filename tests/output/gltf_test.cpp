@@ -8,6 +8,9 @@
 
 #include <luxplan/core/error.h>
 #include <luxplan/output/gltf_export.h>
+#include <luxplan/daylight/daylight.h>
+#include "support/scene_builder.h"
+#include "support/scene_lab.h"
 #include "support/shared_scenes.h"
 #include "support/temp_files.h"
 
@@ -133,6 +136,81 @@ TEST(Gltf, BlackBodyColours) {
     EXPECT_GT(warm.y, warm.z);
     Vec3 cold = blackBodyRgb(12000);
     EXPECT_EQ(cold.z, 1.0);
+}
+
+// A table of two box parts (top and one leg) under a uniform 2000 cd/m2 sky and a sun
+// at 30 deg altitude due south (azimuth 180) with 60 klx at normal incidence.
+Scene daylitTable() {
+    DaylightParams d;
+    d.model = SkyModelType::Uniform;
+    d.luminanceNits = 2000;
+    d.sunOverride = SunOverride{30, 180, 60000};
+    d.groundReflectance = 0;
+    return test::SceneBuilder()
+        .material("wall", test::diffuse(0.5))
+        .material("wood", test::diffuse(0.4))
+        .daylight(d)
+        .room({0, 0, 0}, {4, 4, 3}, "wall", "wall", "wall")
+        .window(Wall::South, 1, 2, 0.9, 1.2)
+        .entity("table", {2, 2, 0}).part({1.2, 0.8, 0.04}, "wood", Vec3(0, 0, 0.73)).part({0.05, 0.05, 0.71}, "wood").end()
+        .build();
+}
+
+TEST(Gltf, PartsAreNodesAndTheSunAndSkyAreThere) {
+    test::SceneLab lab(daylitTable());
+    test::TempDir dir;
+    const auto file = dir.path() / "scene.glb";
+    writeGlb(file, lab.scene, initialLayout(lab.scene), &*lab.daylight);
+    tinygltf::Model m;
+    tinygltf::TinyGLTF loader;
+    std::string err, warn;
+    ASSERT_TRUE(loader.LoadBinaryFromFile(&m, &err, &warn, file.string())) << err;
+
+    // The table is a node placed by the layout, its two parts child nodes with meshes.
+    const tinygltf::Node* table = findNode(m, "table");
+    ASSERT_NE(table, nullptr);
+    EXPECT_EQ(table->mesh, -1);
+    ASSERT_EQ(table->children.size(), 2u);
+    const tinygltf::Node& top = m.nodes[size_t(table->children[0])];
+    EXPECT_EQ(top.name, "table part 1: box");
+    EXPECT_EQ(m.nodes[size_t(table->children[1])].name, "table part 2: box");
+    ASSERT_GE(top.mesh, 0);
+    // Part 1's mesh is the top alone: 12 triangles, its bounds the top's (glTF y-up).
+    const tinygltf::Primitive& prim = m.meshes[size_t(top.mesh)].primitives.at(0);
+    EXPECT_EQ(m.accessors[size_t(prim.indices)].count, 36u);
+    const tinygltf::Accessor& pos = m.accessors[size_t(prim.attributes.at("POSITION"))];
+    EXPECT_NEAR(pos.minValues[1], 0.71, 1e-6);
+    EXPECT_NEAR(pos.maxValues[1], 0.75, 1e-6);
+    // The scene's root nodes are room and table and the sun, not the parts.
+    for (int root : m.scenes[0].nodes) EXPECT_EQ(m.nodes[size_t(root)].name.find(" part "), std::string::npos);
+
+    // The sun: a directional light of 60 klx shining along -z of its node, i.e. from
+    // the south (luxplan -y, glTF +z) downwards at 30 deg.
+    const tinygltf::Node* sun = findNode(m, "sun");
+    ASSERT_NE(sun, nullptr);
+    ASSERT_TRUE(sun->extensions.count("KHR_lights_punctual"));
+    const tinygltf::Light& light = m.lights.at(size_t(sun->extensions.at("KHR_lights_punctual").Get("light").GetNumberAsInt()));
+    EXPECT_EQ(light.type, "directional");
+    EXPECT_NEAR(light.intensity, 60000, 60000 * 1e-6);
+    Vec3 shines = rotate(*sun, Vec3(0, 0, -1));  // glTF frame
+    Vec3 expected(0, -std::sin(radians(30)), -std::cos(radians(30)));  // luxplan (0, +cos, -sin) in glTF
+    EXPECT_NEAR(shines.x, expected.x, 1e-6);
+    EXPECT_NEAR(shines.y, expected.y, 1e-6);
+    EXPECT_NEAR(shines.z, expected.z, 1e-6);
+
+    // The sky: a uniform 2000 cd/m2 sky is its own mean, E_h = pi L.
+    const tinygltf::Value& sky = m.scenes[0].extras.Get("sky");
+    ASSERT_TRUE(sky.IsObject());
+    EXPECT_NEAR(sky.Get("luminance_cd_m2").GetNumberAsDouble(), 2000, 2000 * 1e-3);
+    EXPECT_NEAR(sky.Get("horizontal_illuminance_lx").GetNumberAsDouble(), kPi * 2000, kPi * 2000 * 1e-2);
+    EXPECT_EQ(sky.Get("color").ArrayLen(), 3u);
+
+    // Without daylight: no sun, no sky.
+    writeGlb(file, lab.scene, initialLayout(lab.scene));
+    tinygltf::Model night;
+    ASSERT_TRUE(loader.LoadBinaryFromFile(&night, &err, &warn, file.string())) << err;
+    EXPECT_EQ(findNode(night, "sun"), nullptr);
+    EXPECT_FALSE(night.scenes[0].extras.Has("sky"));
 }
 
 }  // namespace

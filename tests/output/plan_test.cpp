@@ -181,7 +181,36 @@ TEST(Plan, ScaleCentresOnTheTargetsAndATableListsTheWorkPlanes) {
     // Contours can be turned off; on, they draw dark lines over the map.
     PlanOptions noLines;
     noLines.contours = false;
-    EXPECT_NE(renderPlan(lab.scene, initialLayout(lab.scene), noLines, data).pixels(), withTable.pixels());
+    Image plain = renderPlan(lab.scene, initialLayout(lab.scene), noLines, data);
+    int changed = 0, darker = 0;
+    for (int y = 0; y < plain.height(); ++y)
+        for (int x = 0; x < plain.width(); ++x) {
+            Rgb a = plain.at(x, y), b = withTable.at(x, y);
+            if (a == b) continue;
+            ++changed;
+            darker += int(b.r) + b.g + b.b < int(a.r) + a.g + a.b;
+        }
+    EXPECT_GT(changed, 100);
+    EXPECT_GT(darker, changed / 2);  // dark lines (their value labels sit on light boxes)
+    // The target band is marked beside the legend: without a band, that mark is gone.
+    PlanOptions noBand;
+    noBand.colors = planFalseColor(lab.scene, {});
+    noBand.colors->band.reset();
+    Image unmarked = renderPlan(lab.scene, initialLayout(lab.scene), noBand, data);
+    const int legendX = 8 * 80 + 50 + int(std::max(4.0, 0.12 * 80)) + 62;  // the bar's left edge
+    int mark = 0;
+    for (int y = 0; y < withTable.height(); ++y)
+        for (int x = legendX - 50; x < legendX; ++x) mark += withTable.at(x, y) != unmarked.at(x, y);
+    EXPECT_GT(mark, 40);
+    // The legend's bar (210 px for a 4 m deep room at 80 px/m) holds the ramp's ends.
+    const int barHeight = 4 * 80 - 110;
+    bool top = false, bottom = false;
+    for (int y = 0; y < withTable.height(); ++y) {
+        top = top || withTable.at(legendX + 8, y) == falseColorRamp(1 - 0.5 / barHeight);
+        bottom = bottom || withTable.at(legendX + 8, y) == falseColorRamp(0.5 / barHeight);
+    }
+    EXPECT_TRUE(top);
+    EXPECT_TRUE(bottom);
 }
 
 }  // namespace

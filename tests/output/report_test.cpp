@@ -9,6 +9,7 @@
 #include <luxplan/constraints/constraint_type.h>
 #include <luxplan/lightsamplers/sampler_type.h>
 #include <luxplan/output/report_html.h>
+#include <luxplan/output/report_viewer.h>
 #include "support/scene_builder.h"
 #include "support/temp_files.h"
 
@@ -95,6 +96,74 @@ TEST(ReportHtml, OptimizerResultSections) {
                              "Not measured"})
         EXPECT_NE(html.find(part), std::string::npos) << part;
     EXPECT_TRUE(links(html).empty());  // nothing written to the folder yet
+}
+
+TEST(ReportHtml, MissAdviceFollowsTheLightBudget) {
+    Scene scene = makeScene();  // sampler 0: 300-500 lx
+    scene.emitters.push_back(Emitter{});
+    scene.emitters.back().name = "pendant";
+    const LightSamplerSpec& s = scene.samplers[0];
+    SamplerBudget daylit;
+    daylit.sun = 0.6, daylit.sky = 0.2, daylit.interreflected = 0.2, daylit.emitters = {0};
+    EXPECT_EQ(missAdvice(scene, s, 400, daylit), "");  // met
+    EXPECT_EQ(missAdvice(scene, s, 900, daylit),
+              "above its target; 80% of its light is daylight (sun 60%, sky 20%): out of the sun patch, or a blind");
+    EXPECT_EQ(missAdvice(scene, s, 100, daylit),
+              "below its target; 80% of its light is daylight (sun 60%, sky 20%): nearer the window, or more light from a luminaire");
+    SamplerBudget lamp;
+    lamp.interreflected = 0.3, lamp.emitters = {0.7};
+    EXPECT_EQ(missAdvice(scene, s, 100, lamp), "below its target; 70% of its light is from pendant: nearer it, or more flux");
+    SamplerBudget reflected;
+    reflected.interreflected = 0.9, reflected.emitters = {0.1};
+    EXPECT_EQ(missAdvice(scene, s, 100, reflected),
+              "below its target; 90% of its light is reflected: lighter surfaces around it, or a direct source");
+    EXPECT_EQ(missAdvice(scene, s, 100, SamplerBudget{}), "below its target; no light reaches it");
+
+    // In the page: the budget column and the list of misses.
+    ReportData data;
+    data.samplers = {SamplerResult{}, SamplerResult{}};
+    data.samplers[0].value = 900, data.samplers[1].value = 150;
+    data.budgets = {daylit, lamp};
+    test::TempDir dir;
+    const std::string html = reportHtml(dir.path(), scene, nullptr, data);
+    EXPECT_NE(html.find("<th>light from</th>"), std::string::npos);
+    EXPECT_NE(html.find("sun 60%, sky 20%, interreflection 20%"), std::string::npos);
+    EXPECT_NE(html.find("Why samplers miss"), std::string::npos);
+    EXPECT_NE(html.find("out of the sun patch, or a blind (one layout measured"), std::string::npos);
+}
+
+TEST(ReportViewer, MissingPackageIsSaidAndTheSectionLeftOut) {
+    test::TempDir dir;
+    ::setenv("LUXPLAN_WEB_DIR", (dir.path() / "nowhere").c_str(), 1);
+    const std::string why = copyViewerScripts(dir.path());
+    ::unsetenv("LUXPLAN_WEB_DIR");
+    EXPECT_NE(why.find("three.min.js is missing (run scripts/install-deps.sh"), std::string::npos) << why;
+    EXPECT_FALSE(std::filesystem::exists(dir.path() / "viewer"));
+    EXPECT_EQ(viewerSection(dir.path()), "");
+    // With the installed package: the scripts are copied, and the section embeds the glb.
+    ASSERT_EQ(copyViewerScripts(dir.path()), "") << "run scripts/install-deps.sh";
+    for (const char* script : kViewerScripts) EXPECT_TRUE(std::filesystem::is_regular_file(dir.path() / script)) << script;
+    EXPECT_EQ(viewerSection(dir.path()), "");  // no scene.glb yet
+    std::ofstream(dir.path() / "scene.glb", std::ios::binary) << "glTF";
+    const std::string html = viewerSection(dir.path());
+    EXPECT_NE(html.find("<canvas id=\"viewer-canvas\""), std::string::npos);
+    EXPECT_NE(html.find("Z2xURg=="), std::string::npos);  // "glTF" in base64
+    EXPECT_NE(html.find("<script src=\"viewer/three.min.js\"></script>"), std::string::npos);
+}
+
+TEST(ReportHtml, HourByHourTableColoursEachHour) {
+    Scene scene = makeScene();  // 300-500 lx, and at least 100 lx
+    ReportData data;
+    data.hours.push_back({"2026-06-21T09:00+01:00", {SamplerResult{}, SamplerResult{}}});
+    data.hours[0].samplers[0].value = 420, data.hours[0].samplers[1].value = 50;
+    test::TempDir dir;
+    const std::string html = reportHtml(dir.path(), scene, nullptr, data);
+    EXPECT_NE(html.find("<h2>The daylight hour by hour</h2>"), std::string::npos);
+    EXPECT_NE(html.find("<td>2026-06-21T09:00+01:00</td><td class=\"num met\">420.0</td><td class=\"num missed\">50.0</td>"
+                        "<td class=\"num\">1 of 2</td>"),
+              std::string::npos)
+        << html;
+    EXPECT_EQ(reportHtml(dir.path(), scene, nullptr, {}).find("hour by hour"), std::string::npos);
 }
 
 }  // namespace

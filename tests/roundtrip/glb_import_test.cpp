@@ -5,6 +5,7 @@
 
 #include <luxplan/io/mesh_io.h>
 #include <luxplan/output/gltf_export.h>
+#include "support/scene_builder.h"
 #include "support/shared_scenes.h"
 #include "support/temp_files.h"
 
@@ -66,6 +67,34 @@ TEST(GlbImport, LuxplanImportGivesTheSceneBack) {
     EXPECT_EQ(backMoved.triangleCount(), movedTriangles);
     expectBounds(backMoved.bounds(), movedBounds);
     EXPECT_GT(movedBounds.hi.x, bounds.hi.x);  // the desk now sticks out of the room
+}
+
+TEST(GlbImport, PartsAsChildNodesComeBackPlaced) {
+    // Two box parts of one entity, turned 90 deg and moved: each part is a child node of
+    // the entity's node, and the import composes the two transforms.
+    test::TempDir dir;
+    const Scene scene = test::SceneBuilder()
+                            .material("wall", test::diffuse(0.5))
+                            .room({0, 0, 0}, {5, 4, 3}, "wall", "wall", "wall")
+                            .entity("table", {2, 1, 0}, 90)
+                            .part({1.2, 0.6, 0.04}, "wall", Vec3(0, 0, 0.73))
+                            .part({0.05, 0.05, 0.71}, "wall", Vec3(0.5, 0.2, 0.355))
+                            .end()
+                            .build();
+    const Layout layout = initialLayout(scene);
+    const auto file = dir.path() / "scene.glb";
+    writeGlb(file, scene, layout);
+    auto [bounds, triangles] = visibleGeometry(scene, layout);
+    TriangleMesh back = io::loadMeshFile(file, 0);
+    EXPECT_EQ(back.triangleCount(), triangles - kEmitterTriangles);
+    expectBounds(back.bounds(), bounds);
+    // The table alone (every point but the room's corners): the placed parts' bounds.
+    TriangleMesh placed;
+    placed.append(scene.entities[0].mesh, worldTransforms(scene, layout)[0]);
+    Bounds3 tableBack;
+    for (const auto& p : back.positions)
+        if (!((p.x < 1e-4 || p.x > 5 - 1e-4) && (p.y < 1e-4 || p.y > 4 - 1e-4))) tableBack.extend(p);
+    expectBounds(tableBack, placed.bounds());
 }
 
 }  // namespace

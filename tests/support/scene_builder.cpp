@@ -355,6 +355,7 @@ Scene SceneBuilder::build() const {
                             Transform::translate(c - Vec3(0, 0, size.z / 2)));
             }
             info.bounds = mesh.bounds();
+            info.firstTriangle = e.mesh.triangles.size(), info.triangles = mesh.triangles.size();
             e.parts.push_back(info);
             e.mesh.append(mesh);
         }

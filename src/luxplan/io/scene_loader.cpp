@@ -908,6 +908,7 @@ private:
         f.finish(article(std::string(kinds.name(*kind)) + " part"), family);
         info.bounds = mesh.bounds();
         Entity& e = scene_.entities[entity];
+        info.firstTriangle = e.mesh.triangles.size(), info.triangles = mesh.triangles.size();
         e.parts.push_back(info);
         e.mesh.append(mesh);
     }

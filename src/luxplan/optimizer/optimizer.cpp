@@ -98,15 +98,26 @@ Optimizer::Optimizer(const Scene& scene, OptimizerOptions options, LightingEvalu
 }
 
 Evaluation Optimizer::evaluate(const Layout& layout, const std::vector<Transform>& world) {
+    Evaluation e = evaluateGeometry(world);
+    // Section 3: the lighting term only for layouts that pass the geometric test.
+    if (!e.rejected) addLighting(e, layout, world);
+    return e;
+}
+
+Evaluation Optimizer::evaluateGeometry(const std::vector<Transform>& world) {
     GeometryResult g = geometry_.evaluate(world);
     Evaluation e;
     e.geometry = g.cost;
     e.rejected = g.rejected;
     e.violation = g.violation;
     e.rejectedBy = std::move(g.rejectedBy);
+    e.cost = scene_->objective.cost(e.lighting, e.geometry);
+    return e;
+}
+
+void Optimizer::addLighting(Evaluation& e, const Layout& layout, const std::vector<Transform>& world) {
     const double w = scene_->objective.lightingWeight;
-    // Section 3: the lighting term only for layouts that pass the geometric test.
-    if (!e.rejected && lighting_ && !scene_->samplers.empty() && w > 0) {
+    if (lighting_ && !scene_->samplers.empty() && w > 0) {
         e.lighting = lighting_->evaluate(layout, world, &e.samplers);
         e.lightingEvaluated = true;
         e.costError = costError(e);
@@ -117,7 +128,6 @@ Evaluation Optimizer::evaluate(const Layout& layout, const std::vector<Transform
         }
     }
     e.cost = scene_->objective.cost(e.lighting, e.geometry);
-    return e;
 }
 
 uint64_t Optimizer::independentSeed(uint64_t stream) const {
@@ -158,6 +168,22 @@ bool Optimizer::metropolis(const Evaluation& proposed, double logHastings, doubl
     // random numbers the estimates are a fixed function of the layout, for which the
     // plain test is exact (the chain samples exp(-C_estimated / T)) and the penalty
     // would not be: a(d) / a(-d) = exp(-d / T) fails for |d| < s^2 / (2 T).
+    if (options_.noiseAware && lighting_ && lighting_->drawsAnew())
+        logA -= differenceVariance(currentEval_, proposed) / (2 * temperature * temperature);
+    return logA >= 0 || rng.uniform() < std::exp(logA);
+}
+
+bool Optimizer::geometricStage(const Evaluation& proposed, double logHastings, double temperature, Rng& rng) const {
+    const double w = scene_->objective.lightingWeight;
+    const double logA = -(1 - w) * (proposed.geometry - currentEval_.geometry) / temperature + logHastings;
+    return logA >= 0 || rng.uniform() < std::exp(logA);
+}
+
+bool Optimizer::lightingStage(const Evaluation& proposed, double temperature, Rng& rng) const {
+    // The full test's ratio over the first stage's: exp(-w dL / T), the geometric part
+    // and the proposal ratio already tested.
+    const double w = scene_->objective.lightingWeight;
+    double logA = -w * (proposed.lighting - currentEval_.lighting) / temperature;
     if (options_.noiseAware && lighting_ && lighting_->drawsAnew())
         logA -= differenceVariance(currentEval_, proposed) / (2 * temperature * temperature);
     return logA >= 0 || rng.uniform() < std::exp(logA);
@@ -324,14 +350,27 @@ void Optimizer::step() {
     if (!p.valid) {
         ++stats.outside;
     } else {
-        if (lighting_ && lighting_->drawsAnew() && currentEval_.lightingEvaluated) refreshCurrent();
-        e = evaluate(proposed, worldTransforms(*scene_, proposed));
-        if (currentEval_.rejected) {
-            // Repair (only before the first feasible state): descend on the total
-            // violation; a feasible proposal always ends the repair.
-            accept = !e.rejected || e.violation <= currentEval_.violation;
-        } else if (!e.rejected) {
-            accept = metropolis(e, p.logHastings, t, rng);
+        const std::vector<Transform> world = worldTransforms(*scene_, proposed);
+        if (options_.delayedAcceptance && !currentEval_.rejected) {
+            // Delayed acceptance: the rules' change first, the light only if it passes.
+            e = evaluateGeometry(world);
+            if (!e.rejected && !geometricStage(e, p.logHastings, t, rng)) {
+                ++stats.screened;
+            } else if (!e.rejected) {
+                if (lighting_ && lighting_->drawsAnew() && currentEval_.lightingEvaluated) refreshCurrent();
+                addLighting(e, proposed, world);
+                accept = lightingStage(e, t, rng);
+            }
+        } else {
+            if (lighting_ && lighting_->drawsAnew() && currentEval_.lightingEvaluated) refreshCurrent();
+            e = evaluate(proposed, world);
+            if (currentEval_.rejected) {
+                // Repair (only before the first feasible state): descend on the total
+                // violation; a feasible proposal always ends the repair.
+                accept = !e.rejected || e.violation <= currentEval_.violation;
+            } else if (!e.rejected) {
+                accept = metropolis(e, p.logHastings, t, rng);
+            }
         }
         noteNoise(e);
         if (e.rejected && !accept) ++stats.rejectedGeometry;

@@ -76,6 +76,13 @@ struct OptimizerOptions {
     // method of Ceperley and Dewing (1999), exp(-dC / T - s^2 / (2 T^2)) with s the
     // standard error of dC. Off: the plain test on the estimates, as the paper does.
     bool noiseAware = true;
+    // Delayed acceptance (Christen and Fox 2005): a proposal is first tested on its
+    // geometric change alone, min(1, exp(-(1 - w) dG / T) q'/q); only one that passes is
+    // lit and tested again on its lighting change, min(1, exp(-w dL / T)) (with the
+    // noise penalty). The product is the full Metropolis-Hastings acceptance's
+    // detailed balance, and a proposal that worsens the layout's rules beyond the
+    // temperature costs no light. Off: one test on dC after lighting every proposal.
+    bool delayedAcceptance = true;
     // How many distinct layouts the run keeps for its result, and what distinct means
     // (optimizer/candidates.h). At the end, each is measured again independently and
     // the best of those measurements is the result, measured once more for the report.
@@ -92,6 +99,7 @@ struct MoveStats {
     int64_t proposed = 0;
     int64_t outside = 0;           // left the regions (or a null move): stayed without evaluating
     int64_t rejectedGeometry = 0;  // a geometric term rejected the proposal (no lighting evaluated)
+    int64_t screened = 0;          // rejected on its geometric change alone (delayed acceptance; no lighting evaluated)
     int64_t accepted = 0;
     double acceptance() const { return proposed ? double(accepted) / double(proposed) : 0.0; }
 };
@@ -178,6 +186,10 @@ public:
     // Evaluates a layout: G first, the lighting hook only when nothing rejects. The
     // overlap cache follows the layout until step() commits or reverts it.
     Evaluation evaluate(const Layout& layout, const std::vector<Transform>& world);
+    // The two halves of evaluate(): the geometric terms (cost without light), then the
+    // lighting term of a layout that passed the geometric test.
+    Evaluation evaluateGeometry(const std::vector<Transform>& world);
+    void addLighting(Evaluation& e, const Layout& layout, const std::vector<Transform>& world);
 
 private:
     // The next proposal's move set and level (stats, random stream); updates the
@@ -187,6 +199,10 @@ private:
     void record();
     // Metropolis-Hastings acceptance of `proposed` from the current state.
     bool metropolis(const Evaluation& proposed, double logHastings, double temperature, Rng& rng) const;
+    // Delayed acceptance's first stage: the geometric change and the proposal ratio.
+    bool geometricStage(const Evaluation& proposed, double logHastings, double temperature, Rng& rng) const;
+    // ... and its second: the lighting change, with the noise penalty.
+    bool lightingStage(const Evaluation& proposed, double temperature, Rng& rng) const;
     // The variance of the estimated difference of C between two evaluations.
     double differenceVariance(const Evaluation& a, const Evaluation& b) const;
     void noteNoise(const Evaluation& e);

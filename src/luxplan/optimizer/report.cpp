@@ -34,7 +34,7 @@ const char* targetName(OverlapTarget t) {
 
 Json moveJson(const MoveStats& s) {
     return {{"proposed", s.proposed}, {"accepted", s.accepted}, {"outside", s.outside},
-            {"rejected_geometry", s.rejectedGeometry}, {"acceptance", s.acceptance()}};
+            {"rejected_geometry", s.rejectedGeometry}, {"screened", s.screened}, {"acceptance", s.acceptance()}};
 }
 
 Json termJson(const Scene& scene, const PenaltyTerm& t) {
@@ -144,7 +144,7 @@ std::string reportJson(const Scene& scene, const OptimizerResult& r) {
         for (const LevelStats& level : r.levels) {
             const MoveStats& s = level.moves[int(t)];
             total.proposed += s.proposed, total.accepted += s.accepted;
-            total.outside += s.outside, total.rejectedGeometry += s.rejectedGeometry;
+            total.outside += s.outside, total.rejectedGeometry += s.rejectedGeometry, total.screened += s.screened;
         }
         moves[moveName(t)] = moveJson(total);
     }

@@ -1,6 +1,7 @@
 // glTF 2.0 export of a scene under a layout: meshes split into one primitive per
 // material, PBR materials, emitters as emissive shapes and KHR_lights_punctual lights.
 #include <luxplan/output/gltf_export.h>
+#include <luxplan/output/black_body.h>
 
 #include <algorithm>
 #include <cmath>
@@ -91,12 +92,14 @@ public:
         for (const Material& m : scene.materials) addMaterial(m);
     }
 
-    // Adds a glTF mesh with one primitive per material; positions and normals are
-    // taken through `vertexTransform` (a rotation and translation). -1 for an empty mesh.
+    // Adds a glTF mesh with one primitive per material of the triangles [first, first +
+    // count) of `mesh`; positions and normals are taken through `vertexTransform` (a
+    // rotation and translation). -1 for an empty mesh.
     int addMesh(const std::string& name, const TriangleMesh& mesh, const Transform& vertexTransform,
-                int materialOverride = -1) {
+                int materialOverride = -1, size_t first = 0, size_t count = std::numeric_limits<size_t>::max()) {
         std::map<int, std::vector<size_t>> byMaterial;
-        for (size_t t = 0; t < mesh.triangles.size(); ++t)
+        const size_t end = std::min(mesh.triangles.size(), first + std::min(count, mesh.triangles.size()));
+        for (size_t t = first; t < end; ++t)
             byMaterial[materialOverride >= 0 ? materialOverride : int(mesh.materials[t])].push_back(t);
         tinygltf::Mesh out;
         out.name = name;
@@ -140,8 +143,10 @@ public:
         return int(model_.meshes.size()) - 1;
     }
 
-    // A root node; `transform` is in glTF's frame.
-    tinygltf::Node& addNode(const std::string& name, int mesh, const Transform& transform, const std::string& jsonPath) {
+    // A node, at the root or a child of node `parent`; `transform` is in glTF's frame,
+    // relative to the parent. Returns its index.
+    int addNode(const std::string& name, int mesh, const Transform& transform, const std::string& jsonPath,
+                int parent = -1) {
         tinygltf::Node node;
         node.name = name;
         node.mesh = mesh;
@@ -149,9 +154,12 @@ public:
         if (!jsonPath.empty())
             node.extras = tinygltf::Value(tinygltf::Value::Object{{"json_path", tinygltf::Value(jsonPath)}});
         model_.nodes.push_back(std::move(node));
-        model_.scenes[0].nodes.push_back(int(model_.nodes.size()) - 1);
-        return model_.nodes.back();
+        const int index = int(model_.nodes.size()) - 1;
+        if (parent >= 0) model_.nodes[size_t(parent)].children.push_back(index);
+        else model_.scenes[0].nodes.push_back(index);
+        return index;
     }
+    tinygltf::Node& node(int index) { return model_.nodes.at(size_t(index)); }
 
     // The emissive material of one emitter (after the scene's materials).
     int addEmitterMaterial(const Emitter& e, const Vec3& rgb) {
@@ -165,13 +173,15 @@ public:
         return int(model_.materials.size()) - 1;
     }
 
-    // A KHR_lights_punctual light of `intensityCd` candela; spot lights get the widest
-    // cone glTF allows (a hemisphere), the closest it has to a Lambertian emitter.
-    int addLight(const std::string& name, bool spot, double intensityCd, const Vec3& rgb) {
+    // A KHR_lights_punctual light of `intensity` (candela; lux for a directional one);
+    // spot lights get the widest cone glTF allows (a hemisphere), the closest it has to
+    // a Lambertian emitter.
+    int addLight(const std::string& name, const char* type, double intensity, const Vec3& rgb) {
         tinygltf::Light light;
         light.name = name;
-        light.type = spot ? "spot" : "point";
-        light.intensity = intensityCd;
+        light.type = type;
+        const bool spot = light.type == "spot";
+        light.intensity = intensity;
         light.color = {rgb.x, rgb.y, rgb.z};
         if (spot) {
             light.spot.innerConeAngle = 0;
@@ -258,27 +268,59 @@ private:
     tinygltf::Model model_;
 };
 
-}  // namespace
-
-Vec3 blackBodyRgb(double kelvin) {
-    // CIE 1931 chromaticity of the Planckian locus (Kim et al. 2002 cubic fits), then
-    // XYZ (Y = 1) to linear sRGB primaries.
-    double t = std::clamp(kelvin, 1667.0, 25000.0);
-    double t2 = t * t, t3 = t2 * t;
-    double x = t <= 4000 ? -0.2661239e9 / t3 - 0.2343589e6 / t2 + 0.8776956e3 / t + 0.179910
-                         : -3.0258469e9 / t3 + 2.1070379e6 / t2 + 0.2226347e3 / t + 0.240390;
-    double x2 = x * x, x3 = x2 * x;
-    double y = t <= 2222   ? -1.1063814 * x3 - 1.34811020 * x2 + 2.18555832 * x - 0.20219683
-               : t <= 4000 ? -0.9549476 * x3 - 1.37418593 * x2 + 2.09137015 * x - 0.16748867
-                           : 3.0817580 * x3 - 5.87338670 * x2 + 3.75112997 * x - 0.37001483;
-    double X = x / y, Y = 1, Z = (1 - x - y) / y;
-    Vec3 rgb(3.2404542 * X - 1.5371385 * Y - 0.4985314 * Z, -0.9692660 * X + 1.8760108 * Y + 0.0415560 * Z,
-             0.0556434 * X - 0.2040259 * Y + 1.0572252 * Z);
-    rgb = max(rgb, Vec3(0, 0, 0));
-    return rgb / maxComponent(rgb);
+// A rotation taking glTF's -z (where cameras look and directional lights shine) to
+// unit `forward`, keeping `up` (not parallel to it) up.
+Transform lookingAlong(Vec3 forward, Vec3 up) {
+    const Vec3 f = normalize(forward);
+    if (length(cross(f, up)) < 1e-6) up = std::abs(f.x) < 0.9 ? Vec3(1, 0, 0) : Vec3(0, 1, 0);
+    const Vec3 r = normalize(cross(f, up)), u = cross(r, f);
+    Transform t;
+    t.m = {r.x, u.x, -f.x, r.y, u.y, -f.y, r.z, u.z, -f.z};
+    return t;
 }
 
-void writeGlb(const std::filesystem::path& file, const Scene& scene, const Layout& layout) {
+}  // namespace
+
+SunSummary summarizeSun(const DaylightEnvironment& daylight) {
+    SunSummary sun;
+    Vec3 direction, color;
+    for (const SunDisk& d : daylight.sunDisks()) {
+        const double e = d.weight * d.normalIlluminanceLx;
+        sun.normalIlluminanceLx += e;
+        direction = direction + d.direction * e;
+        color = color + d.color * e;
+    }
+    if (!(sun.normalIlluminanceLx > 0)) return {};
+    sun.direction = normalize(direction);
+    sun.color = color / sun.normalIlluminanceLx;
+    return sun;
+}
+
+SkySummary summarizeSky(const DaylightEnvironment& daylight) {
+    // The sky's mean radiance over the upper hemisphere, weighted by cos(theta) (E_h = pi L
+    // for a uniform sky), from a fixed grid of directions: enough for a world colour.
+    SkySummary sky;
+    Vec3 sum;
+    double weight = 0;
+    const int rings = 16, segments = 32;
+    for (int i = 0; i < rings; ++i) {
+        const double cosTheta = (i + 0.5) / rings, sinTheta = std::sqrt(1 - cosTheta * cosTheta);
+        for (int k = 0; k < segments; ++k) {
+            const double phi = 2 * kPi * (k + 0.5) / segments;
+            Vec3 w(sinTheta * std::cos(phi), sinTheta * std::sin(phi), cosTheta);
+            sum = sum + daylight.Le(w) * cosTheta;
+            weight += cosTheta;
+        }
+    }
+    const Vec3 mean = sum / weight;
+    sky.luminance = luminance(mean);
+    sky.color = sky.luminance > 0 ? mean / sky.luminance : Vec3(1, 1, 1);
+    sky.horizontalIlluminanceLx = daylight.skyHorizontalIlluminance();
+    return sky;
+}
+
+void writeGlb(const std::filesystem::path& file, const Scene& scene, const Layout& layout,
+              const DaylightEnvironment* daylight) {
     GlbBuilder glb(scene);
     const Transform toGltf = gltfFromLuxplan(), fromGltf = luxplanFromGltf();
     std::vector<Transform> world = worldTransforms(scene, layout);
@@ -288,11 +330,33 @@ void writeGlb(const std::filesystem::path& file, const Scene& scene, const Layou
         int mesh = glb.addMesh(item.name, item.mesh, toGltf);
         if (mesh >= 0) glb.addNode(item.name, mesh, Transform(), item.jsonPath);
     }
+    // An entity is a node placed by the layout; with several parts, each part is a
+    // child node of its own ("desk1.table part 2: box"), so a 3D tool can pick it.
     for (size_t i = 0; i < scene.entities.size(); ++i) {
         const Entity& e = scene.entities[i];
         if (!e.hasGeometry()) continue;
-        int mesh = glb.addMesh(e.path, e.mesh, toGltf);
-        if (mesh >= 0) glb.addNode(e.path, mesh, toGltf * world[i] * fromGltf, e.jsonPath);
+        const Transform placed = toGltf * world[i] * fromGltf;
+        size_t covered = 0;
+        for (const PartInfo& p : e.parts) covered += p.firstTriangle == covered ? p.triangles : e.mesh.triangles.size() + 1;
+        if (e.parts.size() < 2 || covered != e.mesh.triangles.size()) {
+            int mesh = glb.addMesh(e.path, e.mesh, toGltf);
+            if (mesh >= 0) glb.addNode(e.path, mesh, placed, e.jsonPath);
+            continue;
+        }
+        const int node = glb.addNode(e.path, -1, placed, e.jsonPath);
+        for (size_t k = 0; k < e.parts.size(); ++k) {
+            const PartInfo& p = e.parts[k];
+            std::string name = e.path;
+            name += " part ";
+            name += std::to_string(k + 1);
+            name += ": ";
+            name += p.kind.empty() ? "box" : p.kind;
+            int mesh = glb.addMesh(name, e.mesh, toGltf, -1, p.firstTriangle, p.triangles);
+            std::string path = e.jsonPath;
+            path += "/parts/";
+            path += std::to_string(k);
+            if (mesh >= 0) glb.addNode(name, mesh, Transform(), path, node);
+        }
     }
     for (const Emitter& e : scene.emitters) {
         const std::string& name = e.name;  // scoped by its entity already ("desk1.lamp.shade")
@@ -300,21 +364,43 @@ void writeGlb(const std::filesystem::path& file, const Scene& scene, const Layou
         Transform owner = e.entity >= 0 ? world[size_t(e.entity)] : Transform();
         EmitterMesh shape = e.shape->mesh();
         int mesh = glb.addMesh(name, shape.mesh, Transform(), glb.addEmitterMaterial(e, rgb));
-        tinygltf::Node& node = glb.addNode(name, mesh, toGltf * owner * shape.frame, e.jsonPath);
+        const int node = glb.addNode(name, mesh, toGltf * owner * shape.frame, e.jsonPath);
         // Intensity of a Lambertian emitter: flux / (4 pi) all round for one that emits
         // all round; peak (along the normal) flux / pi for a one-sided one.
         bool spot = e.shape->normal().has_value();
-        int light = glb.addLight(name, spot, spot ? e.fluxLm / kPi : e.fluxLm / (4 * kPi), rgb);
-        node.extensions[kLights] = tinygltf::Value(tinygltf::Value::Object{{"light", tinygltf::Value(light)}});
+        int light = glb.addLight(name, spot ? "spot" : "point", spot ? e.fluxLm / kPi : e.fluxLm / (4 * kPi), rgb);
+        glb.node(node).extensions[kLights] = tinygltf::Value(tinygltf::Value::Object{{"light", tinygltf::Value(light)}});
+    }
+
+    // Daylight: the sun as a directional light (lux at normal incidence), shining from
+    // the illuminance-weighted mean of its disks; the sky's colour and luminance in the
+    // scene's extras ("sky"), which glTF has no core place for (docs/outputs.md gives
+    // the lines that make it Blender's world colour).
+    if (daylight) {
+        if (SunSummary sun = summarizeSun(*daylight); sun.normalIlluminanceLx > 0) {
+            int light = glb.addLight("sun", "directional", sun.normalIlluminanceLx, sun.color);
+            const Vec3 travel = toGltf.applyVector(-sun.direction), up = toGltf.applyVector(Vec3(0, 0, 1));
+            Transform orient = lookingAlong(travel, up);
+            orient.t = toGltf.applyPoint(Vec3(0, 0, 10));
+            const int node = glb.addNode("sun", -1, orient, "/daylight");
+            glb.node(node).extensions[kLights] = tinygltf::Value(tinygltf::Value::Object{{"light", tinygltf::Value(light)}});
+        }
+        if (daylight->hasSky()) {
+            const SkySummary sky = summarizeSky(*daylight);
+            tinygltf::Value::Object extras{
+                {"sky", tinygltf::Value(tinygltf::Value::Object{
+                            {"color", tinygltf::Value(tinygltf::Value::Array{tinygltf::Value(sky.color.x), tinygltf::Value(sky.color.y),
+                                                                            tinygltf::Value(sky.color.z)})},
+                            {"luminance_cd_m2", tinygltf::Value(sky.luminance)},
+                            {"horizontal_illuminance_lx", tinygltf::Value(sky.horizontalIlluminanceLx)}})}};
+            glb.model().scenes[0].extras = tinygltf::Value(extras);
+        }
     }
 
     // The scene's cameras: a glTF camera looks down its -z with +y up.
     for (const SceneCamera& c : scene.cameras) {
         const Camera look = lookingAt(c.eye, c.target, c.fovDeg);  // render.png's up, too
-        const Vec3 f = normalize(look.lookAt - look.position);
-        const Vec3 r = normalize(cross(f, look.up)), u = cross(r, f);
-        Transform view;
-        view.m = {r.x, u.x, -f.x, r.y, u.y, -f.y, r.z, u.z, -f.z};
+        Transform view = lookingAlong(look.lookAt - look.position, look.up);
         view.t = c.eye;
         tinygltf::Camera camera;
         camera.name = c.name;
@@ -322,8 +408,8 @@ void writeGlb(const std::filesystem::path& file, const Scene& scene, const Layou
         camera.perspective.yfov = c.fovDeg * kPi / 180;
         camera.perspective.znear = 0.05;
         glb.model().cameras.push_back(camera);
-        tinygltf::Node& node = glb.addNode(c.name, -1, toGltf * view, c.jsonPath);
-        node.camera = int(glb.model().cameras.size()) - 1;
+        const int node = glb.addNode(c.name, -1, toGltf * view, c.jsonPath);
+        glb.node(node).camera = int(glb.model().cameras.size()) - 1;
     }
 
     // WriteGltfSceneToStream(binary) writes what WriteGltfSceneToFile(embedImages,

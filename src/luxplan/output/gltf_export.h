@@ -5,21 +5,43 @@
 
 #include <filesystem>
 
+#include <luxplan/daylight/environment.h>
+#include <luxplan/output/black_body.h>
 #include <luxplan/scene/layout.h>
 
 namespace luxplan {
 
-// Linear RGB of a black body at `kelvin` (clamped to [1667, 25000] K), scaled so that
-// its largest component is 1: the colour that `cct_k` gives lights in images.
-Vec3 blackBodyRgb(double kelvin);
+// The sun of a daylight period as one directional light: the illuminance-weighted
+// mean direction of its disks (towards the sun), their time-weighted normal
+// illuminance summed, and their weighted colour (luminance 1). Zero without a sun.
+struct SunSummary {
+    Vec3 direction{0, 0, 1};
+    double normalIlluminanceLx = 0;
+    Vec3 color{1, 1, 1};
+};
+SunSummary summarizeSun(const DaylightEnvironment& daylight);
+
+// The sky (and ground below the horizon is left out) as one colour: its mean radiance
+// over the upper hemisphere weighted by cos(theta), as luminance and a colour of
+// luminance 1, with its horizontal illuminance.
+struct SkySummary {
+    Vec3 color{1, 1, 1};
+    double luminance = 0;
+    double horizontalIlluminanceLx = 0;
+};
+SkySummary summarizeSky(const DaylightEnvironment& daylight);
 
 // Writes `file` (glTF is y-up: luxplan's (x, y, z) becomes (x, z, -y)). Nodes, named
 // after what they show: one per visible static item (world frame), one per entity with
-// parts (its mesh in its own frame, the node placing it by worldTransforms) and one
-// per emitter (an emissive rect, disk or sphere carrying a point light for a sphere, a
-// spot light along the normal for a rect or disk, intensity in candela). Invisible
-// blockers are left out. Each scene camera is a perspective camera node of its name.
+// parts (placed by worldTransforms; a single part its mesh, several parts each a child
+// node "PATH part K: KIND" with its own mesh) and one per emitter (an emissive rect,
+// disk or sphere carrying a point light for a sphere, a spot light along the normal
+// for a rect or disk, intensity in candela). Invisible blockers are left out. Each
+// scene camera is a perspective camera node of its name. With `daylight`: a
+// directional light "sun" (summarizeSun, intensity in lux) and the sky in the scene's
+// extras: {"sky": {"color": [r, g, b], "luminance_cd_m2", "horizontal_illuminance_lx"}}.
 // Throws IoError when the file cannot be written.
-void writeGlb(const std::filesystem::path& file, const Scene& scene, const Layout& layout);
+void writeGlb(const std::filesystem::path& file, const Scene& scene, const Layout& layout,
+              const DaylightEnvironment* daylight = nullptr);
 
 }  // namespace luxplan

@@ -5,11 +5,14 @@
 #include <chrono>
 
 #include <luxplan/constraints/geometry_cost.h>
+#include <luxplan/lightsamplers/light_budget.h>
 #include <luxplan/core/error.h>
+#include <luxplan/daylight/daylight.h>
 #include <luxplan/output/gltf_export.h>
 #include <luxplan/output/plan.h>
 #include <luxplan/output/plot.h>
 #include <luxplan/output/render.h>
+#include <luxplan/output/report_viewer.h>
 #include <luxplan/rt/embree_scene.h>
 
 namespace luxplan {
@@ -44,6 +47,9 @@ RunOutputs writeRunOutputs(const std::filesystem::path& folder, const Scene& sce
         lap = now;
     };
     auto wrote = [&](const std::filesystem::path& file) { out.files.push_back(file); };
+    auto begin = [&](const std::string& step) {
+        if (options.onStep) options.onStep(step);
+    };
     // A stop signal (options.cancel) skips every step not yet begun; what is written stays.
     auto stopped = [&] { return out.cancelled = out.cancelled || (options.cancel && options.cancel->load()); };
     auto finish = [&] {
@@ -68,18 +74,49 @@ RunOutputs writeRunOutputs(const std::filesystem::path& folder, const Scene& sce
 
     // The final layout: samplers, work plane, view, glTF.
     PlanData finalData, initialData;
-    if (fromResult) out.samplers = result->bestEvaluation.samplers.samplers;
-    else if (!scene.samplers.empty() && (options.plan || compare || options.html))
+    if (fromResult) {
+        out.samplers = result->bestEvaluation.samplers.samplers;
+    } else if (!scene.samplers.empty() && (options.plan || compare || options.html)) {
+        begin("measuring " + std::to_string(scene.samplers.size()) + " samplers at " + std::to_string(options.samplerPaths) +
+              " paths per point");
         out.samplers = measureSamplers(tracer, measure).samplers;
+    }
     if (!scene.samplers.empty()) finalData.samplers = out.samplers;
     if (!fromResult && !scene.samplers.empty()) timed("samplers (" + options.finalLabel + ")");
+    std::vector<SamplerBudget> budgets;
+    if (options.html && !scene.samplers.empty() && options.budgetPaths > 0 && !stopped()) {
+        begin("tracing the samplers' light budgets");
+        budgets = measureLightBudgets(tracer, options.budgetPaths, options.seed);
+        timed("light budgets");
+    }
+    std::vector<ReportData::Hour> hours;
+    if (options.html && !scene.samplers.empty() && options.hourlyPaths > 0 && scene.daylight && scene.daylight->from &&
+        scene.daylight->to && !stopped()) {
+        begin("measuring the daylight period hour by hour");
+        MeasureOptions hourly = measure;
+        hourly.pathsPerPoint = options.hourlyPaths;
+        const DateTime from = *scene.daylight->from, to = *scene.daylight->to;
+        const double span = (to.julianDayUT() - from.julianDayUT()) * 24 * 60;
+        for (double minutes = 0; minutes <= span + 1e-6 && hours.size() < 48 && !stopped(); minutes += 60) {
+            DaylightParams instant = *scene.daylight;
+            instant.from = from.plusMinutes(minutes);
+            instant.to.reset();
+            const DaylightEnvironment environment = buildDaylight(instant, scene.site);
+            PathTracer at(rt, &environment);
+            hours.push_back({instant.from->str(), measureSamplers(at, hourly).samplers});
+        }
+        timed("hour by hour");
+    }
     if (stopped()) return finish();
     if (grids) {
+        begin("measuring the work plane");
         finalData.workPlane = workPlane();
         timed("work plane (" + options.finalLabel + ")");
     }
     if (stopped()) return finish();
     if (options.render) {
+        begin("rendering " + std::to_string(options.renderWidth) + " x " + std::to_string(options.renderHeight) + " px at " +
+              std::to_string(options.renderSamplesPerPixel) + " samples per pixel");
         RenderOptions ro;
         ro.width = options.renderWidth;
         ro.height = options.renderHeight;
@@ -87,15 +124,20 @@ RunOutputs writeRunOutputs(const std::filesystem::path& folder, const Scene& sce
         ro.denoise = options.renderDenoise;
         ro.seed = options.seed;
         ro.cancel = options.cancel;
-        Image render = renderPerspective(tracer, options.camera.value_or(defaultCamera(scene)), ro);
+        ro.rowsDone = options.renderRowsDone;
+        LuminanceImage view = renderView(tracer, options.camera.value_or(defaultCamera(scene)), ro);
         if (stopped()) return finish();  // rows after the signal were not traced
-        writePng(render, folder / "render.png");
+        writePng(toneMap(view, autoExposure(view)), folder / "render.png");
         wrote(folder / "render.png");
+        if (options.luminanceView) {
+            writePng(falseColorView(view, luminanceFalseColor(view)), folder / "render_luminance.png");
+            wrote(folder / "render_luminance.png");
+        }
         timed("render.png");
     }
     if (stopped()) return finish();
     if (options.glb) {
-        writeGlb(folder / "scene.glb", scene, finalLayout);
+        writeGlb(folder / "scene.glb", scene, finalLayout, daylight);
         wrote(folder / "scene.glb");
         timed("scene.glb");
     }
@@ -103,6 +145,7 @@ RunOutputs writeRunOutputs(const std::filesystem::path& folder, const Scene& sce
     // The initial layout, for the comparison.
     if (stopped()) return finish();
     if (compare) {
+        begin("measuring the " + options.initialLabel + " layout for the comparison");
         rt.setLayout(initialLayout);
         tracer.updateLayout();
         if (!scene.samplers.empty()) initialData.samplers = measureSamplers(tracer, measure).samplers;
@@ -152,6 +195,14 @@ RunOutputs writeRunOutputs(const std::filesystem::path& folder, const Scene& sce
             data.geometry = geometry.evaluate(worldTransforms(scene, finalLayout), true);
         }
         data.timings = out.timings;
+        data.budgets = budgets;
+        data.hours = hours;
+        if (options.viewer) {
+            if (!std::filesystem::is_regular_file(folder / "scene.glb")) data.viewerNote = "scene.glb was not written.";
+            else data.viewerNote = copyViewerScripts(folder);
+            if (!data.viewerNote.empty() && options.onStep) options.onStep("no 3D view in report.html: " + data.viewerNote);
+            else if (data.viewerNote.empty()) for (const char* script : kViewerScripts) wrote(folder / script);
+        }
         double total = std::chrono::duration<double>(Clock::now() - start).count();
         data.timings.push_back({"pictures and scene.glb, total", total});
         writeReportHtml(folder, scene, result, data);

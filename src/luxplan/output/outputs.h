@@ -6,6 +6,7 @@
 #include <atomic>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -23,9 +24,15 @@ struct OutputOptions {
     bool plan = true;         // plan.png: work-plane illuminance, samplers by target status
     bool comparison = true;   // plan_initial_vs_optimized.png (only when the layouts differ)
     bool render = true;       // render.png
+    bool luminanceView = true;  // render_luminance.png, the same view in false colour (with render)
     bool convergence = true;  // convergence.png (only with an optimizer result)
     bool glb = true;          // scene.glb
     bool html = true;         // report.html (written last; links what exists)
+    bool viewer = true;       // report.html's 3D view: three.js copied into viewer/ (report_viewer.h)
+    int budgetPaths = 32;     // per sampler item, for report.html's light budgets; 0: none
+    // report.html's daylight hour by hour: each whole hour of a daylight period (at
+    // most 48), its samplers measured at hourlyPaths per point; 0: none.
+    int hourlyPaths = 64;
     int renderWidth = 660, renderHeight = 440, renderSamplesPerPixel = 8;
     std::optional<Camera> camera;   // render.png's view; unset: defaultCamera(scene)
     bool renderDenoise = true;      // edge-avoiding filter on render.png (denoise.h)
@@ -38,6 +45,10 @@ struct OutputOptions {
     std::string initialLabel = "initial", finalLabel = "optimized";
     // Once true (a stop signal), the steps not yet begun are skipped.
     const std::atomic<bool>* cancel = nullptr;
+    // Progress, if set: told what each long step is as it begins, and render.png's rows
+    // counted as they are traced.
+    std::function<void(const std::string&)> onStep;
+    std::atomic<int>* renderRowsDone = nullptr;
 };
 
 struct RunOutputs {

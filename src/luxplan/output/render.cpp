@@ -1,10 +1,12 @@
 // Perspective pictures from the photometric path tracer: a pinhole camera, jittered
-// pixel samples, automatic exposure and a Reinhard tone curve to grey sRGB.
+// pixel samples, colour from what each pixel sees, automatic exposure and a Reinhard
+// tone curve to sRGB; and the same luminance in false colour.
 #include <luxplan/output/render.h>
 
 #include <luxplan/core/estimator.h>
 #include <luxplan/core/parallel.h>
 #include <luxplan/core/rng.h>
+#include <luxplan/output/black_body.h>
 #include <luxplan/scene/layout.h>
 #include <luxplan/scene/room.h>
 
@@ -97,6 +99,43 @@ struct CameraRays {
 
 }  // namespace
 
+Vec3 seenColor(const PathTracer& tracer, Ray ray) {
+    const EmbreeScene& rt = tracer.rayTracer();
+    const Scene& scene = rt.scene();
+    auto unitLuminance = [](Vec3 c) {
+        double y = luminance(c);
+        return y > 1e-12 ? c / y : Vec3(1, 1, 1);
+    };
+    for (int surfaces = 0; surfaces < 8; ++surfaces) {
+        std::optional<Hit> hit = rt.intersect(ray);
+        if (!hit) {
+            const DaylightEnvironment* daylight = tracer.daylight();
+            if (!daylight) return {1, 1, 1};
+            Vec3 w = normalize(ray.direction);
+            return unitLuminance(daylight->Le(w) + daylight->sunLe(w));
+        }
+        if (hit->kind == HitKind::Emitter)
+            return unitLuminance(blackBodyRgb(scene.emitters.at(size_t(hit->index)).cctK));
+        const Material& m = scene.materials.at(hit->material);
+        const Vec3 d = normalize(ray.direction);
+        const double offset = 1e-4 * std::max(1.0, hit->t * length(ray.direction));
+        switch (m.type) {
+            case MaterialType::Glass:
+                ray = Ray{hit->point + d * offset, d};
+                continue;
+            case MaterialType::Mirror: {
+                Vec3 n = hit->shadingNormal;
+                Vec3 r = d - n * (2 * dot(d, n));
+                ray = Ray{hit->point + r * offset, r};
+                continue;
+            }
+            case MaterialType::Glossy: return unitLuminance(m.base + m.reflectance);
+            default: return unitLuminance(m.reflectance);
+        }
+    }
+    return {1, 1, 1};
+}
+
 LuminanceImage renderLuminance(const PathTracer& tracer, const Camera& camera, const RenderOptions& options) {
     LuminanceImage out;
     out.width = std::max(1, options.width);
@@ -104,6 +143,7 @@ LuminanceImage renderLuminance(const PathTracer& tracer, const Camera& camera, c
     out.values.assign(size_t(out.width) * size_t(out.height), 0.0);
     out.variance.assign(out.values.size(), 0.0);
     out.emitters.assign(out.values.size(), 0.0);
+    if (options.color) out.chroma.assign(out.values.size(), Vec3(1, 1, 1));
     const int spp = std::max(1, options.samplesPerPixel);
     const CameraRays rays(camera, out.width, out.height);
 
@@ -116,13 +156,24 @@ LuminanceImage renderLuminance(const PathTracer& tracer, const Camera& camera, c
             // A luminaire sample counts as 0 in the surface estimate and the other way round,
             // so both are over the same samples (a dropped one is left out of both).
             MeanEstimator surfaces, emitters;
+            Vec3 weighted, plain;  // sum of L x colour, and of colour
             for (int k = 0; k < spp; ++k) {
                 Rng rng(hashValues({options.seed, kRenderTag, pixel, uint64_t(k)}));
                 double u = rng.uniform(), v = rng.uniform();
                 bool luminaire = false;
-                double L = tracer.radianceSample(rays.at(x + u, y + v), rng, stats, luminaire);
+                const Ray ray = rays.at(x + u, y + v);
+                double L = tracer.radianceSample(ray, rng, stats, luminaire);
                 surfaces.add(luminaire ? 0.0 : L);
                 emitters.add(luminaire ? L : 0.0);
+                if (options.color) {
+                    Vec3 c = seenColor(tracer, ray);
+                    plain = plain + c;
+                    if (std::isfinite(L) && L > 0) weighted = weighted + c * L;
+                }
+            }
+            if (options.color) {
+                const double seen = luminance(weighted);
+                out.chroma[pixel] = seen > 0 ? weighted / seen : plain / std::max(luminance(plain), 1e-12);
             }
             const double mean = surfaces.mean();
             out.values[pixel] = mean + emitters.mean();
@@ -130,6 +181,7 @@ LuminanceImage renderLuminance(const PathTracer& tracer, const Camera& camera, c
             // One sample tells nothing of the spread: assume an error as large as the mean.
             out.variance[pixel] = surfaces.count() > 1 ? surfaces.varianceOfMean() : mean * mean;
         }
+        if (options.rowsDone) options.rowsDone->fetch_add(1, std::memory_order_relaxed);
     });
     return out;
 }
@@ -173,13 +225,43 @@ Image toneMap(const LuminanceImage& image, double exposure) {
         for (int x = 0; x < image.width; ++x) {
             double L = exposure * std::max(0.0, image.values[size_t(y) * size_t(image.width) + size_t(x)]);
             double d = L * (1 + L / w2) / (1 + L);
-            auto c = uint8_t(std::lround(255 * srgbEncode(d)));
-            out.at(x, y) = {c, c, c};
+            const size_t p = size_t(y) * size_t(image.width) + size_t(x);
+            if (image.chroma.empty()) {
+                auto c = uint8_t(std::lround(255 * srgbEncode(d)));
+                out.at(x, y) = {c, c, c};
+                continue;
+            }
+            const Vec3 rgb = image.chroma[p] * d;
+            out.at(x, y) = {uint8_t(std::lround(255 * srgbEncode(rgb.x))), uint8_t(std::lround(255 * srgbEncode(rgb.y))),
+                            uint8_t(std::lround(255 * srgbEncode(rgb.z)))};
         }
     return out;
 }
 
-Image renderPerspective(const PathTracer& tracer, const Camera& camera, const RenderOptions& options) {
+FalseColor luminanceFalseColor(const LuminanceImage& image) {
+    std::vector<double> finite;
+    for (double v : image.values)
+        if (std::isfinite(v) && v > 0) finite.push_back(v);
+    FalseColor f;
+    f.scale = ColorScale::Log;
+    f.decades = 4;
+    f.maxValue = 1;
+    if (finite.empty()) return f;
+    std::sort(finite.begin(), finite.end());
+    f.maxValue = niceCeil(finite[std::min(finite.size() - 1, size_t(0.995 * double(finite.size())))]);
+    return f;
+}
+
+Image falseColorView(const LuminanceImage& image, const FalseColor& scale) {
+    const int legend = 90;
+    Image out(image.width + legend, std::max(image.height, 140), kWhite);
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) out.at(x, y) = scale.color(image.values[size_t(y) * size_t(image.width) + size_t(x)]);
+    drawLegend(out, scale, image.width + 14, 24, 16, std::max(60, out.height() - 40), "cd/m2");
+    return out;
+}
+
+LuminanceImage renderView(const PathTracer& tracer, const Camera& camera, const RenderOptions& options) {
     LuminanceImage luminance = renderLuminance(tracer, camera, options);
     if (options.denoise) {
         std::vector<double> surfaces(luminance.values.size());
@@ -188,6 +270,11 @@ Image renderPerspective(const PathTracer& tracer, const Camera& camera, const Re
                          cameraGuide(tracer.rayTracer(), camera, luminance.width, luminance.height), camera.position);
         for (size_t i = 0; i < surfaces.size(); ++i) luminance.values[i] = surfaces[i] + luminance.emitters[i];
     }
+    return luminance;
+}
+
+Image renderPerspective(const PathTracer& tracer, const Camera& camera, const RenderOptions& options) {
+    LuminanceImage luminance = renderView(tracer, camera, options);
     double exposure = options.exposure > 0 ? options.exposure : autoExposure(luminance);
     return toneMap(luminance, exposure);
 }

@@ -1,6 +1,8 @@
 // report.html: the run summary as one static page; every value is escaped, every
 // link is relative to the page and only made to files that exist.
 #include <luxplan/output/report_html.h>
+#include <luxplan/output/report_viewer.h>
+#include <luxplan/optimizer/reach.h>
 
 #include <cmath>
 #include <cstdio>
@@ -40,10 +42,11 @@ footer { margin-top: 3em; color: #888; font-size: 0.85em; }
 
 // Captions of kReportImages, in its order.
 constexpr const char* kImageCaptions[] = {
-    "Plan: work-plane illuminance in false colour; light samplers green where they meet their target, red where "
-    "they miss it.",
+    "Plan: work-plane illuminance in false colour on a scale centred on the targets, isolux lines, Em, Emin, Emax "
+    "and U0; light samplers green where they meet their targets, red where they miss them.",
     "The start layout and the shown layout side by side (same colour scale).",
-    "Path-traced view (luminance, tone mapped).",
+    "Path-traced view (luminance tone mapped, colour from what each pixel sees).",
+    "The same view in false colour of luminance (cd/m2, logarithmic).",
     "Convergence: current cost (grey) and best cost so far (blue) per iteration."};
 static_assert(std::size(kImageCaptions) == std::size(kReportImages));
 
@@ -156,8 +159,14 @@ void pictures(std::ostringstream& out, const std::filesystem::path& folder) {
     if (!files.str().empty()) out << "<h2>Files</h2>\n<ul>\n" << files.str() << "</ul>\n";
 }
 
+std::string percent(double share) {
+    char text[16];
+    std::snprintf(text, sizeof text, "%.0f%%", 100 * share);
+    return text;
+}
+
 void samplerTable(std::ostringstream& out, const Scene& scene, const std::vector<SamplerResult>& measured,
-                  const OptimizerResult* result) {
+                  const OptimizerResult* result, const std::vector<SamplerBudget>& budgets) {
     if (scene.samplers.empty()) return;
     // Each scene sampler's measurement, null when it was not measured.
     std::vector<const SamplerResult*> rows(scene.samplers.size(), nullptr);
@@ -181,8 +190,12 @@ void samplerTable(std::ostringstream& out, const Scene& scene, const std::vector
     out << "<h2>Light samplers</h2>\n";
     if (known) out << "<p>" << met << " of " << known << " samplers meet their targets.</p>\n";
     else out << "<p class=\"muted\">Not measured (the lighting term was not evaluated).</p>\n";
+    const bool withBudgets = budgets.size() == rows.size();
+    const bool withRanges = result && result->samplerRanges.size() == rows.size();
     out << "<table>\n<tr><th>name</th><th>type</th><th>entity</th><th>value</th><th>unit</th><th>target</th>"
-           "<th>tolerance</th><th>penalty</th><th>status</th></tr>\n";
+           "<th>tolerance</th><th>penalty</th><th>status</th>"
+        << (withBudgets ? "<th>light from</th>" : "") << "</tr>\n";
+    std::vector<std::pair<std::string, std::string>> misses;  // (name, why), listed under the table
     for (size_t k = 0; k < rows.size(); ++k) {
         const LightSamplerSpec& s = scene.samplers[k];
         out << "<tr>" << cell(escapeHtml(s.name)) << "<td title=\"" << escapeHtml(s.type->describe()) << "\">"
@@ -193,14 +206,41 @@ void samplerTable(std::ostringstream& out, const Scene& scene, const std::vector
             out << "<td class=\"num\">" << number(rows[k]->value, 1) << "</td>" << cell(escapeHtml(s.type->unit()))
                 << cell(range(s.targetMin, s.targetMax, 0)) << "<td class=\"num\">" << number(s.tolerance, 1) << "</td>"
                 << "<td class=\"num\">" << number(terms[k][0].penalty, 3) << "</td>" << cell(ok ? "met" : "missed", ok ? "met" : "missed");
+            if (withBudgets) out << cell(escapeHtml(describeBudget(scene, budgets[k])));
+            if (withBudgets || withRanges) {
+                std::string why;
+                if (withRanges) {
+                    const ReachVerdict verdict = reachVerdict(s, result->samplerRanges[k], *rows[k]);
+                    if (verdict.reach != Reach::Met) {
+                        why = reachName(verdict.reach);
+                        if (!verdict.reason.empty()) why += ": " + verdict.reason;
+                    }
+                }
+                if (withBudgets) {
+                    const std::string advice = missAdvice(scene, s, rows[k]->value, budgets[k]);
+                    if (!advice.empty()) why += (why.empty() ? "" : ". ") + advice;
+                    if (!advice.empty() && !withRanges) why += " (one layout measured: no search says whether it can be met)";
+                }
+                if (!why.empty()) misses.push_back({s.name, why});
+            }
         } else {
             out << "<td class=\"num\">&ndash;</td>" << cell(escapeHtml(s.type->unit())) << cell(range(s.targetMin, s.targetMax, 0))
                 << "<td class=\"num\">" << number(s.tolerance, 1) << "</td><td class=\"num\">&ndash;</td>"
                 << cell("not measured", "muted");
+            if (withBudgets) out << cell("&ndash;");
         }
         out << "</tr>\n";
     }
     out << "</table>\n";
+    if (withBudgets)
+        out << "<p class=\"muted\">Light from: the share of each sampler's light that comes straight from the sun, the sky "
+               "(with the ground outside), each luminaire, and from light reflected by the room's surfaces first "
+               "(interreflection), over all its points or strata.</p>\n";
+    if (!misses.empty()) {
+        out << "<h3>Why samplers miss, and whether they can be met</h3>\n<ul>\n";
+        for (const auto& [name, why] : misses) out << "<li><b>" << escapeHtml(name) << "</b>: " << escapeHtml(why) << "</li>\n";
+        out << "</ul>\n";
+    }
     if (statistics) {
         // EN 12464-1's figures over each planar and volume sampler's points.
         out << "<h3>Statistics over the points (EN 12464-1: E<sub>m</sub>, E<sub>min</sub>, E<sub>max</sub>, "
@@ -260,6 +300,32 @@ void samplerTable(std::ostringstream& out, const Scene& scene, const std::vector
     }
 }
 
+// The period hour by hour: one row per instant, one column per sampler, each value
+// green when it meets the sampler's goals at that hour, red when not.
+void hourTable(std::ostringstream& out, const Scene& scene, const std::vector<ReportData::Hour>& hours) {
+    if (hours.empty() || scene.samplers.empty()) return;
+    out << "<h2>The daylight hour by hour</h2>\n<p class=\"muted\">Each instant measured alone (as <code>measure --at</code>), "
+           "for the layout shown; the tables above average the whole period.</p>\n<table>\n<tr><th>time</th>";
+    for (const LightSamplerSpec& s : scene.samplers)
+        out << "<th>" << escapeHtml(s.name) << " (" << escapeHtml(s.type->unit()) << ")</th>";
+    out << "<th>met</th></tr>\n";
+    for (const ReportData::Hour& h : hours) {
+        out << "<tr>" << cell(escapeHtml(h.at));
+        int met = 0;
+        for (size_t k = 0; k < scene.samplers.size(); ++k) {
+            if (k >= h.samplers.size()) {
+                out << cell("&ndash;");
+                continue;
+            }
+            const bool ok = allMet(lightingTerms(scene.samplers[k], h.samplers[k]));
+            met += ok;
+            out << "<td class=\"num " << (ok ? "met" : "missed") << "\">" << number(h.samplers[k].value, 1) << "</td>";
+        }
+        out << "<td class=\"num\">" << met << " of " << scene.samplers.size() << "</td></tr>\n";
+    }
+    out << "</table>\n";
+}
+
 void constraintTables(std::ostringstream& out, const Scene& scene, const GeometryResult& g) {
     std::ostringstream rel, pairs;
     int relCount = 0, pairCount = 0;
@@ -308,7 +374,7 @@ void constraintTables(std::ostringstream& out, const Scene& scene, const Geometr
 void moveTable(std::ostringstream& out, const OptimizerResult& r) {
     if (r.levels.empty()) return;
     out << "<h2>Moves</h2>\n<table>\n<tr><th>level</th><th>move</th><th>proposed</th><th>accepted</th><th>outside</th>"
-           "<th>rejected (geometry)</th><th>acceptance</th></tr>\n";
+           "<th>rejected (geometry)</th><th>screened (rules' change, no light traced)</th><th>acceptance</th></tr>\n";
     for (const LevelStats& level : r.levels) {
         for (MoveType t : kMoveTypes) {
             const MoveStats& s = level.moves[int(t)];
@@ -316,7 +382,8 @@ void moveTable(std::ostringstream& out, const OptimizerResult& r) {
                                   " entities)</span>")
                 << cell(escapeHtml(moveName(t))) << "<td class=\"num\">" << s.proposed << "</td><td class=\"num\">"
                 << s.accepted << "</td><td class=\"num\">" << s.outside << "</td><td class=\"num\">" << s.rejectedGeometry
-                << "</td><td class=\"num\">" << number(100 * s.acceptance(), 1) << "%</td></tr>\n";
+                << "</td><td class=\"num\">" << s.screened << "</td><td class=\"num\">" << number(100 * s.acceptance(), 1)
+                << "%</td></tr>\n";
         }
     }
     out << "</table>\n";
@@ -331,6 +398,32 @@ void timingTable(std::ostringstream& out, const std::vector<ReportTiming>& timin
 }
 
 }  // namespace
+
+std::string missAdvice(const Scene& scene, const LightSamplerSpec& sampler, double value, const SamplerBudget& budget) {
+    const bool low = value < sampler.targetMin, high = value > sampler.targetMax;
+    if (!low && !high) return "";
+    // The largest source among daylight (sun and sky), each luminaire, and reflected light.
+    const double daylight = budget.sun + budget.sky;
+    size_t lamp = 0;
+    for (size_t e = 1; e < budget.emitters.size(); ++e)
+        if (budget.emitters[e] > budget.emitters[lamp]) lamp = e;
+    const double lampShare = budget.emitters.empty() ? 0 : budget.emitters[lamp];
+    const std::string lampName = budget.emitters.empty() || lamp >= scene.emitters.size() ? "" : scene.emitters[lamp].name;
+    std::string text = low ? "below its target" : "above its target";
+    if (daylight + lampShare + budget.interreflected <= 0) return text + "; no light reaches it";
+    if (daylight >= lampShare && daylight >= budget.interreflected) {
+        text += "; " + percent(daylight) + " of its light is daylight (sun " + percent(budget.sun) + ", sky " + percent(budget.sky) + ")";
+        if (low) text += ": nearer the window, or more light from a luminaire";
+        else text += budget.sun >= budget.sky ? ": out of the sun patch, or a blind" : ": farther from the window, or a blind";
+    } else if (lampShare >= budget.interreflected) {
+        text += "; " + percent(lampShare) + " of its light is from " + lampName;
+        text += low ? ": nearer it, or more flux" : ": farther from it, or less flux";
+    } else {
+        text += "; " + percent(budget.interreflected) + " of its light is reflected";
+        text += low ? ": lighter surfaces around it, or a direct source" : ": darker surfaces around it";
+    }
+    return text;
+}
 
 std::string escapeHtml(const std::string& text) {
     std::string out;
@@ -358,7 +451,10 @@ std::string reportHtml(const std::filesystem::path& folder, const Scene& scene, 
     summary(out, scene, data);
     if (result) optimizerSummary(out, *result);
     pictures(out, folder);
-    samplerTable(out, scene, data.samplers, result);
+    if (std::string viewer = viewerSection(folder); !viewer.empty()) out << viewer;
+    else if (!data.viewerNote.empty()) out << "<h2>The room in 3D</h2>\n<p class=\"muted\">" << escapeHtml(data.viewerNote) << "</p>\n";
+    samplerTable(out, scene, data.samplers, result, data.budgets);
+    hourTable(out, scene, data.hours);
     if (data.geometry) constraintTables(out, scene, *data.geometry);
     else if (result) constraintTables(out, scene, result->bestGeometry);
     if (result) moveTable(out, *result);

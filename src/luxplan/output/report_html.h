@@ -1,6 +1,7 @@
-// report.html: one self-contained page (inline CSS, no scripts, no network) that
-// shows a run's pictures and tables: samplers against their targets, constraints,
-// overlap pairs, move statistics and timings.
+// report.html: one self-contained page (inline CSS; no network: its 3D view's scripts
+// are copied next to it, report_viewer.h) that shows a run's pictures, the room in 3D
+// and tables: samplers against their targets with their light budgets and why they
+// miss, constraints, overlap pairs, move statistics and timings.
 #pragma once
 
 #include <filesystem>
@@ -9,6 +10,7 @@
 #include <vector>
 
 #include <luxplan/constraints/geometry_cost.h>
+#include <luxplan/lightsamplers/light_budget.h>
 #include <luxplan/lightsamplers/light_samplers.h>
 #include <luxplan/optimizer/optimizer.h>
 
@@ -30,11 +32,27 @@ struct ReportData {
     // absent: the optimizer result's bestGeometry (if any).
     std::optional<GeometryResult> geometry;
     std::vector<ReportTiming> timings;
+    // Per sampler (Scene::samplers order), where its light comes from; empty: not shown.
+    std::vector<SamplerBudget> budgets;
+    // Why the page has no 3D view, when it has none (e.g. the viewer's files are missing).
+    std::string viewerNote;
+    // The daylight period hour by hour: each instant's sampler measurements (Scene::samplers
+    // order) for the layout shown; empty: not shown.
+    struct Hour {
+        std::string at;  // ISO 8601
+        std::vector<SamplerResult> samplers;
+    };
+    std::vector<Hour> hours;
 };
+
+// What a sampler that misses its target could do, from where its light comes from:
+// "below its target; 78% of its light is daylight (sun 61%, sky 17%): nearer the
+// window, or more light from a luminaire". "" when `value` is in [targetMin, targetMax].
+std::string missAdvice(const Scene& scene, const LightSamplerSpec& sampler, double value, const SamplerBudget& budget);
 
 // The pictures and files the page refers to, relative to its folder, in page order;
 // the page links each one only if it exists in the folder when the page is written.
-inline constexpr const char* kReportImages[] = {"plan.png", "plan_initial_vs_optimized.png", "render.png",
+inline constexpr const char* kReportImages[] = {"plan.png", "plan_initial_vs_optimized.png", "render.png", "render_luminance.png",
                                                "convergence.png"};
 inline constexpr const char* kReportFiles[] = {"scene.glb", "layout.json", "report.json", "trace.csv"};
 

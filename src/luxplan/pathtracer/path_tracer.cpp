@@ -126,7 +126,7 @@ double PathTracer::sample(const Sensor& sensor, PathSamples& samples, RayStats& 
 
         // ---- next-event estimation (skipped at delta vertices) ----
         if (!deltaVertex) {
-            auto addLight = [&](const Vec3& wi, const Vec3& Le, double lightPdf, double maxT, int target) {
+            auto addLight = [&](const Vec3& wi, const Vec3& Le, double lightPdf, double maxT, int target, int source) {
                 if (!(lightPdf > 0) || maxComponent(Le) <= 0) return;
                 Vec3 f = evalCos(v, wi);
                 if (maxComponent(f) <= 0) return;
@@ -134,6 +134,7 @@ double PathTracer::sample(const Sensor& sensor, PathSamples& samples, RayStats& 
                 if (T <= 0) return;
                 double w = powerHeuristic(1, lightPdf, 1, pdfOf(v, wi));
                 Vec3 contribution = throughput * f * Le * (T * w / lightPdf);
+                if (stats.budget) stats.budget->credit(source, depth, luminance(contribution));
                 if (depth == 0 && sensorLight) {
                     sensorLight->wi[sensorLight->count] = wi;
                     sensorLight->value[sensorLight->count++] = luminance(contribution);
@@ -145,19 +146,19 @@ double PathTracer::sample(const Sensor& sensor, PathSamples& samples, RayStats& 
                 if (stats.footprint) stats.footprint->usedEmitterChoice = true;
                 const double uChoice = samples.get1D(PathSamples::EmitterChoice);
                 EmitterSample s = emitters_.sample(v.p, uChoice, samples.get2D(PathSamples::EmitterPoint));
-                if (s.pdf > 0 && s.Lv > 0) addLight(s.wi, Vec3(s.Lv, s.Lv, s.Lv), s.pdf, s.distance, s.emitter);
+                if (s.pdf > 0 && s.Lv > 0) addLight(s.wi, Vec3(s.Lv, s.Lv, s.Lv), s.pdf, s.distance, s.emitter, s.emitter);
             }
             if (daylight_ && daylight_->hasSun()) {
                 const double uDisk = samples.get1D(PathSamples::SunDisk);
                 EnvironmentSample s = daylight_->sampleSun(uDisk, samples.get2D(PathSamples::SunPoint));
-                addLight(s.wi, s.Le, s.pdf, kInf, -1);
+                addLight(s.wi, s.Le, s.pdf, kInf, -1, LightBudget::kSun);
             }
             if (sky) {
                 SkyLight::View& view = views[current];
                 if (depth == 0) sky_.viewFromSensor(v.p, view);
                 else sky_.view(v.p, view);
                 EnvironmentSample s = sky_.sample(view, v.p, samples.get2D(PathSamples::SkyPoint));
-                addLight(s.wi, s.Le, s.pdf, kInf, -1);
+                addLight(s.wi, s.Le, s.pdf, kInf, -1, LightBudget::kSky);
             }
         }
 
@@ -209,6 +210,10 @@ double PathTracer::sample(const Sensor& sensor, PathSamples& samples, RayStats& 
                     double wSky = lastDelta ? 1 : powerHeuristic(1, lastPdf, 1, sky_.pdf(views[current ^ 1], lastPoint, d));
                     double wSun = lastDelta ? 1 : powerHeuristic(1, lastPdf, 1, daylight_->sunPdf(d));
                     L += throughput * (sky * wSky + sun * wSun);
+                    if (stats.budget) {
+                        stats.budget->credit(LightBudget::kSky, depth, luminance(throughput * sky * wSky));
+                        stats.budget->credit(LightBudget::kSun, depth, luminance(throughput * sun * wSun));
+                    }
                 }
                 return luminance(L);
             }
@@ -219,6 +224,7 @@ double PathTracer::sample(const Sensor& sensor, PathSamples& samples, RayStats& 
                 if (Le > 0) {
                     double w = lastDelta ? 1 : powerHeuristic(1, lastPdf, 1, emitters_.pdf(size_t(hit->index), lastPoint, hit->point));
                     L += throughput * Vec3(Le, Le, Le) * w;
+                    if (stats.budget) stats.budget->credit(hit->index, depth, luminance(throughput * Vec3(Le, Le, Le) * w));
                 }
                 return luminance(L);  // emitters absorb what reaches them
             }

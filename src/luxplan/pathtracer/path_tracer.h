@@ -35,9 +35,37 @@ struct PathTracerOptions {
 
 // Rays traced, for throughput figures; and, when `footprint` is set, where they went
 // (every ray of the path is added to it: incremental re-evaluation, path_footprint.h).
+// Where the light of the paths came from (a sampler's light budget, for reports):
+// every contribution's luminance, summed by its source. Light that reaches the
+// sensor straight from a source (the sensor's own light samples and the rays it
+// sends that meet the source) counts as that source's; light that scattered off a
+// surface first counts as interreflected, whatever its source.
+struct LightBudget {
+    double sun = 0, sky = 0;        // direct; the sky includes the ground outside
+    std::vector<double> emitters;   // direct, per Scene::emitters index (grown as needed)
+    double interreflected = 0;
+    static constexpr int kSun = -1, kSky = -2;  // sources that are not emitters
+    void credit(int source, int depth, double value) {
+        if (!(value == value)) return;  // NaN: the estimator drops the path too
+        if (depth > 0) interreflected += value;
+        else if (source == kSun) sun += value;
+        else if (source == kSky) sky += value;
+        else if (source >= 0) {
+            if (emitters.size() <= size_t(source)) emitters.resize(size_t(source) + 1, 0.0);
+            emitters[size_t(source)] += value;
+        }
+    }
+    double total() const {
+        double t = sun + sky + interreflected;
+        for (double e : emitters) t += e;
+        return t;
+    }
+};
+
 struct RayStats {
     uint64_t closest = 0, shadow = 0;
     PathFootprint* footprint = nullptr;
+    LightBudget* budget = nullptr;  // credited with every contribution, if set
     RayStats& operator+=(const RayStats& o) { closest += o.closest, shadow += o.shadow; return *this; }
 };
 
@@ -84,6 +112,7 @@ public:
 
     const EmbreeScene& rayTracer() const { return rt_; }
     const EmitterSet& emitters() const { return emitters_; }
+    const DaylightEnvironment* daylight() const { return daylight_; }  // null at night
 
     const DaylightEnvironment* daylight() const { return daylight_; }
     // Transmittance along p + t w up to tMax (the distance to the sampled point on

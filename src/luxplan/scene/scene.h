@@ -102,6 +102,8 @@ struct PartInfo {
     std::string kind;    // "box", "mesh" or the preset name
     Bounds3 bounds;      // entity frame
     uint32_t material = 0;
+    // Its triangles in the entity's mesh: [firstTriangle, firstTriangle + triangles).
+    size_t firstTriangle = 0, triangles = 0;
 };
 
 // A movable entity: a group (children), an object (parts), or both.
