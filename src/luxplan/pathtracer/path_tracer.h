@@ -114,7 +114,6 @@ public:
     const EmitterSet& emitters() const { return emitters_; }
     const DaylightEnvironment* daylight() const { return daylight_; }  // null at night
 
-    const DaylightEnvironment* daylight() const { return daylight_; }
     // Transmittance along p + t w up to tMax (the distance to the sampled point on
     // emitter `target`, or infinity for sun and sky): products of pane transmittances, 0
     // when anything opaque or another luminaire is in the way (the target itself never
