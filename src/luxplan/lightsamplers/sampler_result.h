@@ -36,7 +36,7 @@ struct SamplerResult {
     std::vector<double> pointErrors;
     uint64_t droppedNonFinite = 0; // NaN/inf path samples left out (core/estimator.h)
     int pathsPerPoint = 0;         // traced per item, the most over its items (fewer than asked when adaptive)
-    std::optional<GlareSurvey> glare;  // what a ugr or dgp sampler's value is made of
+    std::optional<GlareSurvey> glare = std::nullopt;  // what a ugr or dgp sampler's value is made of
 };
 
 }  // namespace luxplan
