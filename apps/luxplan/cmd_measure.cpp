@@ -112,9 +112,18 @@ void runMeasure(const MeasureArgs& args) {
         const std::vector<LightingTerm> terms = lightingTerms(s, r);
         const double penalty = terms[0].penalty;
         std::ostringstream target;
-        target << "[" << s.targetMin << ", " << (std::isfinite(s.targetMax) ? std::to_string(int(s.targetMax)) : "inf") << "]";
+        target << std::defaultfloat << "[" << s.targetMin << ", ";
+        if (std::isfinite(s.targetMax)) target << s.targetMax;
+        else target << "inf";
+        target << "]";
+        // UGR below 10 reads "<10" (CIE 117's scale starts there; JSON keeps the number),
+        // DGP is a probability.
+        const std::string type = s.type->name();
+        std::ostringstream value;
+        value << std::fixed << std::setprecision(type == "dgp" ? 3 : 1) << r.value;
         std::cout << std::left << std::setw(24) << s.name << std::setw(12) << s.type->name() << std::right << std::fixed
-                  << std::setprecision(1) << std::setw(12) << r.value << std::setw(10) << r.standardError << std::setw(8)
+                  << std::setprecision(1) << std::setw(12) << (type == "ugr" && r.value < 10 ? std::string("<10") : value.str())
+                  << std::setprecision(type == "dgp" ? 3 : 1) << std::setw(10) << r.standardError << std::setprecision(1) << std::setw(8)
                   << s.type->unit() << std::setw(22) << target.str() << std::setprecision(3) << std::setw(10) << penalty
                   << (penalty > 0 ? "  MISSED" : "  ok") << "\n";
         if (std::string stats = describeStatistics(s, r); !stats.empty()) std::cout << "    " << stats << "\n";

@@ -6,6 +6,7 @@
 #include <luxplan/core/estimator.h>
 #include <luxplan/core/parallel.h>
 #include <luxplan/core/point_statistics.h>
+#include <luxplan/lightsamplers/glare_sources.h>
 
 namespace luxplan {
 namespace {
@@ -263,6 +264,7 @@ MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& op
         Estimate value = placed[k]->combine(e);
         r.value = value.value;
         r.standardError = value.standardError;
+        if (const auto* glare = dynamic_cast<const PlacedGlare*>(placed[k].get())) r.glare = glare->survey(r.points);
     }
     return result;
 }

@@ -8,6 +8,8 @@ std::shared_ptr<const SamplerType> readPlanarSampler(const json::Fields& f);    
 std::shared_ptr<const SamplerType> readDirectionalSampler(const json::Fields& f);  // directional.cpp
 std::shared_ptr<const SamplerType> readVolumeSampler(const json::Fields& f);       // volume.cpp
 std::shared_ptr<const SamplerType> readCylindricalSampler(const json::Fields& f);  // cylindrical.cpp
+std::shared_ptr<const SamplerType> readUgrSampler(const json::Fields& f);          // ugr.cpp
+std::shared_ptr<const SamplerType> readDgpSampler(const json::Fields& f);          // dgp.cpp
 
 const std::vector<SamplerTypeEntry>& samplerTypes() {
     static const std::vector<SamplerTypeEntry> types = {
@@ -15,6 +17,8 @@ const std::vector<SamplerTypeEntry>& samplerTypes() {
         {"directional", readDirectionalSampler},
         {"volume", readVolumeSampler},
         {"cylindrical", readCylindricalSampler},
+        {"ugr", readUgrSampler},
+        {"dgp", readDgpSampler},
     };
     return types;
 }

@@ -43,10 +43,36 @@ Json samplerStatisticsJson(const LightSamplerSpec& sampler, const SamplerResult&
                          {"tolerance", t.tolerance},
                          {"penalty", t.penalty}});
     j["terms"] = terms;
+    if (result.glare) {
+        const GlareSurvey& g = *result.glare;
+        Json sources = Json::array();
+        for (const GlareSource& s : g.sources)
+            sources.push_back({{"slot", s.index},
+                               {"direction", {s.direction.x, s.direction.y, s.direction.z}},
+                               {"luminance", s.luminance},
+                               {"solid_angle", s.solidAngle},
+                               {"position_index", s.positionIndex}});
+        j["glare"] = {{"vertical_illuminance", g.verticalIlluminance},
+                      {"direct_illuminance", g.directIlluminance},
+                      {"background_luminance", g.backgroundLuminance},
+                      {"sources", sources}};
+    }
     return j;
 }
 
 std::string describeStatistics(const LightSamplerSpec& sampler, const SamplerResult& result) {
+    if (result.glare) {
+        const GlareSurvey& g = *result.glare;
+        const bool ugr = std::string_view(sampler.type->name()) == "ugr";
+        std::string d = ugr ? "UGR " + (result.value < 10 ? std::string("<10") : fixed(result.value, 1)) + ", Lb " +
+                                  fixed(g.backgroundLuminance, 1) + " cd/m2"
+                            : "DGP " + fixed(result.value, 3) + ", Ev " + fixed(g.verticalIlluminance, 0) + " lx";
+        d += ", " + std::to_string(g.sources.size()) + (g.sources.size() == 1 ? " source" : " sources");
+        for (const GlareSource& s : g.sources)
+            d += "; [" + fixed(s.direction.x, 2) + " " + fixed(s.direction.y, 2) + " " + fixed(s.direction.z, 2) + "] L " +
+                 fixed(s.luminance, 0) + " cd/m2, omega " + fixed(s.solidAngle * 1e3, 3) + " msr, P " + fixed(s.positionIndex, 2);
+        return d;
+    }
     if (!sampler.type->hasPointStatistics()) return "";
     const PointStatistics s = pointStatistics(result.points, result.pointErrors);
     const std::string q = std::string_view(sampler.type->unit()) == "lx" ? "E" : "L";

@@ -114,12 +114,13 @@ public:
     const EmitterSet& emitters() const { return emitters_; }
     const DaylightEnvironment* daylight() const { return daylight_; }  // null at night
 
-private:
     // Transmittance along p + t w up to tMax (the distance to the sampled point on
     // emitter `target`, or infinity for sun and sky): products of pane transmittances, 0
     // when anything opaque or another luminaire is in the way (the target itself never
-    // shadows itself).
+    // shadows itself). Public for the glare samplers' direct views of their sources.
     double transmittance(const Vec3& p, const Vec3& w, double tMax, int target, RayStats& stats) const;
+
+private:
 
     const EmbreeScene& rt_;
     const DaylightEnvironment* daylight_;

@@ -1,0 +1,54 @@
+// DGP sampler (Wienold and Christoffersen 2006, evalglare's constants): the daylight
+// glare probability at an eye, from the vertical illuminance over the hemisphere in
+// front of it and the glare sources in view, every visible sun disk and every
+// luminaire brighter than "source_threshold_nits" (glare_sources.h, docs/glare.md).
+#include <stdexcept>
+
+#include <luxplan/lightsamplers/glare_sources.h>
+
+namespace luxplan {
+namespace {
+
+class Dgp final : public SamplerType {
+public:
+    Vec3 origin, direction{0, -1, 0};
+    double thresholdNits = 2000;
+
+    const char* name() const override { return "dgp"; }
+    const char* unit() const override { return "DGP"; }
+    std::unique_ptr<PlacedSampler> place(const Transform& world) const override {
+        return std::make_unique<PlacedGlare>(PlacedGlare::Metric::Dgp, world.applyPoint(origin),
+                                             normalize(world.applyVector(direction)), thresholdNits);
+    }
+    std::shared_ptr<const SamplerType> transformed(const Transform& t) const override {
+        auto s = std::make_shared<Dgp>(*this);
+        s->origin = t.applyPoint(origin);
+        s->direction = t.applyVector(direction);
+        return s;
+    }
+    std::string describe() const override {
+        return "daylight glare probability, sources above " + json::formatNumber(thresholdNits) + " cd/m2";
+    }
+};
+
+}  // namespace
+
+std::shared_ptr<const SamplerType> dgpSampler(Vec3 origin, Vec3 direction, double thresholdNits) {
+    if (length(direction) < 1e-12) throw std::invalid_argument("dgp sampler: zero direction");
+    if (!(thresholdNits > 0)) throw std::invalid_argument("dgp sampler: source_threshold_nits must be positive");
+    auto s = std::make_shared<Dgp>();
+    s->origin = origin;
+    s->direction = normalize(direction);
+    s->thresholdNits = thresholdNits;
+    return s;
+}
+
+std::shared_ptr<const SamplerType> readDgpSampler(const json::Fields& f) {
+    auto s = std::make_shared<Dgp>();
+    s->origin = f.vec3("origin", true, json::coordinateRange()).value_or(Vec3());
+    s->direction = f.direction("direction", true).value_or(Vec3(0, -1, 0));
+    s->thresholdNits = f.number("source_threshold_nits", 2000.0, json::Range::positive("cd/m2"));
+    return s;
+}
+
+}  // namespace luxplan

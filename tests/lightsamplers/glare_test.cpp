@@ -1,0 +1,137 @@
+// The glare samplers against the formulas computed by hand (docs/glare.md): the Guth
+// position index and DGP worked examples of REFERENCES.md, and UGR and DGP of one
+// small rect luminaire of known luminance seen against a uniform sky over a black
+// ground, where every term of the formulas is known in closed form.
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include <luxplan/emitters/emitter_shape.h>
+#include <luxplan/lightsamplers/glare_sources.h>
+#include "support/scene_builder.h"
+#include "support/scene_lab.h"
+
+namespace luxplan {
+namespace {
+
+TEST(GuthIndex, ValuesOfTheReferences) {
+    EXPECT_NEAR(guthIndex(0, 0), 1.0, 1e-4);
+    EXPECT_NEAR(guthIndex(0, 30), 3.3481, 1e-4);
+    EXPECT_NEAR(guthIndex(90, 30), 1.4681, 1e-4);
+    EXPECT_NEAR(guthIndex(45, 45), 4.4150, 1e-4);
+    EXPECT_EQ(guthIndex(0, 60), 16);
+}
+
+TEST(GuthIndex, FromDirections) {
+    const Vec3 f(1, 0, 0);
+    EXPECT_NEAR(guthIndexOf(f, f), 1.0, 1e-9);
+    EXPECT_NEAR(guthIndexOf(f, normalize(Vec3(std::cos(radians(30)), 0, std::sin(radians(30))))), 3.3481, 1e-4);
+    EXPECT_NEAR(guthIndexOf(f, normalize(Vec3(std::cos(radians(30)), std::sin(radians(30)), 0))), 1.4681, 1e-3);
+    EXPECT_EQ(guthIndexOf(f, Vec3(-1, 0, 0)), 16);
+    // Below the line of sight, Iwata: 20 deg down gives r = tan 20 deg < 0.6, P = 1 + 0.8 r.
+    EXPECT_NEAR(guthIndexOf(f, normalize(Vec3(std::cos(radians(20)), 0, -std::sin(radians(20))))),
+                1 + 0.8 * std::tan(radians(20)), 1e-9);
+}
+
+GlareSource source(double L, double omega, double P) {
+    GlareSource s;
+    s.luminance = L, s.solidAngle = omega, s.positionIndex = P;
+    return s;
+}
+
+TEST(DaylightGlareProbability, WorkedExamplesOfTheReferences) {
+    EXPECT_NEAR(daylightGlareProbability(2000, {source(1e4, 0.01, 1)}), 0.29693, 1e-5);
+    EXPECT_NEAR(daylightGlareProbability(3000, {source(5e4, 0.05, 2)}), 0.43029, 1e-5);
+    EXPECT_NEAR(daylightGlareProbability(800, {}), 0.20596, 1e-5);
+    EXPECT_NEAR(daylightGlareProbability(200, {}) / (0.159 + 5.87e-5 * 200), 0.690, 1e-3);
+    EXPECT_EQ(daylightGlareProbability(1e6, {source(1e9, 1, 1)}), 1.0);
+}
+
+TEST(UnifiedGlareRating, WorkedExamplesOfTheReferences) {
+    EXPECT_NEAR(unifiedGlareRating(40, {source(5000, 0.01, 2)}), 20.734, 1e-3);
+    std::vector<GlareSource> four(4, source(5000, 0.01, 2));
+    EXPECT_NEAR(unifiedGlareRating(40, four), 25.551, 1e-3);
+    EXPECT_EQ(unifiedGlareRating(40, {}), 0);
+}
+
+// A 0.1 x 0.1 m rect facing down, 2 m ahead of and 1 m above an eye looking along +x,
+// luminance L = flux / (pi A), under a uniform sky of luminance Ls over a black
+// ground. omega = A cos(theta_e) / d^2, sigma = atan(1/2), tau = 0; the sky fills the
+// upper half of the front hemisphere but for the luminaire: E_ind = pi Ls / 2 - Ls
+// omega cos(sigma), and E_v = E_ind + L omega cos(sigma).
+struct OneLuminaire {
+    static constexpr double kSky = 1000, kLuminance = 20000, kSide = 0.1;
+    static double flux() { return kLuminance * kPi * kSide * kSide; }
+    static double distance() { return std::sqrt(5.0); }
+    static double omega() { return kSide * kSide * (1 / distance()) / (distance() * distance()); }
+    static double cosSigma() { return 2 / distance(); }
+    static double P() { return guthIndex(0, degrees(std::atan(0.5))); }
+    static double indirect() { return kPi * kSky / 2 - kSky * omega() * cosSigma(); }
+    static Scene scene(std::shared_ptr<const SamplerType> sampler) {
+        return test::SceneBuilder()
+            .uniformSky(kSky)
+            .emitter("panel", rectEmitter({2, 0, 1}, {0, 0, -1}, {0, 1, 0}, {kSide, kSide}), flux())
+            .sampler("eye", sampler, 0, 100)
+            .build();
+    }
+};
+
+TEST(UgrSampler, OneLuminaireAgainstTheFormula) {
+    using T = OneLuminaire;
+    test::SceneLab lab(T::scene(ugrSampler({0, 0, 0}, {1, 0, 0})));
+    SamplerResult r = lab.measure(4000).samplers[0];
+    const double Lb = T::indirect() / kPi;
+    const double expected = 8 * std::log10(0.25 / Lb * T::kLuminance * T::kLuminance * T::omega() / (T::P() * T::P()));
+    EXPECT_NEAR(r.value, expected, 4 * r.standardError + 0.05) << "standard error " << r.standardError;
+    EXPECT_GT(r.standardError, 0);
+    EXPECT_LT(r.standardError, 0.2);
+    auto survey = glareSurvey(*lab.scene.samplers[0].type, Transform(), r.points);
+    ASSERT_TRUE(survey.has_value());
+    ASSERT_EQ(survey->sources.size(), 1u);
+    EXPECT_NEAR(survey->sources[0].luminance, T::kLuminance, 1e-3 * T::kLuminance);
+    EXPECT_NEAR(survey->sources[0].solidAngle, T::omega(), 0.01 * T::omega());
+    EXPECT_NEAR(survey->sources[0].positionIndex, T::P(), 0.01 * T::P());
+    EXPECT_NEAR(survey->backgroundLuminance, Lb, 0.02 * Lb);
+}
+
+TEST(UgrSampler, LuminairesBehindOrBelowTheEyeDoNotCount) {
+    using T = OneLuminaire;
+    test::SceneLab behind(T::scene(ugrSampler({0, 0, 0}, {-1, 0, 0})));
+    EXPECT_EQ(behind.measure(500).samplers[0].value, 0);
+    test::SceneLab above(T::scene(ugrSampler({0, 0, 1.5}, {1, 0, 0})));  // the lamp is below the eye
+    EXPECT_EQ(above.measure(500).samplers[0].value, 0);
+}
+
+TEST(DgpSampler, OneLuminaireAgainstTheFormula) {
+    using T = OneLuminaire;
+    test::SceneLab lab(T::scene(dgpSampler({0, 0, 0}, {1, 0, 0}, 2000)));
+    SamplerResult r = lab.measure(4000).samplers[0];
+    const double Ev = T::indirect() + T::kLuminance * T::omega() * T::cosSigma();
+    const double sum = T::kLuminance * T::kLuminance * T::omega() / (T::P() * T::P());
+    const double expected = 5.87e-5 * Ev + 0.159 + 0.092 * std::log10(1 + sum / std::pow(Ev, 1.87));
+    EXPECT_NEAR(r.value, expected, 4 * r.standardError + 2e-3) << "standard error " << r.standardError;
+    EXPECT_GT(r.standardError, 0);
+    // Above the luminaire's luminance, the threshold leaves no source: DGP from E_v alone.
+    test::SceneLab dim(T::scene(dgpSampler({0, 0, 0}, {1, 0, 0}, 50000)));
+    SamplerResult d = dim.measure(4000).samplers[0];
+    EXPECT_NEAR(d.value, 5.87e-5 * Ev + 0.159, 4 * d.standardError + 1e-3);
+}
+
+TEST(GlareSamplers, DeterministicForASeed) {
+    using T = OneLuminaire;
+    test::SceneLab lab(T::scene(dgpSampler({0, 0, 0}, {1, 0, 0})));
+    EXPECT_EQ(lab.measure(300, 7).samplers[0].value, lab.measure(300, 7).samplers[0].value);
+}
+
+TEST(GlareSamplers, ReadTheirKeys) {
+    const SamplerTypeEntry* ugr = findSamplerType("ugr");
+    const SamplerTypeEntry* dgp = findSamplerType("dgp");
+    ASSERT_NE(ugr, nullptr);
+    ASSERT_NE(dgp, nullptr);
+    EXPECT_EQ(json::probeKeys([&](const json::Fields& f) { ugr->read(f); }), (std::vector<std::string>{"origin", "direction"}));
+    EXPECT_EQ(json::probeKeys([&](const json::Fields& f) { dgp->read(f); }),
+              (std::vector<std::string>{"origin", "direction", "source_threshold_nits"}));
+}
+
+}  // namespace
+}  // namespace luxplan
