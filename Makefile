@@ -12,8 +12,9 @@ all: build
 deps:
 	./scripts/install-deps.sh
 
+# Benchmarks are built by `make bench` only, which keeps `make test` within CI's time.
 configure: deps
-	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release
+	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release -DLUXPLAN_BUILD_BENCH=OFF
 
 build: configure
 	cmake --build $(BUILD) -j $(JOBS)
@@ -35,7 +36,7 @@ ASAN_BUILD ?= build-asan
 ASAN_MODULES ?= core;json;io
 ASAN_FUZZ_SECONDS ?= 40
 sanitize: deps
-	cmake -S . -B $(ASAN_BUILD) -DCMAKE_BUILD_TYPE=Debug "-DCMAKE_CXX_FLAGS_DEBUG=-O1 -g" -DLUXPLAN_SANITIZE=ON \
+	cmake -S . -B $(ASAN_BUILD) -DCMAKE_BUILD_TYPE=Debug "-DCMAKE_CXX_FLAGS_DEBUG=-O0 -g1" -DLUXPLAN_SANITIZE=ON \
 	  -DLUXPLAN_BUILD_BENCH=OFF "-DLUXPLAN_TEST_MODULES=$(ASAN_MODULES)" -DLUXPLAN_FUZZ_SECONDS=$(ASAN_FUZZ_SECONDS)
 	cmake --build $(ASAN_BUILD) -j $(JOBS) --target luxplan_fuzz $(foreach m,$(subst ;, ,$(ASAN_MODULES)),test_$(m))
 	ASAN_OPTIONS=detect_leaks=1:strict_string_checks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
@@ -49,7 +50,9 @@ fuzz: configure
 	cmake --build $(BUILD) -j $(JOBS) --target luxplan_fuzz
 	./$(BUILD)/tests/luxplan_fuzz --count $(FUZZ_COUNT) --seed $(FUZZ_SEED) --jobs $(JOBS) --save $(BUILD)/fuzz-failures
 
-bench: build
+bench: deps
+	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release -DLUXPLAN_BUILD_BENCH=ON
+	cmake --build $(BUILD) -j $(JOBS) --target luxplan_bench
 	./$(BUILD)/bench/luxplan_bench
 
 clean:
