@@ -234,7 +234,7 @@ TEST(SceneLoader, SuggestsTheClosestName) {
     s = validScene();
     s["samplers"][0]["type"] = "directonal";
     EXPECT_TRUE(startsWith(onlyProblem(s), "/samplers/0/type: unknown sampler type \"directonal\" (did you mean \"directional\"?) "
-                                           "(planar, directional, volume or cylindrical)"))
+                                           "(planar, directional, volume, cylindrical, ugr or dgp)"))
         << onlyProblem(s);
     s = validScene();
     s["entities"][0]["parts"][0]["preset"] = "dsk";
