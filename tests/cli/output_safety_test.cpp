@@ -18,21 +18,13 @@
 
 #include <nlohmann/json.hpp>
 
+#include "support/small_room.h"
 #include "support/temp_files.h"
 
 namespace luxplan {
 namespace {
 
-const char* kScene = R"({"luxplan": 1,
-  "materials": {"wall": {"type": "diffuse", "reflectance": 0.6}},
-  "geometry": [{"name": "room", "room": {"min": [0,0,0], "max": [6,4,3]},
-                "materials": {"floor": "wall", "walls": "wall", "ceiling": "wall"}}],
-  "luminaires": [{"name": "panel", "shape": "rect", "center": [3,2,2.99], "normal": [0,0,-1], "size": [0.6,0.6], "flux_lm": 3200}],
-  "entities": [{"name": "desk", "position": [2, 2],
-                "placement": {"regions": [{"min": [1,1], "max": [5,3], "rotations": [0, 90]}]},
-                "parts": [{"box": {"size": [1.2,0.6,0.75]}, "material": "wall"}]}],
-  "samplers": [{"name": "top", "type": "planar", "center": [3,2,0.8], "size": [1,1], "target": [300,500]}],
-  "optimizer": {"paths_per_point": 4}})";
+const std::string kScene = test::smallRoomScene();
 
 std::string readAll(const std::filesystem::path& p) {
     std::ifstream in(p, std::ios::binary);

@@ -8,6 +8,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "support/small_room.h"
+
 namespace luxplan::fuzz {
 namespace {
 
@@ -408,17 +410,8 @@ Case layoutCase(const Seeds& seeds, Rng& rng) {
 
 // ---- meshes ----
 
-const char* kMeshScene = R"({"luxplan": 1,
-  "materials": {"wall": {"type": "diffuse", "reflectance": 0.6}},
-  "geometry": [{"name": "room", "room": {"min": [0,0,0], "max": [6,4,3]},
-                "materials": {"floor": "wall", "walls": "wall", "ceiling": "wall"}},
-               {"name": "m", "mesh": "MESH", "material": "wall", "transform": {"translate": [3, 2, 0.5]}}],
-  "luminaires": [{"name": "panel", "shape": "rect", "center": [3,2,2.99], "normal": [0,0,-1], "size": [0.6,0.6], "flux_lm": 3200}],
-  "entities": [{"name": "desk", "position": [2, 2],
-                "placement": {"regions": [{"min": [1,1], "max": [5,3], "rotations": [0, 90]}]},
-                "parts": [{"box": {"size": [1.2,0.6,0.75]}, "material": "wall"}]}],
-  "samplers": [{"name": "top", "type": "planar", "center": [3,2,0.8], "size": [1,1], "target": [300,500]}],
-  "optimizer": {"paths_per_point": 4}})";
+const std::string kMeshScene = test::smallRoomScene(
+    R"(, {"name": "m", "mesh": "MESH", "material": "wall", "transform": {"translate": [3, 2, 0.5]}})");
 
 // The mesh as a static item, or as a part of the movable desk (half of the time).
 std::string meshScene(const std::string& mesh, Rng& rng) {
