@@ -33,6 +33,8 @@ TEST(GlareCli, MeasureGivesTheSourcesFound) {
     const auto& sources = samplers[0]["glare"]["sources"];
     ASSERT_EQ(sources.size(), 1u);
     EXPECT_NEAR(sources[0]["luminance"].get<double>(), 20000, 50);
+    EXPECT_EQ(sources[0]["kind"], "luminaire");
+    EXPECT_EQ(sources[0]["slot"], 0);
     EXPECT_GT(sources[0]["solid_angle"].get<double>(), 0);
     EXPECT_GT(sources[0]["position_index"].get<double>(), 1);
     EXPECT_EQ(samplers[1]["value"].get<double>(), 0);  // raw in JSON
@@ -42,7 +44,7 @@ TEST(GlareCli, MeasureGivesTheSourcesFound) {
     test::CliResult text = test::runCli("measure " + file.string() + " --paths 200 --threads 2");
     ASSERT_EQ(text.exitCode, 0) << text.output;
     EXPECT_NE(text.output.find("<10"), std::string::npos) << text.output;
-    EXPECT_NE(text.output.find("1 source; ["), std::string::npos) << text.output;
+    EXPECT_NE(text.output.find("1 source; luminaire ["), std::string::npos) << text.output;
     EXPECT_NE(text.output.find("DGP 0."), std::string::npos) << text.output;
 }
 
@@ -51,11 +53,14 @@ TEST(GlareCli, BadKeysAreReportedWithTheFileAndPath) {
     auto file = dir.write("scene.json", R"({"luxplan": 1,
       "samplers": [{"name": "d", "type": "dgp", "origin": [0, 0, 1.2], "direction": [1, 0, 0],
                     "source_threshold_nits": -5, "target": [0, 0.35]},
+                   {"name": "c", "type": "dgp", "origin": [0, 0, 1.2], "direction": [1, 0, 0],
+                    "direction_cells": 1, "target": [0, 0.35]},
                    {"name": "u", "type": "ugr", "origin": [0, 0, 1.2], "target": [0, 19]}]})");
     test::CliResult r = test::runCli("validate " + file.string());
     EXPECT_NE(r.exitCode, 0);
     EXPECT_NE(r.output.find(file.string() + ": /samplers/0/source_threshold_nits"), std::string::npos) << r.output;
-    EXPECT_NE(r.output.find(file.string() + ": /samplers/1"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find(file.string() + ": /samplers/1/direction_cells"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find(file.string() + ": /samplers/2"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("direction"), std::string::npos) << r.output;
 }
 

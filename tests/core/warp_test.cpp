@@ -51,6 +51,20 @@ TEST(Warp, UniformSphereMatchesPdf) {
     EXPECT_GT(r.pValue, 0.01) << r.table;
 }
 
+TEST(Warp, EqualAreaHemisphereMatchesPdf) {
+    auto r = directionChi2(equalAreaHemisphere, [](const Vec3& w) { return w.z >= 0 ? uniformHemispherePdf() : 0.0; }, 200000);
+    EXPECT_GT(r.pValue, 0.01) << r.table;
+}
+
+TEST(Warp, EqualAreaHemisphereKeepsTheMidlinesOnGreatCircles) {
+    for (double t : {0.0, 0.1, 0.37, 0.5, 0.8, 1.0}) {
+        EXPECT_NEAR(equalAreaHemisphere({t, 0.5}).y, 0.0, 1e-12);
+        EXPECT_NEAR(equalAreaHemisphere({0.5, t}).x, 0.0, 1e-12);
+    }
+    EXPECT_NEAR(equalAreaHemisphere({1.0, 0.5}).z, 0.0, 1e-12);  // the square's edge is the horizon
+    EXPECT_NEAR(equalAreaHemisphere({0.5, 0.5}).z, 1.0, 1e-12);
+}
+
 TEST(Warp, UniformConeMatchesPdf) {
     double cosMax = 0.8125;  // on a bin edge, so the pdf is smooth within every cell
     auto r = directionChi2([&](Vec2 u) { return sampleUniformCone(u, cosMax); },

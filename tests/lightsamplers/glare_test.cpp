@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <luxplan/daylight/daylight_params.h>
 #include <luxplan/emitters/emitter_shape.h>
 #include <luxplan/lightsamplers/glare_sources.h>
 #include "support/scene_builder.h"
@@ -117,6 +118,63 @@ TEST(DgpSampler, OneLuminaireAgainstTheFormula) {
     EXPECT_NEAR(d.value, 5.87e-5 * Ev + 0.159, 4 * d.standardError + 1e-3);
 }
 
+// A uniform sky of 3000 cd/m2 over a black ground, seen by an eye looking along +x
+// with nothing around it: the upper half of the front hemisphere is one region
+// brighter than the 2000 cd/m2 threshold, omega = pi, L = 3000, centred 45 degrees up
+// (the centroid of a quarter sphere is along (1, 0, 1)), P = P(tau 0, sigma 45); its
+// direct light is all of E_v = pi L / 2.
+TEST(DgpSampler, ABrightSkyIsOneRegionAgainstTheFormula) {
+    constexpr double kSky = 3000;
+    test::SceneLab lab(test::SceneBuilder().uniformSky(kSky).sampler("eye", dgpSampler({0, 0, 0}, {1, 0, 0}, 2000, 16), 0, 1).build());
+    SamplerResult r = lab.measure(200).samplers[0];
+    auto survey = glareSurvey(*lab.scene.samplers[0].type, Transform(), r.points);
+    ASSERT_TRUE(survey.has_value());
+    ASSERT_EQ(survey->sources.size(), 1u);
+    const GlareSource& g = survey->sources[0];
+    EXPECT_EQ(g.kind, GlareSource::Kind::Region);
+    EXPECT_NEAR(g.solidAngle, kPi, 1e-9);
+    EXPECT_NEAR(g.luminance, kSky, 1e-6 * kSky);
+    EXPECT_NEAR(degrees(std::acos(dot(g.direction, normalize(Vec3(1, 0, 1))))), 0, 0.2);
+    const double P = guthIndex(0, 45);
+    EXPECT_NEAR(g.positionIndex, P, 0.02 * P);
+    const double Ev = kPi * kSky / 2;
+    EXPECT_NEAR(survey->verticalIlluminance, Ev, 0.01 * Ev);
+    EXPECT_NEAR(survey->directIlluminance, Ev, 1e-3 * Ev);
+    const double expected = 5.87e-5 * Ev + 0.159 + 0.092 * std::log10(1 + kSky * kSky * kPi / (P * P) / std::pow(Ev, 1.87));
+    EXPECT_NEAR(r.value, expected, 4 * r.standardError + 1e-3);
+    // Below the sky's luminance the threshold leaves no source.
+    test::SceneLab dim(test::SceneBuilder().uniformSky(kSky).sampler("eye", dgpSampler({0, 0, 0}, {1, 0, 0}, 4000, 16), 0, 1).build());
+    EXPECT_TRUE(glareSurvey(*dim.scene.samplers[0].type, Transform(), dim.measure(50).samplers[0].points)->sources.empty());
+}
+
+// The sun 20 degrees up straight ahead, 2000 lx at normal incidence, in a uniform sky
+// of 500 cd/m2 (below the threshold): the sun disk is the one source, surveyed by its
+// slot; the direction cell it falls in hides it (else that cell's mean, ~2e5 cd/m2,
+// would add a second, spurious source).
+TEST(DgpSampler, TheSunIsOneSourceNotTwo) {
+    constexpr double kSky = 500, kSunLx = 2000;
+    DaylightParams d;
+    d.model = SkyModelType::Uniform;
+    d.luminanceNits = kSky;
+    d.sunOverride = SunOverride{20, 180, kSunLx};
+    d.groundReflectance = 0;
+    const Vec3 south(0, -1, 0);
+    test::SceneLab lab(test::SceneBuilder().daylight(d).sampler("eye", dgpSampler({0, 0, 0}, south, 2000), 0, 1).build());
+    SamplerResult r = lab.measure(400).samplers[0];
+    auto survey = glareSurvey(*lab.scene.samplers[0].type, Transform(), r.points);
+    ASSERT_TRUE(survey.has_value());
+    ASSERT_EQ(survey->sources.size(), 1u);
+    const GlareSource& sun = survey->sources[0];
+    EXPECT_EQ(sun.kind, GlareSource::Kind::Sun);
+    EXPECT_NEAR(sun.luminance * sun.solidAngle, kSunLx, 0.01 * kSunLx);
+    const double P = guthIndex(0, 20);
+    EXPECT_NEAR(sun.positionIndex, P, 0.01 * P);
+    const double Ev = kPi * kSky / 2 + kSunLx * std::cos(radians(20));
+    EXPECT_NEAR(survey->verticalIlluminance, Ev, 0.01 * Ev);
+    const double sum = sun.luminance * sun.luminance * sun.solidAngle / (P * P);
+    EXPECT_NEAR(r.value, 5.87e-5 * Ev + 0.159 + 0.092 * std::log10(1 + sum / std::pow(Ev, 1.87)), 4 * r.standardError + 2e-3);
+}
+
 TEST(GlareSamplers, DeterministicForASeed) {
     using T = OneLuminaire;
     test::SceneLab lab(T::scene(dgpSampler({0, 0, 0}, {1, 0, 0})));
@@ -130,7 +188,7 @@ TEST(GlareSamplers, ReadTheirKeys) {
     ASSERT_NE(dgp, nullptr);
     EXPECT_EQ(json::probeKeys([&](const json::Fields& f) { ugr->read(f); }), (std::vector<std::string>{"origin", "direction"}));
     EXPECT_EQ(json::probeKeys([&](const json::Fields& f) { dgp->read(f); }),
-              (std::vector<std::string>{"origin", "direction", "source_threshold_nits"}));
+              (std::vector<std::string>{"origin", "direction", "source_threshold_nits", "direction_cells"}));
 }
 
 }  // namespace

@@ -30,6 +30,16 @@ inline Vec3 sampleUniformHemisphere(Vec2 u) {
 }
 inline constexpr double uniformHemispherePdf() { return 1 / (2 * kPi); }
 
+// Uniform over the hemisphere about +z, area-preserving from the unit square
+// (Clarberg 2008): the concentric disk, then Lambert's azimuthal equal-area map. Each
+// cell of a grid on the square maps to an equal solid angle, neighbours to
+// neighbours, and the square's midlines to great circles through +z.
+inline Vec3 equalAreaHemisphere(Vec2 u) {
+    Vec2 d = sampleUniformDiskConcentric(u);
+    double r2 = std::min(1.0, d.x * d.x + d.y * d.y), s = std::sqrt(2 - r2);
+    return {d.x * s, d.y * s, 1 - r2};
+}
+
 inline Vec3 sampleUniformSphere(Vec2 u) {
     double z = 1 - 2 * u.x, r = std::sqrt(std::max(0.0, 1 - z * z)), phi = 2 * kPi * u.y;
     return {r * std::cos(phi), r * std::sin(phi), z};

@@ -15,13 +15,17 @@ double guthIndex(double tau, double sigma) {
     return std::min(16.0, std::exp(e));
 }
 
-double guthIndexOf(const Vec3& forward, const Vec3& w) {
+Frame eyeFrame(const Vec3& forward) {
     const Vec3 f = normalize(forward);
     Vec3 up = Vec3(0, 0, 1) - f * f.z;
     if (length(up) < 1e-9) up = Vec3(0, 1, 0) - f * f.y;  // looking straight up or down
     up = normalize(up);
-    const Vec3 right = cross(f, up);
-    const double z = dot(w, f), x = dot(w, right), y = dot(w, up);
+    return Frame(cross(f, up), up, f);
+}
+
+double guthIndexOf(const Vec3& forward, const Vec3& w) {
+    const Frame eye = eyeFrame(forward);
+    const double z = dot(w, eye.n), x = dot(w, eye.s), y = dot(w, eye.t);
     if (z <= 0) return 16;
     if (y >= 0) {
         const double sigma = degrees(std::acos(std::clamp(z / length(w), -1.0, 1.0)));
@@ -60,16 +64,41 @@ double daylightGlareProbability(double Ev, const std::vector<GlareSource>& sourc
     return std::clamp(dgp, 0.0, 1.0);
 }
 
+DirectionGrid::DirectionGrid(int n) : n_(n), centroids_(size_t(n) * size_t(n)) {
+    constexpr int kSub = 16;  // a cell's centroid by the midpoint rule on kSub x kSub
+    for (int c = 0; c < cells(); ++c) {
+        Vec3 sum;
+        for (int j = 0; j < kSub; ++j)
+            for (int i = 0; i < kSub; ++i) sum += direction(c, {(i + 0.5) / kSub, (j + 0.5) / kSub});
+        centroids_[size_t(c)] = sum / double(kSub * kSub);
+    }
+}
+
+Vec3 DirectionGrid::direction(int cell, Vec2 u) const {
+    return equalAreaHemisphere({((cell % n_) + u.x) / n_, ((cell / n_) + u.y) / n_});
+}
+
 void PlacedGlare::sample(const PathTracer& tracer, int item, PathSamples& samples, RayStats& stats, PathContributions& out) const {
     if (item == 0) {
         out.add(tracer.sample(CosineSensor(eye_, forward_), samples, stats));
-        return;
+    } else if (item >= kFirstCell) {
+        // The sky, the ground outside and surfaces through a cell; the luminaires and
+        // sun disks a ray meets first are their slots' sources.
+        const Vec3 w = frame_.toWorld(grid_->direction(item - kFirstCell, samples.get2D(PathSamples::Direction)));
+        out.add(tracer.sample(RaySensor(Ray{eye_, w}, true), samples, stats));
+    } else {
+        sampleSlot(tracer, item, samples, stats, out);
     }
+}
+
+void PlacedGlare::sampleSlot(const PathTracer& tracer, int item, PathSamples& samples, RayStats& stats,
+                             PathContributions& out) const {
     const int slot = (item - 1) / kQuantities, q = (item - 1) % kQuantities;
     const EmitterSet& emitters = tracer.emitters();
     Vec3 w;
     double pdf = 0, Le = 0, T = 0;
     if (slot < int(emitters.size())) {
+        if (q == 6) return;  // only a sun's slot counts its solid angle twice
         if (stats.footprint) stats.footprint->usedEmitterChoice = true;  // where the luminaires are
         const WorldEmitter& e = emitters[size_t(slot)];
         auto p = e.shape->sample(eye_, samples.get2D(PathSamples::EmitterPoint));
@@ -99,6 +128,7 @@ void PlacedGlare::sample(const PathTracer& tracer, int item, PathSamples& sample
         case 0: out.add(omega); break;
         case 1: out.add(omega * Le); break;
         case 2: out.add(omega * Le * dot(w, forward_)); break;
+        case 6: out.add(omega); break;  // a sun's slot
         default: out.add(omega * (q == 3 ? w.x : q == 4 ? w.y : w.z)); break;
     }
 }
@@ -119,15 +149,68 @@ GlareSurvey PlacedGlare::survey(const std::vector<double>& m) const {
         g.direction = length(c) > 0 ? normalize(c) : forward_;
         g.positionIndex = guthIndexOf(forward_, g.direction);
         g.index = slot;
+        g.kind = m[b + 6] > 0 ? GlareSource::Kind::Sun : GlareSource::Kind::Luminaire;
         if (metric_ == Metric::Dgp && g.luminance <= threshold_) continue;
         direct += m[b + 2];
         s.sources.push_back(g);
     }
+    if (grid_) addRegions(m, s.sources, direct);
     s.directIlluminance = direct;
     s.backgroundLuminance = std::max(0.0, s.verticalIlluminance - direct) / kPi;
     s.value = metric_ == Metric::Ugr ? unifiedGlareRating(s.backgroundLuminance, s.sources)
                                      : daylightGlareProbability(s.verticalIlluminance, s.sources);
     return s;
+}
+
+void PlacedGlare::addRegions(const std::vector<double>& m, std::vector<GlareSource>& sources, double& direct) const {
+    const int n = grid_->cellsPerSide();
+    if (m.size() < size_t(kFirstCell + grid_->cells())) return;
+    auto bright = [&](int i, int j) { return m[size_t(kFirstCell + j * n + i)] > threshold_; };
+    std::vector<int> region(size_t(grid_->cells()), -1);
+    std::vector<int> stack;
+    int regions = 0;
+    for (int start = 0; start < grid_->cells(); ++start) {
+        if (region[size_t(start)] >= 0 || !bright(start % n, start / n)) continue;
+        // One region: a flood fill over the eight neighbours.
+        double sumL = 0, sumE = 0;
+        Vec3 sumDir;
+        int count = 0;
+        region[size_t(start)] = regions;
+        stack.assign(1, start);
+        while (!stack.empty()) {
+            const int c = stack.back();
+            stack.pop_back();
+            const double L = m[size_t(kFirstCell + c)];
+            sumL += L, sumE += L * grid_->centroid(c).z, sumDir += grid_->centroid(c), ++count;
+            for (int dj = -1; dj <= 1; ++dj)
+                for (int di = -1; di <= 1; ++di) {
+                    const int i = c % n + di, j = c / n + dj;
+                    if (i < 0 || j < 0 || i >= n || j >= n) continue;
+                    const int k = j * n + i;
+                    if (region[size_t(k)] >= 0 || !bright(i, j)) continue;
+                    region[size_t(k)] = regions;
+                    stack.push_back(k);
+                }
+        }
+        GlareSource g;
+        g.kind = GlareSource::Kind::Region;
+        g.index = regions++;
+        g.solidAngle = count * grid_->cellSolidAngle();
+        g.luminance = sumL / count;  // the cells have equal solid angles
+        g.direction = normalize(frame_.toWorld(sumDir));
+        g.positionIndex = guthIndexOf(forward_, g.direction);
+        direct += sumE * grid_->cellSolidAngle();
+        sources.push_back(g);
+    }
+}
+
+std::vector<char> PlacedGlare::stillNeeded(const ItemEstimates& e, double z) const {
+    std::vector<char> keep(size_t(e.items()), 1);
+    for (int k = kFirstCell; k < e.items(); ++k) {
+        const Estimate x = e.of(k);
+        keep[size_t(k)] = x.value + z * x.standardError >= threshold_;
+    }
+    return keep;
 }
 
 Estimate PlacedGlare::combine(const ItemEstimates& e) const {

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include <luxplan/lightsamplers/sampler_result.h>
@@ -27,33 +28,75 @@ double unifiedGlareRating(double backgroundLuminance, const std::vector<GlareSou
 // low-light factor below 1000 lx, clamped to [0, 1].
 double daylightGlareProbability(double verticalIlluminance, const std::vector<GlareSource>& sources);
 
+// The hemisphere in front of an eye as n x n cells of equal solid angle 2 pi / n^2:
+// the unit square's grid through equalAreaHemisphere (core/warp.h), local x to the
+// eye's right, y up, z along the line of sight. Cells that are neighbours in the
+// square are neighbours on the hemisphere; with n even, the horizontal plane through
+// the line of sight runs along cell edges.
+class DirectionGrid {
+public:
+    explicit DirectionGrid(int cellsPerSide);
+    int cellsPerSide() const { return n_; }
+    int cells() const { return n_ * n_; }
+    double cellSolidAngle() const { return 2 * kPi / (double(n_) * n_); }
+    // A direction of cell c (row-major, right fastest), uniform over it for uniform u.
+    Vec3 direction(int cell, Vec2 u) const;
+    // The mean of the cell's unit directions (length < 1): its z is the mean cosine.
+    const Vec3& centroid(int cell) const { return centroids_[size_t(cell)]; }
+
+private:
+    int n_;
+    std::vector<Vec3> centroids_;
+};
+
+// The eye's frame: right, up (world +z made orthogonal to the line of sight) and forward.
+Frame eyeFrame(const Vec3& forward);
+
 // The placed "ugr" or "dgp" sampler. Items: 0 the vertical illuminance at the eye,
 // then per source slot (emitters first, then sun disks, up to kSlots) its visible
-// solid angle, L omega, direct vertical illuminance and omega-weighted direction.
+// solid angle, L omega, direct vertical illuminance, omega-weighted direction and,
+// for a sun disk, its solid angle again (which tells suns from luminaires);
+// then, for DGP, each cell of its direction grid: the mean luminance through the cell
+// but for the luminaires and sun disks (surveyed by their slots). Cells brighter than
+// the threshold, joined to their eight neighbours, are the region sources.
 class PlacedGlare final : public PlacedSampler {
 public:
-    static constexpr int kSlots = 32, kQuantities = 6;
+    static constexpr int kSlots = 32, kQuantities = 7, kFirstCell = 1 + kSlots * kQuantities;
     enum class Metric { Ugr, Dgp };
-    PlacedGlare(Metric metric, Vec3 eye, Vec3 forward, double thresholdNits)
-        : metric_(metric), eye_(eye), forward_(forward), threshold_(thresholdNits) {}
+    PlacedGlare(Metric metric, Vec3 eye, Vec3 forward, double thresholdNits,
+                std::shared_ptr<const DirectionGrid> grid = nullptr)
+        : metric_(metric), eye_(eye), forward_(forward), frame_(eyeFrame(forward)), threshold_(thresholdNits),
+          grid_(std::move(grid)) {}
 
-    int items() const override { return 1 + kSlots * kQuantities; }
+    int items() const override { return kFirstCell + (grid_ ? grid_->cells() : 0); }
     void sample(const PathTracer& tracer, int item, PathSamples& samples, RayStats& stats, PathContributions& out) const override;
     // The metric from all folds; its error by the jackknife over the folds.
     Estimate combine(const ItemEstimates& items) const override;
+    // Adaptive measurement stops the cells that are surely below the threshold (their
+    // upper bound is): they are no source and E_v is item 0's.
+    std::vector<char> stillNeeded(const ItemEstimates& items, double z) const override;
     SamplerDrawing drawing() const override;
     // The survey from item means (points of a SamplerResult, in item order).
     GlareSurvey survey(const std::vector<double>& itemMeans) const;
 
 private:
+    void sampleSlot(const PathTracer& tracer, int item, PathSamples& samples, RayStats& stats, PathContributions& out) const;
+    // The connected regions of cells brighter than the threshold, as sources; adds
+    // their direct vertical illuminance to `direct`.
+    void addRegions(const std::vector<double>& itemMeans, std::vector<GlareSource>& sources, double& direct) const;
+
     Metric metric_;
     Vec3 eye_, forward_;
+    Frame frame_;  // s right, t up, n forward
     double threshold_;
+    std::shared_ptr<const DirectionGrid> grid_;  // DGP only
 };
 
 // Constructed in C++ (tests): a normalized direction, which must not be zero.
 std::shared_ptr<const SamplerType> ugrSampler(Vec3 origin, Vec3 direction);
-std::shared_ptr<const SamplerType> dgpSampler(Vec3 origin, Vec3 direction, double sourceThresholdNits = 2000);
+// `directionCells`: the direction grid's cells per side (the file's "direction_cells").
+std::shared_ptr<const SamplerType> dgpSampler(Vec3 origin, Vec3 direction, double sourceThresholdNits = 2000,
+                                              int directionCells = 24);
 // The survey behind a measured glare sampler's value (null type: not a glare sampler).
 std::optional<GlareSurvey> glareSurvey(const SamplerType& type, const Transform& worldFromFrame,
                                        const std::vector<double>& itemMeans);

@@ -13,14 +13,23 @@ namespace luxplan {
 
 // A glare sampler's sources (ugr, dgp: lightsamplers/glare_sources.h).
 struct GlareSource {
+    // A luminaire or a sun disk (surveyed one by one), or a connected region of
+    // directions brighter than the DGP threshold (sky, sunlit surfaces).
+    enum class Kind { Luminaire, Sun, Region };
+    Kind kind = Kind::Luminaire;
     double luminance = 0;    // L, cd/m2, mean over its visible part
     double solidAngle = 0;   // omega, sr
     double positionIndex = 1;  // P
     Vec3 direction;          // unit, from the eye (the solid-angle centroid)
-    int index = -1;          // its slot: the scene's emitters in order, then the sun disks
+    int index = -1;          // its slot (the scene's emitters in order, then the sun disks), or its region's number
 };
 
 // What a glare sampler's value is made of, for reports.
+// "luminaire", "sun" or "region", as measure and the reports name a source's kind.
+inline const char* glareSourceKindName(GlareSource::Kind kind) {
+    return kind == GlareSource::Kind::Luminaire ? "luminaire" : kind == GlareSource::Kind::Sun ? "sun" : "region";
+}
+
 struct GlareSurvey {
     double verticalIlluminance = 0;  // E_v at the eye over the front hemisphere, lx
     double directIlluminance = 0;    // of it, the sources' direct light

@@ -47,7 +47,8 @@ Json samplerStatisticsJson(const LightSamplerSpec& sampler, const SamplerResult&
         const GlareSurvey& g = *result.glare;
         Json sources = Json::array();
         for (const GlareSource& s : g.sources)
-            sources.push_back({{"slot", s.index},
+            sources.push_back({{"kind", glareSourceKindName(s.kind)},
+                               {s.kind == GlareSource::Kind::Region ? "region" : "slot", s.index},
                                {"direction", {s.direction.x, s.direction.y, s.direction.z}},
                                {"luminance", s.luminance},
                                {"solid_angle", s.solidAngle},
@@ -69,7 +70,7 @@ std::string describeStatistics(const LightSamplerSpec& sampler, const SamplerRes
                             : "DGP " + fixed(result.value, 3) + ", Ev " + fixed(g.verticalIlluminance, 0) + " lx";
         d += ", " + std::to_string(g.sources.size()) + (g.sources.size() == 1 ? " source" : " sources");
         for (const GlareSource& s : g.sources)
-            d += "; [" + fixed(s.direction.x, 2) + " " + fixed(s.direction.y, 2) + " " + fixed(s.direction.z, 2) + "] L " +
+            d += std::string("; ") + glareSourceKindName(s.kind) + " [" + fixed(s.direction.x, 2) + " " + fixed(s.direction.y, 2) + " " + fixed(s.direction.z, 2) + "] L " +
                  fixed(s.luminance, 0) + " cd/m2, omega " + fixed(s.solidAngle * 1e3, 3) + " msr, P " + fixed(s.positionIndex, 2);
         return d;
     }

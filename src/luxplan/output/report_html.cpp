@@ -264,7 +264,7 @@ void samplerTable(std::ostringstream& out, const Scene& scene, const std::vector
     for (const SamplerResult* r : rows) glare = glare || (r && r->glare);
     if (glare) {
         out << "<h3>Glare sources (UGR: CIE 117; DGP: Wienold and Christoffersen 2006)</h3>\n<table>\n<tr><th>name</th>"
-               "<th>value</th><th>E<sub>v</sub> (lx)</th><th>L<sub>b</sub> (cd/m&sup2;)</th><th>source direction</th>"
+               "<th>value</th><th>E<sub>v</sub> (lx)</th><th>L<sub>b</sub> (cd/m&sup2;)</th><th>source</th><th>direction</th>"
                "<th>L (cd/m&sup2;)</th><th>&omega; (sr)</th><th>P</th></tr>\n";
         for (size_t k = 0; k < rows.size(); ++k) {
             if (!rows[k] || !rows[k]->glare) continue;
@@ -274,9 +274,9 @@ void samplerTable(std::ostringstream& out, const Scene& scene, const std::vector
             const std::string head = "<tr>" + cell(escapeHtml(scene.samplers[k].name)) + "<td class=\"num\">" + value +
                                      "</td><td class=\"num\">" + number(g.verticalIlluminance, 0) + "</td><td class=\"num\">" +
                                      number(g.backgroundLuminance, 1) + "</td>";
-            if (g.sources.empty()) out << head << "<td colspan=\"4\">no source</td></tr>\n";
+            if (g.sources.empty()) out << head << "<td colspan=\"5\">no source</td></tr>\n";
             for (const GlareSource& src : g.sources)
-                out << head << "<td>[" << number(src.direction.x, 2) << ", " << number(src.direction.y, 2) << ", "
+                out << head << cell(glareSourceKindName(src.kind)) << "<td>[" << number(src.direction.x, 2) << ", " << number(src.direction.y, 2) << ", "
                     << number(src.direction.z, 2) << "]</td><td class=\"num\">" << number(src.luminance, 0)
                     << "</td><td class=\"num\">" << number(src.solidAngle, 5) << "</td><td class=\"num\">"
                     << number(src.positionIndex, 2) << "</td></tr>\n";

@@ -206,7 +206,9 @@ double PathTracer::sample(const Sensor& sensor, PathSamples& samples, RayStats& 
             if (stats.footprint) stats.footprint->add(o, d, 0, hit ? hit->t : kInf);
             if (!hit) {
                 if (daylight_) {
-                    Vec3 sky = daylight_->Le(d), sun = daylight_->sunLe(d);
+                    // Depth 0 is the sensor's own ray, through panes and off mirrors.
+                    const bool hidden = depth == 0 && sensor.hidesSources();
+                    Vec3 sky = daylight_->Le(d), sun = hidden ? Vec3() : daylight_->sunLe(d);
                     double wSky = lastDelta ? 1 : powerHeuristic(1, lastPdf, 1, sky_.pdf(views[current ^ 1], lastPoint, d));
                     double wSun = lastDelta ? 1 : powerHeuristic(1, lastPdf, 1, daylight_->sunPdf(d));
                     L += throughput * (sky * wSky + sun * wSun);
@@ -220,7 +222,7 @@ double PathTracer::sample(const Sensor& sensor, PathSamples& samples, RayStats& 
             if (hit->kind == HitKind::Emitter) {
                 if (hitEmitterFirst && depth == 0 && crossings == 0) *hitEmitterFirst = true;
                 if (stats.footprint) stats.footprint->usedEmitterChoice = true;  // the MIS weight reads it
-                double Le = emitters_.emitted(size_t(hit->index), d);
+                double Le = depth == 0 && sensor.hidesSources() ? 0.0 : emitters_.emitted(size_t(hit->index), d);
                 if (Le > 0) {
                     double w = lastDelta ? 1 : powerHeuristic(1, lastPdf, 1, emitters_.pdf(size_t(hit->index), lastPoint, hit->point));
                     L += throughput * Vec3(Le, Le, Le) * w;

@@ -30,6 +30,10 @@ public:
     virtual double response(const Vec3& wi) const = 0;
     virtual double pdf(const Vec3& wi) const = 0;
     virtual SensorSample sample(Vec2 u) const = 0;
+    // Whether the light a luminaire or a sun disk sends straight to the sensor is left
+    // out (the sky, the ground outside and everything scattered still count): the DGP
+    // sampler's direction cells, whose sources are surveyed apart.
+    virtual bool hidesSources() const { return false; }
 };
 
 // Illuminance (lx) at a point over the hemisphere around unit `normal`: response cos,
@@ -62,18 +66,21 @@ private:
     Vec3 p_;
 };
 
-// Luminance (cd/m2) arriving along one ray: a pinhole camera's pixel sample.
+// Luminance (cd/m2) arriving along one ray: a pinhole camera's pixel sample; with
+// `hideSources`, less what a luminaire or sun disk met by the ray itself emits.
 class RaySensor final : public Sensor {
 public:
-    explicit RaySensor(const Ray& ray) : ray_(ray) {}
+    explicit RaySensor(const Ray& ray, bool hideSources = false) : ray_(ray), hideSources_(hideSources) {}
     Vec3 position() const override { return ray_.origin; }
     bool isDelta() const override { return true; }
     double response(const Vec3&) const override { return 0; }
     double pdf(const Vec3&) const override { return 0; }
     SensorSample sample(Vec2) const override { return {normalize(ray_.direction), 1, 0, true}; }
+    bool hidesSources() const override { return hideSources_; }
 
 private:
     Ray ray_;
+    bool hideSources_;
 };
 
 }  // namespace luxplan
