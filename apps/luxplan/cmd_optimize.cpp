@@ -5,12 +5,15 @@
 // the paper's flat baseline on the flattened scene (optimizer/flatten.h).
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <iterator>
 #include <unistd.h>
+
+#include <nlohmann/json.hpp>
 
 #include "commands.h"
 #include "picture_progress.h"
@@ -60,7 +63,7 @@ private:
 
 struct OptimizeArgs {
     std::string scene, out;
-    int iterations = -1, paths = 0, spp = 0, inner = -1;
+    int iterations = -1, paths = 0, spp = 0, inner = -1, snapshots = 0;
     int64_t seed = -1;
     bool flat = false, quiet = false, noPictures = false, fixedPaths = false, fullEvaluation = false,
          freshNoise = false, noiseBlind = false, nested = false, cycle = false, singleTest = false;
@@ -99,6 +102,22 @@ void checkOutputFolder(const std::filesystem::path& folder) {
     std::filesystem::remove(probe, ec);
 }
 
+// snapshots.json (--snapshots N): the best layout at each checkpoint of the run, in
+// the scene the search ran on (the flattened one with --flat: measure --flat reads it).
+void writeSnapshots(const std::filesystem::path& file, const Scene& scene, const OptimizerResult& result) {
+    nlohmann::json list = nlohmann::json::array();
+    for (const Snapshot& s : result.snapshots)
+        list.push_back({{"iteration", s.iteration},
+                        {"seconds", s.seconds},
+                        {"lighting_evaluations", s.lightingEvaluations},
+                        {"search_C", std::isfinite(s.searchCost) ? nlohmann::json(s.searchCost) : nlohmann::json(nullptr)},
+                        {"feasible", s.feasible},
+                        {"layout", nlohmann::json::parse(io::layoutToJson(scene, s.best))}});
+    nlohmann::json j = {{"scene", scene.name}, {"seed", result.options.seed}, {"flat", result.options.hierarchy == Hierarchy::Flat},
+                        {"iterations", result.iterations}, {"snapshots", list}};
+    writeFileAtomically(file, j.dump(1) + "\n");
+}
+
 // Returns the signal that interrupted the run after its outputs were written, or 0.
 int runOptimize(const OptimizeArgs& args) {
     // From the start, so that a signal during loading still ends in written outputs.
@@ -116,6 +135,7 @@ int runOptimize(const OptimizeArgs& args) {
     if (args.noiseBlind) options.noiseAware = false;
     if (args.singleTest) options.delayedAcceptance = false;
     if (args.inner >= 0) options.innerIterations = args.inner;
+    options.snapshots = args.snapshots;
     if (args.nested) options.focusInner = true;
     if (args.cycle) options.focusInner = false;
     // Flat: the same furniture without groups, kept together by cohesion constraints.
@@ -154,6 +174,7 @@ int runOptimize(const OptimizeArgs& args) {
     if (result.stop == StopReason::Cancelled) std::cerr << "interrupted: writing the best layout found so far\n";
 
     writeOptimizerOutputs(args.out, scene, result);
+    if (!result.snapshots.empty()) writeSnapshots(std::filesystem::path(args.out) / "snapshots.json", scene, result);
     if (flattened) {
         // layout.json in the scene file's hierarchy, so that --layout reads it back;
         // layout_flat.json keeps every object's own placement (measure --flat).
@@ -259,6 +280,10 @@ void registerOptimizeCommand(CLI::App& app, int& threads) {
         ->excludes("--nested");
     cmd->add_flag("--flat", args->flat,
                   "Flat baseline (the paper's Figure 6): no groups, every object on its own, groups kept by cohesion constraints");
+    cmd->add_option("--snapshots", args->snapshots,
+                    "Write snapshots.json: the best layout so far at N checkpoints (iteration ceil(iterations (k/N)^2)), "
+                    "with its wall time and lighting evaluations")
+        ->check(CLI::Range(0, 1000));
     cmd->add_flag("-q,--quiet", args->quiet, "No progress line");
     cmd->add_flag("--no-pictures", args->noPictures, "Skip the pictures, scene.glb and report.html");
     cmd->add_option("--spp", args->spp, "Samples per pixel of render.png (default 16)")->check(CLI::PositiveNumber);

@@ -219,6 +219,36 @@ TEST(Cli, OptimizeFindsTheLitRegionAndWritesItsOutputs) {
     EXPECT_EQ(nlohmann::json::parse(std::ifstream(again / "layout.json")), layout);
 }
 
+// --snapshots N: snapshots.json holds the best layout at N checkpoints with its wall
+// time and lighting evaluations; each layout reads back with measure --layout.
+TEST(Cli, OptimizeSnapshotsTheBestLayoutSoFar) {
+    test::TempDir dir;
+    auto scene = dir.write("scene.json", kLightSeeking);
+    auto out = dir.path() / "out";
+    Result r = run("optimize " + scene.string() + " -o " + out.string() + " --threads 1 -q --no-pictures --snapshots 3");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    auto snapshots = nlohmann::json::parse(std::ifstream(out / "snapshots.json"));
+    EXPECT_EQ(snapshots["seed"], 2);
+    EXPECT_EQ(snapshots["flat"], false);
+    const auto& list = snapshots["snapshots"];
+    ASSERT_GE(list.size(), 1u);
+    ASSERT_LE(list.size(), 3u);
+    if (list.size() == 3u) EXPECT_EQ(list[0]["iteration"], 17);  // ceil(150 / 9)
+    EXPECT_EQ(list.back()["iteration"], snapshots["iterations"]);
+    for (size_t k = 1; k < list.size(); ++k) {
+        EXPECT_GT(list[k]["iteration"].get<int>(), list[k - 1]["iteration"].get<int>());
+        EXPECT_GE(list[k]["lighting_evaluations"].get<int>(), list[k - 1]["lighting_evaluations"].get<int>());
+        EXPECT_GE(list[k]["seconds"].get<double>(), list[k - 1]["seconds"].get<double>());
+    }
+    auto first = dir.write("first.json", list[0]["layout"].dump());
+    Result m = run("measure " + scene.string() + " --layout " + first.string() + " --paths 8 --json");
+    EXPECT_EQ(m.exitCode, 0) << m.output;
+    // Without --snapshots, no file.
+    auto plain = dir.path() / "plain";
+    ASSERT_EQ(run("optimize " + scene.string() + " -o " + plain.string() + " --threads 1 -q --no-pictures").exitCode, 0);
+    EXPECT_FALSE(std::filesystem::exists(plain / "snapshots.json"));
+}
+
 }  // namespace
 }  // namespace luxplan
 

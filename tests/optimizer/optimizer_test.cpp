@@ -117,6 +117,54 @@ TEST_F(OptimizerTest, DeterministicForAFixedSeed) {
     EXPECT_TRUE(differs);
 }
 
+// Snapshots: the best layout so far at iterations ceil(n (k/N)^2), each the state the
+// trace shows there, and one where the run stops early.
+TEST_F(OptimizerTest, SnapshotsHoldTheBestSoFarAtTheirCheckpoints) {
+    test::DeskLight light(scene);
+    OptimizerOptions o = optimizerOptions(scene);
+    o.iterations = 800;
+    o.traceEvery = 1;
+    o.snapshots = 4;
+    o.stopAtZeroCost = false;
+    const OptimizerResult r = Optimizer(scene, o, &light).run();
+    ASSERT_EQ(r.snapshots.size(), 4u);
+    const std::vector<int> at = {50, 200, 450, 800};  // 800 (k/4)^2
+    for (size_t k = 0; k < at.size(); ++k) {
+        const Snapshot& s = r.snapshots[k];
+        EXPECT_EQ(s.iteration, at[k]);
+        EXPECT_EQ(s.searchCost, r.trace[size_t(at[k])].best) << "at " << at[k];  // trace row i is iteration i
+        EXPECT_EQ(s.feasible, std::isfinite(s.searchCost));
+        if (k == 0) continue;
+        EXPECT_GE(s.seconds, r.snapshots[k - 1].seconds);
+        EXPECT_GE(s.lightingEvaluations, r.snapshots[k - 1].lightingEvaluations);
+        EXPECT_LE(s.searchCost, r.snapshots[k - 1].searchCost);
+    }
+    // The last one's lighting evaluations are the run's.
+    EXPECT_EQ(r.snapshots.back().lightingEvaluations, r.lightingEvaluations);
+    EXPECT_GT(r.lightingEvaluations, 0);
+    // Without snapshots asked for, none.
+    o.snapshots = 0;
+    EXPECT_TRUE(Optimizer(scene, o, &light).run().snapshots.empty());
+}
+
+TEST(OptimizerStop, AnEarlyStopLeavesItsSnapshot) {
+    Scene s = test::SceneBuilder()
+                  .entity("a").region({0, 0}, {4, 4}).end()
+                  .entity("b", {9, 9, 0}).region({0, 0}, {4, 4}).end()
+                  .constraint(distanceConstraint({0.5, 1.0, std::nullopt}), "a", "b")
+                  .build();
+    OptimizerOptions o;
+    o.iterations = 20000;
+    o.snapshots = 3;
+    o.start = StartFrom::Scene;
+    OptimizerResult r = Optimizer(s, o).run();
+    ASSERT_EQ(r.stop, StopReason::ZeroCost);
+    ASSERT_FALSE(r.snapshots.empty());
+    EXPECT_EQ(r.snapshots.back().iteration, r.iterations);
+    EXPECT_EQ(r.snapshots.back().searchCost, 0);
+    EXPECT_EQ(r.snapshots.back().lightingEvaluations, 0);
+}
+
 TEST_F(OptimizerTest, InitializeRestartsTheSameChain) {
     OptimizerOptions o = optimizerOptions(scene);
     Optimizer chain(scene, o);

@@ -69,6 +69,7 @@ Optimizer::Optimizer(const Scene& scene, OptimizerOptions options, LightingEvalu
     check(options_.moves.sigmaFraction > 0, "sigma fraction must be > 0");
     check(options_.progressEvery >= 1, "progress interval must be >= 1");
     check(options_.traceEvery >= 0, "trace interval must be >= 0");
+    check(options_.snapshots >= 0, "snapshots must be >= 0");
     check(options_.candidates >= 1, "candidates must be >= 1");
     check(options_.candidateSeparation.metres >= 0 && options_.candidateSeparation.degrees >= 0,
           "candidate separation must be >= 0");
@@ -119,6 +120,7 @@ void Optimizer::addLighting(Evaluation& e, const Layout& layout, const std::vect
     const double w = scene_->objective.lightingWeight;
     if (lighting_ && !scene_->samplers.empty() && w > 0) {
         e.lighting = lighting_->evaluate(layout, world, &e.samplers);
+        ++lightingEvaluations_;
         e.lightingEvaluated = true;
         e.costError = costError(e);
         const auto& measured = e.samplers.samplers;
@@ -193,6 +195,7 @@ void Optimizer::refreshCurrent() {
     // The penalty method tests a fresh estimate of the difference: both ends drawn anew.
     Evaluation& e = currentEval_;
     e.lighting = lighting_->evaluate(current_, worldTransforms(*scene_, current_), &e.samplers);
+    ++lightingEvaluations_;
     lighting_->commit();
     e.costError = costError(e);
     e.cost = scene_->objective.cost(e.lighting, e.geometry);
@@ -248,6 +251,7 @@ void Optimizer::initialize() {
     bestEval_ = currentEval_;
     feasible_ = !currentEval_.rejected;
     iteration_ = bestIteration_ = confirmations_ = independentMeasurements_ = 0;
+    lightingEvaluations_ = 0;
     innerLeft_ = 0, focus_ = -1;
     noiseVariance_ = currentEval_.costError * currentEval_.costError;
     candidates_.clear();
@@ -451,6 +455,25 @@ OptimizerResult Optimizer::run(const ProgressCallback& progress, const std::atom
         return confirmed.cost == 0;
     };
 
+    // Best-so-far snapshots at the checkpoints still ahead, and where the run stops.
+    std::vector<Snapshot> snapshots;
+    std::vector<int> checkpoints;
+    for (int k = options_.snapshots; k >= 1; --k) {
+        const double f = double(k) / options_.snapshots;
+        const int at = int(std::ceil(options_.iterations * f * f));
+        if (at > iteration_ && (checkpoints.empty() || at < checkpoints.back())) checkpoints.push_back(at);
+    }
+    auto snapshot = [&] {
+        if (options_.snapshots <= 0 || (!snapshots.empty() && snapshots.back().iteration == iteration_)) return;
+        snapshots.push_back({iteration_, seconds(), lightingEvaluations_, feasible_ ? bestEval_.cost : kInf, feasible_, best_});
+    };
+    auto atCheckpoint = [&] {
+        while (!checkpoints.empty() && checkpoints.back() <= iteration_) {
+            checkpoints.pop_back();
+            snapshot();
+        }
+    };
+
     StopReason stop = StopReason::Iterations;
     if (levels_.empty()) stop = StopReason::NothingToMove;
     else if (solved()) stop = StopReason::ZeroCost;
@@ -462,11 +485,14 @@ OptimizerResult Optimizer::run(const ProgressCallback& progress, const std::atom
             }
             step();
             if (iteration_ % options_.progressEvery == 0) report();
-            if (solved()) {
+            const bool zero = solved();  // a confirmation may replace the best estimate
+            atCheckpoint();
+            if (zero) {
                 stop = StopReason::ZeroCost;
                 break;
             }
         }
+    snapshot();
     if (trace_.empty() || trace_.back().iteration != iteration_) record();
     report();
 
@@ -487,6 +513,8 @@ OptimizerResult Optimizer::run(const ProgressCallback& progress, const std::atom
     r.startFeasible = !startEval_.rejected;
     r.levels = stats_;
     r.trace = trace_;
+    r.snapshots = std::move(snapshots);
+    r.lightingEvaluations = lightingEvaluations_;
     r.options = options_;
     return r;
 }

@@ -88,6 +88,10 @@ struct OptimizerOptions {
     // the best of those measurements is the result, measured once more for the report.
     int candidates = 4;
     CandidateSeparation candidateSeparation;
+    // Best-so-far snapshots (OptimizerResult::snapshots) at this many checkpoints,
+    // iteration ceil(iterations (k / n)^2) for k = 1..n (dense early, where the cost
+    // falls fastest), and where the run stops; 0: none.
+    int snapshots = 0;
     int progressEvery = 100;     // iterations between progress callbacks
     int traceEvery = 0;          // iterations between trace rows; 0: about 10^4 rows per run
 };
@@ -115,6 +119,18 @@ struct TracePoint {
     double current = 0;
     double best = 0;        // kInf while no feasible layout has been found
     bool feasible = false;  // the current layout passes the geometric test
+};
+
+// The best layout so far at a checkpoint of the run, with what it had cost to find:
+// convergence against wall time and lighting evaluations, re-measured independently
+// by scripts/experiments.py.
+struct Snapshot {
+    int iteration = 0;             // proposals made so far
+    double seconds = 0;            // wall time since run() started
+    int64_t lightingEvaluations = 0;
+    double searchCost = kInf;      // the best layout's cost as the search estimated it
+    bool feasible = false;         // some layout passed the geometric test (else `best` is the least violating)
+    Layout best;
 };
 
 enum class StopReason { Iterations, ZeroCost, Cancelled, NothingToMove };
@@ -157,6 +173,8 @@ struct OptimizerResult {
     bool startFeasible = false;  // the start did
     std::vector<LevelStats> levels;
     std::vector<TracePoint> trace;
+    std::vector<Snapshot> snapshots;  // OptimizerOptions::snapshots
+    int64_t lightingEvaluations = 0;  // by the chain (not the final measurements)
     OptimizerOptions options;
 };
 
@@ -234,6 +252,7 @@ private:
     bool feasible_ = false;
     int iteration_ = 0, bestIteration_ = 0, traceEvery_ = 1;
     int confirmations_ = 0, independentMeasurements_ = 0;
+    int64_t lightingEvaluations_ = 0;
     std::vector<TracePoint> trace_;
     Candidates candidates_;
     double noiseVariance_ = 0;  // moving mean of costError^2 over lighting evaluations
