@@ -335,12 +335,26 @@ def fig7_page(rows):
             ci([s["C"] for s in rs], 3), sum(1 for s in rs if s["C"] == 0), len(rs),
             statistics.mean(s["seconds"] for s in rs)))
     order = sorted(["morning", "afternoon", "evening"], key=lambda l: -means[l])
+    distances = {l: [s["distance"] for (ll, _, s) in rows if ll == l] for l in labels}
+    diff = bootstrap_difference(distances["morning"], distances["evening"])
+    holds = diff[1] > 0
     lines += ["", "**What it shows.** Mean distance from the windows: morning %.2f m, afternoon %.2f m, evening "
-              "%.2f m, and %.2f m with the light ignored (the control); ordered from farthest: %s. "
-              "The paper's claim is that desks keep away from the windows when the sun comes in and "
-              "use the whole room at night." % (means["morning"], means["afternoon"], means["evening"],
-                                                 means["morning, lighting weight 0"], ", ".join(order)), ""]
+              "%.2f m, and %.2f m with the light ignored (the control); ordered from farthest: %s. Morning minus "
+              "evening: %.2f m [%.2f, %.2f]. The paper's claim, that desks keep away from the windows when the "
+              "sun comes in and use the whole room at night, %s." % (
+                  means["morning"], means["afternoon"], means["evening"], means["morning, lighting weight 0"],
+                  ", ".join(order), diff[0], diff[1], diff[2],
+                  "holds here (the interval is above 0)" if holds else
+                  "is not borne out here at the scenes' own settings (the interval reaches 0 or below)"), ""]
     return lines
+
+
+def bootstrap_difference(a, b, resamples=2000, seed=54321):
+    """mean(a) - mean(b) with a 95% percentile bootstrap interval (independent samples)."""
+    rng = random.Random(seed)
+    boots = sorted(statistics.mean(rng.choice(a) for _ in a) - statistics.mean(rng.choice(b) for _ in b)
+                   for _ in range(resamples))
+    return statistics.mean(a) - statistics.mean(b), boots[int(0.025 * resamples)], boots[int(0.975 * resamples) - 1]
 
 
 # ---------------------------------------------------------------- fig8: lab
@@ -356,8 +370,8 @@ def fig8(r, out):
     for name in ("i1", "i2", "i3", "i4"):
         turned["entities"][name]["rotation"] = 90
     layouts = {"symmetric, desks facing the windows (0°)": paper("fig8-lab-symmetric-layout"),
-               "symmetric, desks along the windows (90°)": os.path.join(out, "fig8", "symmetric-90.json")}
-    write_json(layouts["symmetric, desks along the windows (90°)"], turned)
+               "symmetric, islands turned 90°": os.path.join(out, "fig8", "symmetric-90.json")}
+    write_json(layouts["symmetric, islands turned 90°"], turned)
 
     def one(job):
         label, layout, seed = job
@@ -536,10 +550,18 @@ def fig10_page(rows):
             statistics.mean(s["on_floor"] for s in rs), ci([s["occupancy"] for s in rs], 3),
             ci([s["gap"] for s in rs], 2), min(s["gap"] for s in rs), ci([s["C"] for s in rs], 3)))
     night = [s for (n, _, s) in rows if n == "fig10-event-hall-night"]
+    occupied = statistics.mean(s["occupancy"] for s in night)
+    gaps = [s["gap"] for (_, _, s) in rows]
+    below = sum(1 for g in gaps if g < 3.2 - 1e-3)
     lines += ["", "**What it shows.** By night %.1f%% of the dance floor is under a table on average, with no "
-              "blocker there: the spotlights' light (far above 350 lx) keeps the tables off it, as the paper "
-              "says. No gap is below the 3.2 m clearance by more than the rule's tolerance." % (
-                  100 * statistics.mean(s["occupancy"] for s in night)), ""]
+              "blocker there: %s. %s" % (
+                  100 * occupied,
+                  "the spotlights' light (far above 350 lx) keeps the tables off it, as the paper says" if occupied < 0.05
+                  else "the light alone does not keep the tables off it, against the paper's claim",
+                  "Every run keeps its table centres at least 3.2 m apart." if below == 0 else
+                  "%d of %d runs have two table centres closer than 3.2 m (the smallest %.2f m): the clearance is a "
+                  "soft minimum (Eq. 2's tolerance), which the search trades against the light." % (
+                      below, len(gaps), min(gaps))), ""]
     return lines
 
 
