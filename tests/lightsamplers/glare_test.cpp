@@ -175,6 +175,25 @@ TEST(DgpSampler, TheSunIsOneSourceNotTwo) {
     EXPECT_NEAR(r.value, 5.87e-5 * Ev + 0.159 + 0.092 * std::log10(1 + sum / std::pow(Ev, 1.87)), 4 * r.standardError + 2e-3);
 }
 
+// Adaptive measurement stops only the direction cells surely below the threshold:
+// E_v, the source slots and cells that may be bright keep their paths.
+TEST(DgpSampler, AdaptiveStopsOnlyTheCellsSurelyBelowTheThreshold) {
+    auto type = dgpSampler({0, 0, 0}, {1, 0, 0}, 2000, 2);
+    auto placed = type->place(Transform());
+    ASSERT_EQ(placed->items(), PlacedGlare::kFirstCell + 4);
+    ItemEstimates e(placed->items(), 1);
+    const double cell[4][2] = {{100, 110}, {5000, 5200}, {1900, 2050}, {0, 4000}};  // two paths each
+    for (int c = 0; c < 4; ++c)
+        for (int k = 0; k < 2; ++k) e.cell(PlacedGlare::kFirstCell + c, 0, k).add(cell[c][k]);
+    const std::vector<char> keep = placed->stillNeeded(e, 3);
+    EXPECT_TRUE(keep[0]);  // E_v
+    EXPECT_TRUE(keep[1]);  // a slot
+    EXPECT_FALSE(keep[size_t(PlacedGlare::kFirstCell)]);  // 105 +- 5: surely dark
+    EXPECT_TRUE(keep[size_t(PlacedGlare::kFirstCell + 1)]);  // bright
+    EXPECT_TRUE(keep[size_t(PlacedGlare::kFirstCell + 2)]);  // near the threshold
+    EXPECT_TRUE(keep[size_t(PlacedGlare::kFirstCell + 3)]);  // too noisy to tell
+}
+
 TEST(GlareSamplers, DeterministicForASeed) {
     using T = OneLuminaire;
     test::SceneLab lab(T::scene(dgpSampler({0, 0, 0}, {1, 0, 0})));
