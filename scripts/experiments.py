@@ -194,6 +194,61 @@ def best_at(points, key, limit):
     return c
 
 
+def convergence_svg(path, title, by_mode):
+    """Each run's best-so-far C (independent) against wall time, log-log: a line per run."""
+    w, h, left, right, top, bottom = 640, 360, 64, 16, 28, 44
+    points = [(p["seconds"], p["C"]) for runs in by_mode.values() for run in runs for p in run if p["C"] is not None]
+    if not points:
+        return False
+    floor = 1e-4  # C = 0 drawn on the floor line
+    t0, t1 = min(max(t, 1e-3) for t, _ in points), max(t for t, _ in points)
+    c0, c1 = floor, max(max(c for _, c in points), floor * 10)
+    t0, t1 = 10 ** math.floor(math.log10(t0)), 10 ** math.ceil(math.log10(max(t1, t0 * 10)))
+    c1 = 10 ** math.ceil(math.log10(c1))
+
+    def x(t):
+        return left + (w - left - right) * (math.log10(max(t, t0)) - math.log10(t0)) / (math.log10(t1) - math.log10(t0))
+
+    def y(c):
+        c = max(c, c0)
+        return top + (h - top - bottom) * (1 - (math.log10(c) - math.log10(c0)) / (math.log10(c1) - math.log10(c0)))
+
+    out = ['<svg xmlns="http://www.w3.org/2000/svg" width="%d" height="%d" font-family="sans-serif" font-size="11">' % (w, h),
+           '<rect width="100%" height="100%" fill="white"/>',
+           '<text x="%d" y="16" font-size="13">%s</text>' % (left, title)]
+    decade = t0
+    while decade <= t1 * 1.001:
+        out.append('<line x1="%.1f" y1="%d" x2="%.1f" y2="%d" stroke="#ddd"/>' % (x(decade), top, x(decade), h - bottom))
+        out.append('<text x="%.1f" y="%d" text-anchor="middle">%g s</text>' % (x(decade), h - bottom + 14, decade))
+        decade *= 10
+    decade = c0
+    while decade <= c1 * 1.001:
+        out.append('<line x1="%d" y1="%.1f" x2="%d" y2="%.1f" stroke="#ddd"/>' % (left, y(decade), w - right, y(decade)))
+        out.append('<text x="%d" y="%.1f" text-anchor="end">%s</text>' % (left - 4, y(decade) + 4,
+                                                                          "0" if decade == c0 else "%g" % decade))
+        decade *= 10
+    out.append('<text x="%d" y="%d" text-anchor="middle">wall time of the run (log)</text>' % ((left + w - right) // 2, h - 8))
+    out.append('<text x="12" y="%d" transform="rotate(-90 12 %d)" text-anchor="middle">best-so-far C, '
+               'independent (log; 0 at the bottom)</text>' % ((top + h - bottom) // 2, (top + h - bottom) // 2))
+    colours = {"hierarchical": "#1f77b4", "flat": "#ff7f0e"}
+    for m, runs in by_mode.items():
+        for run in runs:
+            line = ["%.1f,%.1f" % (x(p["seconds"]), y(p["C"])) for p in run if p["C"] is not None]
+            if len(line) == 1:
+                out.append('<circle cx="%s" cy="%s" r="2.5" fill="%s"/>' % (*line[0].split(","), colours[m]))
+            elif line:
+                out.append('<polyline points="%s" fill="none" stroke="%s" stroke-opacity="0.6"/>' % (" ".join(line), colours[m]))
+    for k, m in enumerate(by_mode):
+        out.append('<text x="%d" y="%d" fill="%s">%s (%d runs)</text>' % (w - right - 150, top + 14 + 14 * k, colours[m], m,
+                                                                         len(by_mode[m])))
+    out.append("</svg>")
+    tmp = path + ".tmp"
+    with open(tmp, "w") as f:
+        f.write("\n".join(out) + "\n")
+    os.replace(tmp, path)
+    return True
+
+
 def fig6_page(rows):
     lines = ["## Figure 6: the hierarchy against the flat baseline (%d seeds)" % FIG6_SEEDS, "",
              "Each scene at its own settings (iterations, paths), hierarchical and `--flat` (the groups "
@@ -250,6 +305,10 @@ def fig6_page(rows):
             (fh, nh, ch), (ff, nf, cf) = summary[(label, "hierarchical")], summary[(label, "flat")]
             if fh > ff or (fh == ff and ch is not None and cf is not None and ch <= cf):
                 ahead += 1
+        image = "fig6-chart-%s.svg" % name
+        if convergence_svg(os.path.join(ROOT, "docs", "images", image), "%s: each run's best so far" % title, by_mode):
+            lines += ["![%s: each run's best-so-far C against wall time](images/%s)" % (title, image),
+                      "", "(A line per run, from its first feasible checkpoint; a run that is never feasible has none.)", ""]
         ends = {m: [p[-1] for p in by_mode[m]] for m in by_mode}
         claims.append("%s: ahead at %d of %d budgets; by the end %d of %d hierarchical runs and %d of %d flat runs "
                       "have a feasible layout, %d and %d reach C = 0" % (
