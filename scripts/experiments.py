@@ -713,7 +713,9 @@ def commit():
     def git(*args):
         return subprocess.run(["git", "-C", ROOT] + list(args), capture_output=True, text=True).stdout.strip()
     head = git("rev-parse", "--short", "HEAD") or "unknown"
-    return head + (" (with uncommitted changes)" if git("status", "--porcelain", "--untracked-files=no") else "")
+    # Only what builds luxplan and runs it counts (this script rewrites docs/ itself).
+    changed = git("status", "--porcelain", "--untracked-files=no", "--", "src", "apps", "scripts", "scenes", "CMakeLists.txt")
+    return head + (" (with uncommitted changes)" if changed else "")
 
 
 HEADER = """# Experiments: the paper's section 7 with statistics
