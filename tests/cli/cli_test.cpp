@@ -233,7 +233,9 @@ TEST(Cli, OptimizeSnapshotsTheBestLayoutSoFar) {
     const auto& list = snapshots["snapshots"];
     ASSERT_GE(list.size(), 1u);
     ASSERT_LE(list.size(), 3u);
-    if (list.size() == 3u) EXPECT_EQ(list[0]["iteration"], 17);  // ceil(150 / 9)
+    if (list.size() == 3u) {
+        EXPECT_EQ(list[0]["iteration"], 17);  // ceil(150 / 9)
+    }
     EXPECT_EQ(list.back()["iteration"], snapshots["iterations"]);
     for (size_t k = 1; k < list.size(); ++k) {
         EXPECT_GT(list[k]["iteration"].get<int>(), list[k - 1]["iteration"].get<int>());
