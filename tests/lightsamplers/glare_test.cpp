@@ -86,7 +86,7 @@ TEST(UgrSampler, OneLuminaireAgainstTheFormula) {
     EXPECT_NEAR(r.value, expected, 4 * r.standardError + 0.05) << "standard error " << r.standardError;
     EXPECT_GT(r.standardError, 0);
     EXPECT_LT(r.standardError, 0.2);
-    auto survey = glareSurvey(*lab.scene.samplers[0].type, Transform(), r.points);
+    const auto& survey = r.glare;
     ASSERT_TRUE(survey.has_value());
     ASSERT_EQ(survey->sources.size(), 1u);
     EXPECT_NEAR(survey->sources[0].luminance, T::kLuminance, 1e-3 * T::kLuminance);
@@ -127,7 +127,7 @@ TEST(DgpSampler, ABrightSkyIsOneRegionAgainstTheFormula) {
     constexpr double kSky = 3000;
     test::SceneLab lab(test::SceneBuilder().uniformSky(kSky).sampler("eye", dgpSampler({0, 0, 0}, {1, 0, 0}, 2000, 16), 0, 1).build());
     SamplerResult r = lab.measure(200).samplers[0];
-    auto survey = glareSurvey(*lab.scene.samplers[0].type, Transform(), r.points);
+    const auto& survey = r.glare;
     ASSERT_TRUE(survey.has_value());
     ASSERT_EQ(survey->sources.size(), 1u);
     const GlareSource& g = survey->sources[0];
@@ -144,7 +144,7 @@ TEST(DgpSampler, ABrightSkyIsOneRegionAgainstTheFormula) {
     EXPECT_NEAR(r.value, expected, 4 * r.standardError + 1e-3);
     // Below the sky's luminance the threshold leaves no source.
     test::SceneLab dim(test::SceneBuilder().uniformSky(kSky).sampler("eye", dgpSampler({0, 0, 0}, {1, 0, 0}, 4000, 16), 0, 1).build());
-    EXPECT_TRUE(glareSurvey(*dim.scene.samplers[0].type, Transform(), dim.measure(50).samplers[0].points)->sources.empty());
+    EXPECT_TRUE(dim.measure(50).samplers[0].glare->sources.empty());
 }
 
 // The sun 20 degrees up straight ahead, 2000 lx at normal incidence, in a uniform sky
@@ -161,7 +161,7 @@ TEST(DgpSampler, TheSunIsOneSourceNotTwo) {
     const Vec3 south(0, -1, 0);
     test::SceneLab lab(test::SceneBuilder().daylight(d).sampler("eye", dgpSampler({0, 0, 0}, south, 2000), 0, 1).build());
     SamplerResult r = lab.measure(400).samplers[0];
-    auto survey = glareSurvey(*lab.scene.samplers[0].type, Transform(), r.points);
+    const auto& survey = r.glare;
     ASSERT_TRUE(survey.has_value());
     ASSERT_EQ(survey->sources.size(), 1u);
     const GlareSource& sun = survey->sources[0];

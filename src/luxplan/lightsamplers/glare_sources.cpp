@@ -98,7 +98,6 @@ void PlacedGlare::sampleSlot(const PathTracer& tracer, int item, PathSamples& sa
     Vec3 w;
     double pdf = 0, Le = 0, T = 0;
     if (slot < int(emitters.size())) {
-        if (q == 6) return;  // only a sun's slot counts its solid angle twice
         if (stats.footprint) stats.footprint->usedEmitterChoice = true;  // where the luminaires are
         const WorldEmitter& e = emitters[size_t(slot)];
         auto p = e.shape->sample(eye_, samples.get2D(PathSamples::EmitterPoint));
@@ -128,12 +127,11 @@ void PlacedGlare::sampleSlot(const PathTracer& tracer, int item, PathSamples& sa
         case 0: out.add(omega); break;
         case 1: out.add(omega * Le); break;
         case 2: out.add(omega * Le * dot(w, forward_)); break;
-        case 6: out.add(omega); break;  // a sun's slot
         default: out.add(omega * (q == 3 ? w.x : q == 4 ? w.y : w.z)); break;
     }
 }
 
-GlareSurvey PlacedGlare::survey(const std::vector<double>& m) const {
+GlareSurvey PlacedGlare::survey(const std::vector<double>& m, int luminaires) const {
     GlareSurvey s;
     s.verticalIlluminance = m.empty() ? 0 : m[0];
     double direct = 0;
@@ -149,7 +147,7 @@ GlareSurvey PlacedGlare::survey(const std::vector<double>& m) const {
         g.direction = length(c) > 0 ? normalize(c) : forward_;
         g.positionIndex = guthIndexOf(forward_, g.direction);
         g.index = slot;
-        g.kind = m[b + 6] > 0 ? GlareSource::Kind::Sun : GlareSource::Kind::Luminaire;
+        g.kind = slot < luminaires ? GlareSource::Kind::Luminaire : GlareSource::Kind::Sun;
         if (metric_ == Metric::Dgp && g.luminance <= threshold_) continue;
         direct += m[b + 2];
         s.sources.push_back(g);
@@ -220,10 +218,10 @@ Estimate PlacedGlare::combine(const ItemEstimates& e) const {
         return m;
     };
     Estimate r;
-    r.value = survey(meansOf(-1)).value;
+    r.value = survey(meansOf(-1), kSlots).value;
     std::vector<double> folds;
     for (int g = 0; g < ItemEstimates::kFolds; ++g)
-        if (e.pathsInFold(0, g) > 0) folds.push_back(survey(meansOf(g)).value);
+        if (e.pathsInFold(0, g) > 0) folds.push_back(survey(meansOf(g), kSlots).value);
     if (folds.size() >= 2) {
         double mean = 0, var = 0;
         for (double v : folds) mean += v / double(folds.size());
@@ -241,17 +239,6 @@ SamplerDrawing PlacedGlare::drawing() const {
     d.dotRadius = 4;
     d.labelAt = eye_;
     return d;
-}
-
-}  // namespace luxplan
-
-namespace luxplan {
-
-std::optional<GlareSurvey> glareSurvey(const SamplerType& type, const Transform& world, const std::vector<double>& means) {
-    auto placed = type.place(world);
-    const auto* glare = dynamic_cast<const PlacedGlare*>(placed.get());
-    if (!glare || means.size() != size_t(glare->items())) return std::nullopt;
-    return glare->survey(means);
 }
 
 }  // namespace luxplan

@@ -54,14 +54,13 @@ Frame eyeFrame(const Vec3& forward);
 
 // The placed "ugr" or "dgp" sampler. Items: 0 the vertical illuminance at the eye,
 // then per source slot (emitters first, then sun disks, up to kSlots) its visible
-// solid angle, L omega, direct vertical illuminance, omega-weighted direction and,
-// for a sun disk, its solid angle again (which tells suns from luminaires);
+// solid angle, L omega, direct vertical illuminance and omega-weighted direction;
 // then, for DGP, each cell of its direction grid: the mean luminance through the cell
 // but for the luminaires and sun disks (surveyed by their slots). Cells brighter than
 // the threshold, joined to their eight neighbours, are the region sources.
 class PlacedGlare final : public PlacedSampler {
 public:
-    static constexpr int kSlots = 32, kQuantities = 7, kFirstCell = 1 + kSlots * kQuantities;
+    static constexpr int kSlots = 32, kQuantities = 6, kFirstCell = 1 + kSlots * kQuantities;
     enum class Metric { Ugr, Dgp };
     PlacedGlare(Metric metric, Vec3 eye, Vec3 forward, double thresholdNits,
                 std::shared_ptr<const DirectionGrid> grid = nullptr)
@@ -76,8 +75,10 @@ public:
     // upper bound is): they are no source and E_v is item 0's.
     std::vector<char> stillNeeded(const ItemEstimates& items, double z) const override;
     SamplerDrawing drawing() const override;
-    // The survey from item means (points of a SamplerResult, in item order).
-    GlareSurvey survey(const std::vector<double>& itemMeans) const;
+    // The survey from item means (points of a SamplerResult, in item order); the first
+    // `luminaires` slots are the scene's emitters, the rest sun disks (which only
+    // labels the sources: the value does not depend on it).
+    GlareSurvey survey(const std::vector<double>& itemMeans, int luminaires) const;
 
 private:
     void sampleSlot(const PathTracer& tracer, int item, PathSamples& samples, RayStats& stats, PathContributions& out) const;
@@ -97,8 +98,5 @@ std::shared_ptr<const SamplerType> ugrSampler(Vec3 origin, Vec3 direction);
 // `directionCells`: the direction grid's cells per side (the file's "direction_cells").
 std::shared_ptr<const SamplerType> dgpSampler(Vec3 origin, Vec3 direction, double sourceThresholdNits = 2000,
                                               int directionCells = 24);
-// The survey behind a measured glare sampler's value (null type: not a glare sampler).
-std::optional<GlareSurvey> glareSurvey(const SamplerType& type, const Transform& worldFromFrame,
-                                       const std::vector<double>& itemMeans);
 
 }  // namespace luxplan

@@ -264,7 +264,7 @@ MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& op
         Estimate value = placed[k]->combine(e);
         r.value = value.value;
         r.standardError = value.standardError;
-        if (const auto* glare = dynamic_cast<const PlacedGlare*>(placed[k].get())) r.glare = glare->survey(r.points);
+        if (const auto* glare = dynamic_cast<const PlacedGlare*>(placed[k].get())) r.glare = glare->survey(r.points, int(tracer.emitters().size()));
     }
     return result;
 }
