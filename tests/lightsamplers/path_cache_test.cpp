@@ -79,7 +79,7 @@ int entityNamed(const Scene& s, const std::string& name) {
 }
 
 // A random move of one of the movable entities (the desk carries the task plane and
-// the lamp), or of the lamp on the desk.
+// the lamp), or of the lamp on the desk; rotations by right angles or any angle.
 void randomMove(const Scene& scene, Layout& layout, Rng& rng) {
     static const char* names[] = {"desk", "chair", "cabinet", "lamp"};
     const int e = entityNamed(scene, names[int(rng.uniform() * 4) % 4]);
@@ -90,7 +90,7 @@ void randomMove(const Scene& scene, Layout& layout, Rng& rng) {
         return;
     }
     p.position.x += 0.6 * (rng.uniform() - 0.5), p.position.y += 0.6 * (rng.uniform() - 0.5);
-    if (rng.uniform() < 0.3) p.rotationDeg = 90.0 * int(rng.uniform() * 4);
+    if (rng.uniform() < 0.3) p.rotationDeg = rng.uniform() < 0.5 ? 90.0 * int(rng.uniform() * 4) : 360 * rng.uniform();
 }
 
 void runSequence(bool adaptive, int paths, int moves, uint64_t moveSeed) {
@@ -198,6 +198,27 @@ TEST(PathCache, AMemoryBoundOnlyCostsTime) {
     EXPECT_GT(again.reusedPaths, 0u);
     EXPECT_LT(again.reusedPaths, again.paths);
     expectSame(again, first, "bounded");
+    // The bound holds through moves, accepted and refused, and more paths per point.
+    Rng rng(5);
+    Layout layout = initialLayout(lab.scene);
+    for (int m = 0; m < 6; ++m) {
+        Layout proposed = layout;
+        randomMove(lab.scene, proposed, rng);
+        lab.rt->setLayout(proposed);
+        lab.tracer->updateLayout();
+        o.pathsPerPoint = 16 + 4 * m;
+        MeasureResult moved = measureSamplers(*lab.tracer, o, &cache);
+        expectSame(moved, lab.measure(o.pathsPerPoint, o.seed), "bounded, move " + std::to_string(m));
+        if (m % 2 == 0) {
+            cache.commit();
+            layout = proposed;
+        } else {
+            cache.discard();
+            lab.rt->setLayout(layout);
+            lab.tracer->updateLayout();
+        }
+        EXPECT_LE(cache.segments(), 2000u);
+    }
 }
 
 TEST(PathFootprint, SegmentsMeetBoxesAsTheSlabsSay) {
@@ -221,6 +242,28 @@ TEST(PathFootprint, SegmentsMeetBoxesAsTheSlabsSay) {
     EXPECT_FALSE(meets(f.segments[1], box, 0));
     f.add({-5, 0.5, 0.5}, {2, 0, 0}, 0, 2.6);
     EXPECT_TRUE(meets(f.segments[2], box, 0));
+}
+
+TEST(PathFootprint, PlacedBoxesAreOrientedWithTheirObject) {
+    // A 2 x 0.1 x 1 m plank turned 45 degrees about z at (5, 5, 0): its world box is
+    // about 1.48 m square, but a segment across that box's corner misses the plank.
+    const std::vector<Bounds3> plank{Bounds3({-1, -0.05, 0}, {1, 0.05, 1})};
+    const PlacedBoxes boxes(Transform::placement({5, 5, 0}, 45), plank, 1e-3, 0);
+    auto seg = [](Vec3 a, Vec3 b) { return Segment{{float(a.x), float(a.y), float(a.z)}, {float(b.x), float(b.y), float(b.z)}}; };
+    auto meets = [&](const Segment& s) { return boxes.meets(s, SegmentProbe(s)); };
+    EXPECT_NEAR(boxes.worldBounds().hi.x - boxes.worldBounds().lo.x, 2 * (std::sqrt(0.5) + 0.05 * std::sqrt(0.5)) + 2e-3, 1e-6);
+    const Segment corner = seg({5.7, 4.3, 0.5}, {5.3, 4.3, 0.5});  // inside the world box, far from the plank
+    EXPECT_TRUE(SegmentProbe(corner).meets(boxes.worldBounds()));
+    EXPECT_FALSE(meets(corner));
+    EXPECT_TRUE(meets(seg({4, 6, 0.5}, {6, 4, 0.5})));             // across the plank's middle
+    EXPECT_TRUE(meets(seg({5.7, 5.7, 0.5}, {5.7, 5.7, 1.5})));     // down onto its end, near the axis
+    EXPECT_FALSE(meets(seg({5, 5, 1.01}, {6, 6, 1.01})));          // along its top, above the margin
+    EXPECT_TRUE(meets(seg({5, 5, 1.0005}, {6, 6, 1.0005})));       // ... within it
+    // The margin is in world units, whatever the transform's scale.
+    Transform scaled = Transform::placement({5, 5, 0}, 45) * Transform::scale(10.0);
+    const std::vector<Bounds3> small{Bounds3({-0.1, -0.005, 0}, {0.1, 0.005, 0.1})};
+    const PlacedBoxes big(scaled, small, 1e-3, 0);
+    EXPECT_TRUE(big.meets(seg({5, 5, 1.0009}, {6, 6, 1.0009}), SegmentProbe(seg({5, 5, 1.0009}, {6, 6, 1.0009}))));
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include <luxplan/core/parallel.h>
 #include <luxplan/emitters/emitter_shape.h>
 
 namespace luxplan {
@@ -9,22 +10,10 @@ namespace {
 
 bool same(const Transform& a, const Transform& b) { return a.m == b.m && a.t.x == b.t.x && a.t.y == b.t.y && a.t.z == b.t.z; }
 
-Bounds3 worldBounds(const Transform& world, const Bounds3& local) {
-    Bounds3 b;
-    for (int corner = 0; corner < 8; ++corner)
-        b.extend(world.applyPoint({corner & 1 ? local.hi.x : local.lo.x, corner & 2 ? local.hi.y : local.lo.y,
-                                   corner & 4 ? local.hi.z : local.lo.z}));
-    return b;
-}
 
 // Embree traces in float and pane crossings step 0.1 mm off the line: a margin well
 // above both, growing with the coordinates.
-Bounds3 widened(const Bounds3& b) {
-    const double scale = std::max({std::abs(b.lo.x), std::abs(b.lo.y), std::abs(b.lo.z), std::abs(b.hi.x), std::abs(b.hi.y),
-                                   std::abs(b.hi.z)});
-    const double margin = 1e-3 + 1e-6 * scale;
-    return {b.lo - Vec3(margin, margin, margin), b.hi + Vec3(margin, margin, margin)};
-}
+constexpr double kMargin = 1e-3, kRelativeMargin = 1e-6;
 
 // Boxes around clusters of triangles: median splits of the centroids along the widest
 // axis, down to a dozen triangles (a box part's six faces become thin slabs).
@@ -71,13 +60,6 @@ PathCache::PathCache(const Scene& scene, size_t maxSegments) : scene_(scene), ma
     }
 }
 
-bool PathCache::MovedBounds::meets(const SegmentProbe& s) const {
-    if (!s.meets(whole)) return false;
-    for (const Bounds3& c : clusters)
-        if (s.meets(c)) return true;
-    return false;
-}
-
 void PathCache::begin(const EmbreeScene& rt, const std::vector<int>& workSampler, uint64_t streams) {
     const size_t entities = scene_.entities.size();
     newWorld_.resize(entities);
@@ -98,13 +80,9 @@ void PathCache::begin(const EmbreeScene& rt, const std::vector<int>& workSampler
             if (same(world_[i], newWorld_[i])) continue;
             entityMoved[i] = 1;
             for (const Transform* world : {&world_[i], &newWorld_[i]}) {
-                MovedBounds b;
-                for (const Bounds3& c : localClusters_[i]) {
-                    b.clusters.push_back(widened(worldBounds(*world, c)));
-                    b.whole.extend(b.clusters.back());
-                }
-                if (b.clusters.empty()) continue;
-                movedUnion_.extend(b.whole);
+                if (localClusters_[i].empty()) continue;
+                PlacedBoxes b(*world, localClusters_[i], kMargin, kRelativeMargin);
+                movedUnion_.extend(b.worldBounds());
                 moved_.push_back(std::move(b));
             }
             if (!scene_.entities[i].emitters.empty()) emittersMoved_ = true;
@@ -133,8 +111,8 @@ bool PathCache::stillHolds(size_t work, const Record& r) const {
             continue;
         const SegmentProbe probe(s);
         if (!probe.meets(movedUnion_)) continue;
-        for (const MovedBounds& b : moved_)
-            if (b.meets(probe)) return false;
+        for (const PlacedBoxes& b : moved_)
+            if (b.meets(s, probe)) return false;
     }
     return true;
 }
@@ -158,23 +136,53 @@ void PathCache::keep(size_t work, int path, Record&& record) {
 
 void PathCache::commit() {
     if (!measuring_) return;
-    for (size_t w = 0; w < records_.size(); ++w) {
+    // Segments added and removed per work item: the committed count is kept up to date
+    // without walking every record.
+    std::vector<int64_t> change(records_.size(), 0);
+    parallelFor(records_.size(), [&](size_t w) {
         Pending& p = pending_[w];
         auto& records = records_[w];
-        // Paths this measurement did not ask for were not checked against the move.
-        records.resize(size_t(p.visited));
-        for (auto& [path, record] : p.traced) records[size_t(path)] = std::move(record);
-    }
-    committedSegments_ = 0;
-    for (const auto& records : records_)
-        for (const auto& r : records)
-            if (r) committedSegments_ += r->footprint.segments.size();
+        auto drop = [&](std::optional<Record>& r) {
+            if (r) change[w] -= int64_t(r->footprint.segments.size()), r.reset();
+        };
+        // Paths this measurement did not ask for hold for the new layout if the move
+        // missed them. Only as many as it asked for are checked (the next measurement
+        // seldom needs more than twice as many), so that a commit costs no more than
+        // the measurement's own checks; the rest are dropped.
+        const size_t visited = size_t(p.visited), checked = std::min(records.size(), 2 * visited);
+        for (size_t path = visited; path < checked; ++path)
+            if (records[path] && !stillHolds(w, *records[path])) drop(records[path]);
+        for (size_t path = checked; path < records.size(); ++path) drop(records[path]);
+        records.resize(std::max(checked, visited));
+        for (auto& [path, record] : p.traced) {
+            drop(records[size_t(path)]);
+            if (record) change[w] += int64_t(record->footprint.segments.size());
+            records[size_t(path)] = std::move(record);
+        }
+    });
+    for (int64_t c : change) committedSegments_ = size_t(int64_t(committedSegments_) + c);
     world_ = newWorld_;
     hasCommitted_ = true;
     discard();
 }
 
 void PathCache::discard() {
+    if (measuring_ && hasCommitted_) {
+        // A path traced for the refused layout, where the committed one has none, holds
+        // for the committed layout too if the move missed it (the test is symmetric in
+        // the old and the new bounds): kept, so the next measurement need not trace it.
+        for (size_t w = 0; w < records_.size(); ++w) {
+            auto& records = records_[w];
+            for (auto& [path, record] : pending_[w].traced) {
+                if (!record || (size_t(path) < records.size() && records[size_t(path)]) || !stillHolds(w, *record)) continue;
+                const size_t n = record->footprint.segments.size();
+                if (committedSegments_ + n > maxSegments_) continue;
+                if (records.size() <= size_t(path)) records.resize(size_t(path) + 1);
+                records[size_t(path)] = std::move(record);
+                committedSegments_ += n;
+            }
+        }
+    }
     measuring_ = false;
     for (Pending& p : pending_) p = Pending();
     pendingSegments_ = 0;

@@ -5,8 +5,9 @@
 //   - its sampler is carried by an entity whose world transform changed,
 //   - one of its segments meets the old or the new bounds of a moved entity's
 //     geometry or luminaires (a ray that missed both traces the same; the bounds are
-//     those of up to 32 clusters of its triangles, so that a ray under a desk top or
-//     between a chair's legs is not traced again), or
+//     the boxes of up to 32 clusters of its triangles in the entity's own frame, so
+//     that a ray under a desk top, between a chair's legs or past the corner of a
+//     rotated desk is not traced again), or
 //   - it read the emitter choice and a luminaire moved (the choice weighs every
 //     luminaire by flux / distance^2, so every light sample's probability changes).
 // Every other path reads as it did, so measuring with the cache gives the same numbers,
@@ -48,10 +49,12 @@ public:
     const Record* reuse(size_t work, int path);
     // A path traced for the new layout (after reuse() said null).
     void keep(size_t work, int path, Record&& record);
-    // The measured layout becomes the committed one, with the paths it traced (nothing
-    // happens when no measurement is pending).
+    // The measured layout becomes the committed one, with the paths it traced and the
+    // committed paths it did not ask for that the move missed (nothing happens when no
+    // measurement is pending).
     void commit();
-    // Back to the committed layout's paths.
+    // Back to the committed layout's paths, with the paths the measurement traced
+    // beyond them that the move missed.
     void discard();
 
     // Paths the last measurement reused.
@@ -62,13 +65,6 @@ private:
     struct Pending {
         int visited = 0;  // paths [0, visited) were asked for
         std::vector<std::pair<int, std::optional<Record>>> traced;  // none: over the memory bound
-    };
-    // A moved entity's bounds in the world, before and after the move: the whole, then
-    // its clusters (tested only for segments that meet the whole).
-    struct MovedBounds {
-        Bounds3 whole;
-        std::vector<Bounds3> clusters;
-        bool meets(const SegmentProbe& s) const;
     };
     bool stillHolds(size_t work, const Record& r) const;
 
@@ -86,7 +82,7 @@ private:
     // The measurement in progress.
     bool measuring_ = false;
     std::vector<Transform> newWorld_;
-    std::vector<MovedBounds> moved_;  // old and new, of every moved entity with geometry
+    std::vector<PlacedBoxes> moved_;  // old and new, of every moved entity with geometry
     Bounds3 movedUnion_;
     std::vector<char> workMoved_;    // per work item: its sampler moved
     bool emittersMoved_ = false;

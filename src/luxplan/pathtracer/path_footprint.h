@@ -33,11 +33,30 @@ struct PathFootprint {
 class SegmentProbe {
 public:
     explicit SegmentProbe(const Segment& s);
+    SegmentProbe(const Vec3& from, const Vec3& to);
     bool meets(const Bounds3& b) const;
 
 private:
     double from_[3], inv_[3];
     bool flat_[3];  // no extent along the axis
+};
+
+// Boxes given in an object's own frame and placed in the world by its transform:
+// oriented boxes, so that a segment past the corner of a rotated desk does not meet
+// it. Each is widened by margin + relativeMargin * (the largest world coordinate of
+// the whole) in world units.
+class PlacedBoxes {
+public:
+    PlacedBoxes(const Transform& worldFromLocal, const std::vector<Bounds3>& local, double margin, double relativeMargin);
+    // The world box around them all (widened too).
+    const Bounds3& worldBounds() const { return world_; }
+    // `probe` is SegmentProbe(s), for the quick test against worldBounds() first.
+    bool meets(const Segment& s, const SegmentProbe& probe) const;
+
+private:
+    Bounds3 world_;
+    Transform localFromWorld_;
+    std::vector<Bounds3> local_;  // widened
 };
 
 }  // namespace luxplan
