@@ -160,6 +160,7 @@ MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& op
             for (int g = 0; g < (folds ? kFolds : 1); ++g)
                 sequences.emplace_back(hashValues({options.seed, kSequenceTag, uint64_t(w.sampler), uint64_t(w.item),
                                                    folds ? uint64_t(g) : uint64_t(kFolds)}));
+        PathFootprint scratch;  // a path's footprint as it is traced
         for (int path = from; path < to; ++path) {
             const PathCache::Record* cached = cache ? cache->reuse(index, path) : nullptr;
             PathContributions c(w.item);
@@ -171,12 +172,18 @@ MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& op
                                           ? PathSamples(rng, sequences[folds ? size_t(path % kFolds) : 0],
                                                         uint32_t(folds ? path / kFolds : path))
                                           : PathSamples(rng);
-                PathCache::Record record;
-                if (cache) r.stats.footprint = &record.footprint;
+                if (cache) {
+                    scratch.clear();
+                    r.stats.footprint = &scratch;
+                }
                 sampler.sample(tracer, w.item, samples, r.stats, c);
                 r.stats.footprint = nullptr;
                 if (cache) {
+                    // One allocation of the right size, not one per doubling.
+                    PathCache::Record record;
                     record.contributions = c;
+                    record.footprint.segments.assign(scratch.segments.begin(), scratch.segments.end());
+                    record.footprint.usedEmitterChoice = scratch.usedEmitterChoice;
                     cache->keep(index, path, std::move(record));
                 }
             }
