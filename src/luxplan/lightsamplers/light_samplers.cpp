@@ -220,33 +220,28 @@ MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& op
     };
 
     // Rounds of options.batchPaths paths per point (one round of all when not
-    // adaptive); a sampler leaves once its value is settled, and an item once its
-    // sampler no longer needs it.
+    // adaptive); a sampler stops once its value is settled, and an item once its
+    // sampler no longer needs it. A sampler's stop reads only its own items, so each
+    // runs its own rounds, all at once: none waits for the others' rounds.
     std::vector<int> traced(work.size(), 0);
-    std::vector<char> active(samplers, 1), needed(work.size(), 1);
-    for (int from = 0; from < paths;) {
-        const int to = options.adaptive ? std::min(paths, from + std::max(1, options.batchPaths)) : paths;
-        std::vector<size_t> round;
-        for (size_t k = 0; k < samplers; ++k)
-            if (active[k])
-                for (size_t index = firstWork[k]; index < firstWork[k + 1]; ++index)
-                    if (needed[index]) round.push_back(index);
-        if (round.empty()) break;
-        parallelFor(round.size(), [&](size_t i) { trace(round[i], from, to); });
-        for (size_t index : round) traced[index] = to;
-        if (!options.adaptive || to == paths) break;
-        for (size_t k = 0; k < samplers; ++k) {
-            if (!active[k] || firstWork[k + 1] == firstWork[k]) continue;
+    std::vector<char> needed(work.size(), 1);
+    parallelFor(samplers, [&](size_t k) {
+        for (int from = 0; from < paths;) {
+            const int to = options.adaptive ? std::min(paths, from + std::max(1, options.batchPaths)) : paths;
+            std::vector<size_t> round;
+            for (size_t index = firstWork[k]; index < firstWork[k + 1]; ++index)
+                if (needed[index]) round.push_back(index);
+            if (round.empty()) break;
+            parallelFor(round.size(), [&](size_t i) { trace(round[i], from, to); });
+            for (size_t index : round) traced[index] = to;
+            if (!options.adaptive || to == paths) break;
             const ItemEstimates e = estimates(k);
-            if (settled(scene.samplers[k], placed[k]->combine(e), e, options.confidenceZ)) {
-                active[k] = 0;
-                continue;
-            }
+            if (settled(scene.samplers[k], placed[k]->combine(e), e, options.confidenceZ)) break;
             const std::vector<char> keep = placed[k]->stillNeeded(e, options.confidenceZ);
             for (size_t i = 0; i < keep.size(); ++i) needed[firstWork[k] + i] = needed[firstWork[k] + i] && keep[i];
+            from = to;
         }
-        from = to;
-    }
+    });
 
     // Reduce per sampler, in a fixed order.
     MeasureResult result;
