@@ -183,6 +183,7 @@ MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& op
                     PathCache::Record record;
                     record.contributions = c;
                     record.footprint.segments.assign(scratch.segments.begin(), scratch.segments.end());
+                    record.footprint.tests.assign(scratch.tests.begin(), scratch.tests.end());
                     record.footprint.usedEmitterChoice = scratch.usedEmitterChoice;
                     cache->keep(index, path, std::move(record));
                 }

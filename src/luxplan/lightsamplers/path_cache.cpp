@@ -61,6 +61,7 @@ PathCache::PathCache(const Scene& scene, size_t maxSegments) : scene_(scene), ma
 }
 
 void PathCache::begin(const EmbreeScene& rt, const std::vector<int>& workSampler, uint64_t streams) {
+    rt_ = &rt;
     const size_t entities = scene_.entities.size();
     newWorld_.resize(entities);
     for (size_t i = 0; i < entities; ++i) newWorld_[i] = rt.worldFromEntity(int(i));
@@ -95,15 +96,21 @@ void PathCache::begin(const EmbreeScene& rt, const std::vector<int>& workSampler
     pending_.assign(workSampler.size(), {});
     pendingSegments_ = 0;
     reusedNow_ = 0;
+    askedAgainNow_ = 0;
     measuring_ = true;
 }
 
-bool PathCache::stillHolds(size_t work, const Record& r) const {
-    if (workMoved_[work]) return false;
-    if (emittersMoved_ && r.footprint.usedEmitterChoice) return false;
-    if (moved_.empty()) return true;
+PathCache::Verdict PathCache::check(size_t work, const Record& r, bool requery) const {
+    if (workMoved_[work]) return Verdict::Changed;
+    if (emittersMoved_ && r.footprint.usedEmitterChoice) return Verdict::Changed;
+    if (moved_.empty()) return Verdict::Missed;
     const Bounds3& u = movedUnion_;
-    for (const Segment& s : r.footprint.segments) {
+    const std::vector<OcclusionTest>& tests = r.footprint.tests;
+    size_t test = 0;  // the first test whose segment is at or after the current one
+    thread_local std::vector<const OcclusionTest*> again;
+    again.clear();
+    for (size_t index = 0; index < r.footprint.segments.size(); ++index) {
+        const Segment& s = r.footprint.segments[index];
         // The segment's own box first: comparisons only.
         if (std::max(s.from[0], s.to[0]) < u.lo.x || std::min(s.from[0], s.to[0]) > u.hi.x ||
             std::max(s.from[1], s.to[1]) < u.lo.y || std::min(s.from[1], s.to[1]) > u.hi.y ||
@@ -111,10 +118,23 @@ bool PathCache::stillHolds(size_t work, const Record& r) const {
             continue;
         const SegmentProbe probe(s);
         if (!probe.meets(movedUnion_)) continue;
+        bool meets = false;
         for (const PlacedBoxes& b : moved_)
-            if (b.meets(s, probe)) return false;
+            if (b.meets(s, probe)) {
+                meets = true;
+                break;
+            }
+        if (!meets) continue;
+        while (test < tests.size() && tests[test].segment < index) ++test;
+        if (!requery || test == tests.size() || tests[test].segment != index) return Verdict::Changed;
+        again.push_back(&tests[test]);
     }
-    return true;
+    for (const OcclusionTest* t : again) {
+        const Ray ray{Vec3(t->origin[0], t->origin[1], t->origin[2]), Vec3(t->direction[0], t->direction[1], t->direction[2]),
+                      double(t->tNear), double(t->tFar), t->mask};
+        if (rt_->occluded(ray) != t->blocked) return Verdict::Changed;
+    }
+    return again.empty() ? Verdict::Missed : Verdict::SameAnswers;
 }
 
 const PathCache::Record* PathCache::reuse(size_t work, int path) {
@@ -123,7 +143,9 @@ const PathCache::Record* PathCache::reuse(size_t work, int path) {
     const auto& records = records_[work];
     if (size_t(path) >= records.size() || !records[size_t(path)]) return nullptr;
     const Record& r = *records[size_t(path)];
-    if (!stillHolds(work, r)) return nullptr;
+    const Verdict v = check(work, r, true);
+    if (v == Verdict::Changed) return nullptr;
+    if (v == Verdict::SameAnswers) ++askedAgainNow_;
     ++reusedNow_;
     return &r;
 }
@@ -146,12 +168,14 @@ void PathCache::commit() {
             if (r) change[w] -= int64_t(r->footprint.segments.size()), r.reset();
         };
         // Paths this measurement did not ask for hold for the new layout if the move
-        // missed them. Only as many as it asked for are checked (the next measurement
-        // seldom needs more than twice as many), so that a commit costs no more than
+        // missed them (their shadow queries are not asked again: the scene may have been
+        // set to another layout since, for a measurement outside the cache). Only as
+        // many as it asked for are checked (the next measurement seldom needs more than
+        // twice as many), so that a commit costs no more than
         // the measurement's own checks; the rest are dropped.
         const size_t visited = size_t(p.visited), checked = std::min(records.size(), 2 * visited);
         for (size_t path = visited; path < checked; ++path)
-            if (records[path] && !stillHolds(w, *records[path])) drop(records[path]);
+            if (records[path] && check(w, *records[path], false) == Verdict::Changed) drop(records[path]);
         for (size_t path = checked; path < records.size(); ++path) drop(records[path]);
         records.resize(std::max(checked, visited));
         for (auto& [path, record] : p.traced) {
@@ -174,7 +198,7 @@ void PathCache::discard() {
         for (size_t w = 0; w < records_.size(); ++w) {
             auto& records = records_[w];
             for (auto& [path, record] : pending_[w].traced) {
-                if (!record || (size_t(path) < records.size() && records[size_t(path)]) || !stillHolds(w, *record)) continue;
+                if (!record || (size_t(path) < records.size() && records[size_t(path)]) || check(w, *record, false) == Verdict::Changed) continue;
                 const size_t n = record->footprint.segments.size();
                 if (committedSegments_ + n > maxSegments_) continue;
                 if (records.size() <= size_t(path)) records.resize(size_t(path) + 1);

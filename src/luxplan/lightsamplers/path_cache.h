@@ -8,6 +8,9 @@
 //     the boxes of up to 32 clusters of its triangles in the entity's own frame, so
 //     that a ray under a desk top, between a chair's legs or past the corner of a
 //     rotated desk is not traced again), or
+//     unless every such segment is a shadow query's and the query, asked again of the
+//     new layout, answers as it did (a desk's shadow ray that the moved chair does not
+//     block leaves the path as it was), or
 //   - it read the emitter choice and a luminaire moved (the choice weighs every
 //     luminaire by flux / distance^2, so every light sample's probability changes).
 // Every other path reads as it did, so measuring with the cache gives the same numbers,
@@ -29,7 +32,8 @@ namespace luxplan {
 
 class PathCache {
 public:
-    // `maxSegments` bounds the memory (24 bytes a segment): paths beyond it are traced
+    // `maxSegments` bounds the memory (24 bytes a segment, and 44 more for a shadow
+    // query's, which keeps its rays and answer): paths beyond it are traced
     // every time, which changes nothing but the time.
     explicit PathCache(const Scene& scene, size_t maxSegments = size_t(1) << 24);
 
@@ -59,6 +63,8 @@ public:
 
     // Paths the last measurement reused.
     uint64_t reused() const { return reusedNow_; }
+    // ... of which met the move only along shadow queries that answered as before.
+    uint64_t askedAgain() const { return askedAgainNow_; }
     size_t segments() const { return committedSegments_; }
 
 private:
@@ -66,7 +72,12 @@ private:
         int visited = 0;  // paths [0, visited) were asked for
         std::vector<std::pair<int, std::optional<Record>>> traced;  // none: over the memory bound
     };
-    bool stillHolds(size_t work, const Record& r) const;
+    // Whether a record holds for the layout being measured: changed, missed by the move,
+    // or met by it only along shadow queries that answer as they did. `requery`: those
+    // may be asked again of the scene (false when the record is to hold for the
+    // committed layout, which the scene no longer is).
+    enum class Verdict { Changed, Missed, SameAnswers };
+    Verdict check(size_t work, const Record& r, bool requery) const;
 
     const Scene& scene_;
     size_t maxSegments_;
@@ -81,6 +92,7 @@ private:
 
     // The measurement in progress.
     bool measuring_ = false;
+    const EmbreeScene* rt_ = nullptr;  // the layout being measured
     std::vector<Transform> newWorld_;
     std::vector<PlacedBoxes> moved_;  // old and new, of every moved entity with geometry
     Bounds3 movedUnion_;
@@ -89,6 +101,7 @@ private:
     std::vector<Pending> pending_;
     std::atomic<size_t> pendingSegments_{0};
     std::atomic<uint64_t> reusedNow_{0};
+    std::atomic<uint64_t> askedAgainNow_{0};
 };
 
 }  // namespace luxplan

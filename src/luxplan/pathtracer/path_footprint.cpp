@@ -1,6 +1,8 @@
 #include <luxplan/pathtracer/path_footprint.h>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 namespace luxplan {
 namespace {
@@ -18,6 +20,18 @@ void PathFootprint::add(const Vec3& p, const Vec3& d, double tMin, double tEnd) 
     if (!(len > 0)) return;
     const double end = std::min(tEnd, kFar / len);
     segments.push_back({toFloat(p + d * tMin), toFloat(p + d * end)});
+}
+
+void PathFootprint::addOcclusion(const Vec3& p, const Vec3& d, double tMin, double tEnd, unsigned mask, bool blocked) {
+    const size_t before = segments.size();
+    add(p, d, tMin, tEnd);
+    if (segments.size() == before) return;
+    OcclusionTest t;
+    t.origin = toFloat(p), t.direction = toFloat(d);
+    t.tNear = float(tMin);
+    t.tFar = std::isinf(tEnd) ? std::numeric_limits<float>::infinity() : float(tEnd);
+    t.mask = mask, t.segment = uint32_t(before), t.blocked = blocked;
+    tests.push_back(t);
 }
 
 SegmentProbe::SegmentProbe(const Segment& s) : SegmentProbe(Vec3(s.from[0], s.from[1], s.from[2]), Vec3(s.to[0], s.to[1], s.to[2])) {}

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <vector>
 
 #include <luxplan/core/math.h>
@@ -15,17 +16,34 @@ struct Segment {
     std::array<float, 3> from, to;
 };
 
+// An any-hit (shadow) query as Embree received it (in float), and its answer. A move
+// that changes the scene along the query's segment changes nothing downstream unless
+// it changes the answer, so the path cache asks the query again instead of tracing the
+// whole path.
+struct OcclusionTest {
+    std::array<float, 3> origin, direction;
+    float tNear = 0, tFar = 0;
+    unsigned mask = 0;
+    uint32_t segment = 0;  // its segment's index in PathFootprint::segments
+    bool blocked = false;
+};
+
 struct PathFootprint {
     std::vector<Segment> segments;
-    bool usedEmitterChoice = false;  // sampled an emitter, or weighed a hit on one by MIS
+    std::vector<OcclusionTest> tests;  // in the order of their segments
+    bool usedEmitterChoice = false;    // sampled an emitter, or weighed a hit on one by MIS
 
     void clear() {
         segments.clear();
+        tests.clear();
         usedEmitterChoice = false;
     }
     // Appends p + t d for t in [tMin, tEnd] (tEnd may be infinite: the segment then runs
     // far past any room).
     void add(const Vec3& p, const Vec3& d, double tMin, double tEnd);
+    // The segment of an any-hit query for p + t d, t in [tMin, tEnd], mask `mask`, that
+    // answered `blocked`: its rays are what the query's floats are.
+    void addOcclusion(const Vec3& p, const Vec3& d, double tMin, double tEnd, unsigned mask, bool blocked);
 };
 
 // Whether a segment passes through boxes (widen a box for a margin), tested box after

@@ -46,8 +46,9 @@ double PathTracer::transmittance(const Vec3& origin, const Vec3& w, double tMax,
     unsigned blockers = kOpaqueMask | (target < 0 ? kEmitterMask : 0u);
     double opaqueEnd = target < 0 ? tMax : tMax * (1 - 1e-4);
     // The emitter steps below run along this segment; the pane crossings add their own.
-    if (stats.footprint) stats.footprint->add(origin, w, 0, opaqueEnd);
-    if (rt_.occluded({origin, w, 0, opaqueEnd, blockers})) return 0;
+    const bool blocked = rt_.occluded({origin, w, 0, opaqueEnd, blockers});
+    if (stats.footprint) stats.footprint->addOcclusion(origin, w, 0, opaqueEnd, blockers, blocked);
+    if (blocked) return 0;
     if (target >= 0 && emitters_.size() > 1) {
         double tStart = 0;
         for (int steps = 0; steps < 4; ++steps) {
