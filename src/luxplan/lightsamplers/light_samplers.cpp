@@ -162,10 +162,10 @@ MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& op
                                                    folds ? uint64_t(g) : uint64_t(kFolds)}));
         PathFootprint scratch;  // a path's footprint as it is traced
         for (int path = from; path < to; ++path) {
-            const PathCache::Record* cached = cache ? cache->reuse(index, path) : nullptr;
+            const PathContributions* cached = cache ? cache->reuse(index, path) : nullptr;
             PathContributions c(w.item);
             if (cached) {
-                c = cached->contributions;
+                c = *cached;
             } else {
                 Rng rng(hashValues({options.seed, uint64_t(w.sampler), uint64_t(w.item), uint64_t(path)}));
                 PathSamples samples = options.lowDiscrepancy
@@ -178,15 +178,7 @@ MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& op
                 }
                 sampler.sample(tracer, w.item, samples, r.stats, c);
                 r.stats.footprint = nullptr;
-                if (cache) {
-                    // One allocation of the right size, not one per doubling.
-                    PathCache::Record record;
-                    record.contributions = c;
-                    record.footprint.segments.assign(scratch.segments.begin(), scratch.segments.end());
-                    record.footprint.tests.assign(scratch.tests.begin(), scratch.tests.end());
-                    record.footprint.usedEmitterChoice = scratch.usedEmitterChoice;
-                    cache->keep(index, path, std::move(record));
-                }
+                if (cache) cache->keep(index, path, c, scratch);
             }
             if (!c.finite()) {  // the path is dropped whole (core/estimator.h's policy)
                 ++r.dropped;

@@ -65,8 +65,8 @@ void PathCache::begin(const EmbreeScene& rt, const std::vector<int>& workSampler
     const size_t entities = scene_.entities.size();
     newWorld_.resize(entities);
     for (size_t i = 0; i < entities; ++i) newWorld_[i] = rt.worldFromEntity(int(i));
-    if (!hasCommitted_ || streams != streams_ || records_.size() != workSampler.size()) {
-        records_.assign(workSampler.size(), {});
+    if (!hasCommitted_ || streams != streams_ || committed_.size() != workSampler.size()) {
+        committed_.assign(workSampler.size(), {});
         committedSegments_ = 0;
         hasCommitted_ = false;
         streams_ = streams;
@@ -93,24 +93,26 @@ void PathCache::begin(const EmbreeScene& rt, const std::vector<int>& workSampler
         const int entity = scene_.samplers[size_t(workSampler[w])].entity;
         workMoved_[w] = entity >= 0 && entityMoved[size_t(entity)];
     }
-    pending_.assign(workSampler.size(), {});
+    pending_.resize(workSampler.size());
+    for (Pending& p : pending_) p.clear();
     pendingSegments_ = 0;
     reusedNow_ = 0;
     askedAgainNow_ = 0;
     measuring_ = true;
 }
 
-PathCache::Verdict PathCache::check(size_t work, const Record& r, bool requery) const {
+PathCache::Verdict PathCache::check(size_t work, const Record& r, const Paths& in, bool requery) const {
     if (workMoved_[work]) return Verdict::Changed;
-    if (emittersMoved_ && r.footprint.usedEmitterChoice) return Verdict::Changed;
+    if (emittersMoved_ && r.usedEmitterChoice) return Verdict::Changed;
     if (moved_.empty()) return Verdict::Missed;
     const Bounds3& u = movedUnion_;
-    const std::vector<OcclusionTest>& tests = r.footprint.tests;
-    size_t test = 0;  // the first test whose segment is at or after the current one
+    const Segment* segments = in.segments.data() + r.firstSegment;
+    const OcclusionTest* tests = in.tests.data() + r.firstTest;
+    uint32_t test = 0;  // the first test whose segment is at or after the current one
     thread_local std::vector<const OcclusionTest*> again;
     again.clear();
-    for (size_t index = 0; index < r.footprint.segments.size(); ++index) {
-        const Segment& s = r.footprint.segments[index];
+    for (uint32_t index = 0; index < r.segmentCount; ++index) {
+        const Segment& s = segments[index];
         // The segment's own box first: comparisons only.
         if (std::max(s.from[0], s.to[0]) < u.lo.x || std::min(s.from[0], s.to[0]) > u.hi.x ||
             std::max(s.from[1], s.to[1]) < u.lo.y || std::min(s.from[1], s.to[1]) > u.hi.y ||
@@ -125,8 +127,8 @@ PathCache::Verdict PathCache::check(size_t work, const Record& r, bool requery) 
                 break;
             }
         if (!meets) continue;
-        while (test < tests.size() && tests[test].segment < index) ++test;
-        if (!requery || test == tests.size() || tests[test].segment != index) return Verdict::Changed;
+        while (test < r.testCount && tests[test].segment < index) ++test;
+        if (!requery || test == r.testCount || tests[test].segment != index) return Verdict::Changed;
         again.push_back(&tests[test]);
     }
     for (const OcclusionTest* t : again) {
@@ -137,54 +139,86 @@ PathCache::Verdict PathCache::check(size_t work, const Record& r, bool requery) 
     return again.empty() ? Verdict::Missed : Verdict::SameAnswers;
 }
 
-const PathCache::Record* PathCache::reuse(size_t work, int path) {
+PathCache::Record PathCache::Paths::append(const Record& r, const Paths& from) {
+    Record out = r;
+    out.firstSegment = uint32_t(segments.size());
+    out.firstTest = uint32_t(tests.size());
+    segments.insert(segments.end(), from.segments.begin() + r.firstSegment, from.segments.begin() + r.firstSegment + r.segmentCount);
+    tests.insert(tests.end(), from.tests.begin() + r.firstTest, from.tests.begin() + r.firstTest + r.testCount);
+    return out;
+}
+
+const PathContributions* PathCache::reuse(size_t work, int path) {
     Pending& p = pending_[work];
     p.visited = std::max(p.visited, path + 1);
-    const auto& records = records_[work];
-    if (size_t(path) >= records.size() || !records[size_t(path)]) return nullptr;
-    const Record& r = *records[size_t(path)];
-    const Verdict v = check(work, r, true);
+    const Paths& committed = committed_[work];
+    if (size_t(path) >= committed.records.size() || !committed.records[size_t(path)].kept) return nullptr;
+    const Record& r = committed.records[size_t(path)];
+    const Verdict v = check(work, r, committed, true);
     if (v == Verdict::Changed) return nullptr;
     if (v == Verdict::SameAnswers) ++askedAgainNow_;
     ++reusedNow_;
-    return &r;
+    return &r.contributions;
 }
 
-void PathCache::keep(size_t work, int path, Record&& record) {
-    const size_t n = record.footprint.segments.size();
+void PathCache::keep(size_t work, int path, const PathContributions& contributions, const PathFootprint& footprint) {
+    const size_t n = footprint.segments.size();
     const bool fits = committedSegments_ + pendingSegments_.fetch_add(n) + n <= maxSegments_;
-    pending_[work].traced.emplace_back(path, fits ? std::optional<Record>(std::move(record)) : std::nullopt);
+    Pending& p = pending_[work];
+    Record r;
+    r.contributions = contributions;
+    if (fits) {
+        r.kept = true;
+        r.usedEmitterChoice = footprint.usedEmitterChoice;
+        r.firstSegment = uint32_t(p.traced.segments.size()), r.segmentCount = uint32_t(n);
+        r.firstTest = uint32_t(p.traced.tests.size()), r.testCount = uint32_t(footprint.tests.size());
+        p.traced.segments.insert(p.traced.segments.end(), footprint.segments.begin(), footprint.segments.end());
+        p.traced.tests.insert(p.traced.tests.end(), footprint.tests.begin(), footprint.tests.end());
+    }
+    p.tracedPaths.push_back(path);
+    p.traced.records.push_back(r);
 }
 
 void PathCache::commit() {
     if (!measuring_) return;
-    // Segments added and removed per work item: the committed count is kept up to date
-    // without walking every record.
-    std::vector<int64_t> change(records_.size(), 0);
-    parallelFor(records_.size(), [&](size_t w) {
-        Pending& p = pending_[w];
-        auto& records = records_[w];
-        auto drop = [&](std::optional<Record>& r) {
-            if (r) change[w] -= int64_t(r->footprint.segments.size()), r.reset();
-        };
+    parallelFor(committed_.size(), [&](size_t w) {
+        const Pending& p = pending_[w];
+        Paths& committed = committed_[w];
         // Paths this measurement did not ask for hold for the new layout if the move
         // missed them (their shadow queries are not asked again: the scene may have been
         // set to another layout since, for a measurement outside the cache). Only as
         // many as it asked for are checked (the next measurement seldom needs more than
-        // twice as many), so that a commit costs no more than
-        // the measurement's own checks; the rest are dropped.
-        const size_t visited = size_t(p.visited), checked = std::min(records.size(), 2 * visited);
-        for (size_t path = visited; path < checked; ++path)
-            if (records[path] && check(w, *records[path], false) == Verdict::Changed) drop(records[path]);
-        for (size_t path = checked; path < records.size(); ++path) drop(records[path]);
-        records.resize(std::max(checked, visited));
-        for (auto& [path, record] : p.traced) {
-            drop(records[size_t(path)]);
-            if (record) change[w] += int64_t(record->footprint.segments.size());
-            records[size_t(path)] = std::move(record);
+        // twice as many), so that a commit costs no more than the measurement's own
+        // checks; the rest are dropped.
+        const size_t visited = size_t(p.visited), checked = std::min(committed.records.size(), 2 * visited);
+        std::vector<char> dropped(checked > visited ? checked - visited : 0, 0);
+        bool changes = !p.tracedPaths.empty() || committed.records.size() > checked;
+        for (size_t path = visited; path < checked; ++path) {
+            const Record& r = committed.records[path];
+            if (r.kept && check(w, r, committed, false) == Verdict::Changed) dropped[path - visited] = 1, changes = true;
         }
+        if (!changes) return;
+        // The work item's arrays are written anew, in path order.
+        const size_t size = std::max(checked, visited);
+        std::vector<int> tracedAt(size, -1);
+        for (size_t i = 0; i < p.tracedPaths.size(); ++i) tracedAt[size_t(p.tracedPaths[i])] = int(i);
+        Paths next;
+        next.records.resize(size);
+        next.segments.reserve(committed.segments.size() + p.traced.segments.size());
+        next.tests.reserve(committed.tests.size() + p.traced.tests.size());
+        for (size_t path = 0; path < size; ++path) {
+            if (tracedAt[path] >= 0) {
+                const Record& t = p.traced.records[size_t(tracedAt[path])];
+                if (t.kept) next.records[path] = next.append(t, p.traced);
+            } else if (path < committed.records.size() && committed.records[path].kept &&
+                       (path < visited || !dropped[path - visited])) {
+                next.records[path] = next.append(committed.records[path], committed);
+            }
+        }
+        committed = std::move(next);
     });
-    for (int64_t c : change) committedSegments_ = size_t(int64_t(committedSegments_) + c);
+    committedSegments_ = 0;
+    for (const Paths& c : committed_) committedSegments_ += c.segments.size();
     world_ = newWorld_;
     hasCommitted_ = true;
     discard();
@@ -195,20 +229,24 @@ void PathCache::discard() {
         // A path traced for the refused layout, where the committed one has none, holds
         // for the committed layout too if the move missed it (the test is symmetric in
         // the old and the new bounds): kept, so the next measurement need not trace it.
-        for (size_t w = 0; w < records_.size(); ++w) {
-            auto& records = records_[w];
-            for (auto& [path, record] : pending_[w].traced) {
-                if (!record || (size_t(path) < records.size() && records[size_t(path)]) || check(w, *record, false) == Verdict::Changed) continue;
-                const size_t n = record->footprint.segments.size();
-                if (committedSegments_ + n > maxSegments_) continue;
-                if (records.size() <= size_t(path)) records.resize(size_t(path) + 1);
-                records[size_t(path)] = std::move(record);
-                committedSegments_ += n;
+        for (size_t w = 0; w < committed_.size(); ++w) {
+            Paths& committed = committed_[w];
+            const Pending& p = pending_[w];
+            for (size_t i = 0; i < p.tracedPaths.size(); ++i) {
+                const size_t path = size_t(p.tracedPaths[i]);
+                const Record& t = p.traced.records[i];
+                if (!t.kept || (path < committed.records.size() && committed.records[path].kept) ||
+                    check(w, t, p.traced, false) == Verdict::Changed)
+                    continue;
+                if (committedSegments_ + t.segmentCount > maxSegments_) continue;
+                if (committed.records.size() <= path) committed.records.resize(path + 1);
+                committed.records[path] = committed.append(t, p.traced);
+                committedSegments_ += t.segmentCount;
             }
         }
     }
     measuring_ = false;
-    for (Pending& p : pending_) p = Pending();
+    for (Pending& p : pending_) p.clear();
     pendingSegments_ = 0;
 }
 

@@ -21,7 +21,6 @@
 
 #include <atomic>
 #include <cstdint>
-#include <optional>
 #include <vector>
 
 #include <luxplan/lightsamplers/sampler_type.h>
@@ -37,22 +36,18 @@ public:
     // every time, which changes nothing but the time.
     explicit PathCache(const Scene& scene, size_t maxSegments = size_t(1) << 24);
 
-    struct Record {
-        PathContributions contributions{0};
-        PathFootprint footprint;
-    };
-
     // Before a measurement of `rt`'s current layout with `workItems` work items (one per
     // sampler item) whose samplers are `workSampler`: what moved since the committed
     // layout. `streams` keys what a path's numbers are (the seed and the sampling
     // options): a different key clears the cache.
     void begin(const EmbreeScene& rt, const std::vector<int>& workSampler, uint64_t streams);
-    // The committed record of path `path` of work item `work` if it still holds for
-    // the new layout, else null. Call for paths 0, 1, ... in order per work item (from
-    // one thread per work item).
-    const Record* reuse(size_t work, int path);
-    // A path traced for the new layout (after reuse() said null).
-    void keep(size_t work, int path, Record&& record);
+    // What the committed path `path` of work item `work` contributed, if that still
+    // holds for the new layout, else null. Call for paths 0, 1, ... in order per work
+    // item (from one thread per work item).
+    const PathContributions* reuse(size_t work, int path);
+    // A path traced for the new layout (after reuse() said null): what it contributed
+    // and where its rays went (copied).
+    void keep(size_t work, int path, const PathContributions& contributions, const PathFootprint& footprint);
     // The measured layout becomes the committed one, with the paths it traced and the
     // committed paths it did not ask for that the move missed (nothing happens when no
     // measurement is pending).
@@ -68,16 +63,38 @@ public:
     size_t segments() const { return committedSegments_; }
 
 private:
+    // A path's footprint lives in its work item's arrays (one allocation per work
+    // item, not two per path, and read in order: the checks of a measurement walk
+    // every kept segment, so they wait on memory unless it is contiguous).
+    struct Record {
+        PathContributions contributions{0};
+        uint32_t firstSegment = 0, segmentCount = 0, firstTest = 0, testCount = 0;
+        bool usedEmitterChoice = false;
+        bool kept = false;  // false: no record (never traced, or over the memory bound)
+    };
+    struct Paths {
+        std::vector<Record> records;  // by path index (committed), or in the order traced (pending)
+        std::vector<Segment> segments;
+        std::vector<OcclusionTest> tests;  // OcclusionTest::segment counts from its record's first
+        // `r` (a record of `from`) with its footprint copied to the end of these arrays.
+        Record append(const Record& r, const Paths& from);
+    };
     struct Pending {
         int visited = 0;  // paths [0, visited) were asked for
-        std::vector<std::pair<int, std::optional<Record>>> traced;  // none: over the memory bound
+        std::vector<int> tracedPaths;  // path index of each of traced.records
+        Paths traced;
+        void clear() {  // keeping the arrays' memory for the next measurement
+            visited = 0;
+            tracedPaths.clear();
+            traced.records.clear(), traced.segments.clear(), traced.tests.clear();
+        }
     };
     // Whether a record holds for the layout being measured: changed, missed by the move,
     // or met by it only along shadow queries that answer as they did. `requery`: those
     // may be asked again of the scene (false when the record is to hold for the
     // committed layout, which the scene no longer is).
     enum class Verdict { Changed, Missed, SameAnswers };
-    Verdict check(size_t work, const Record& r, bool requery) const;
+    Verdict check(size_t work, const Record& r, const Paths& in, bool requery) const;
 
     const Scene& scene_;
     size_t maxSegments_;
@@ -87,7 +104,7 @@ private:
     bool hasCommitted_ = false;
     uint64_t streams_ = 0;
     std::vector<Transform> world_;
-    std::vector<std::vector<std::optional<Record>>> records_;  // per work item, by path
+    std::vector<Paths> committed_;  // per work item
     size_t committedSegments_ = 0;
 
     // The measurement in progress.
