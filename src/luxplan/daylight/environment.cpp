@@ -29,11 +29,19 @@ SkyMap::SkyMap(int width, int height) : width_(width), height_(height) {
         cosEdges_[size_t(i)] = c;
         cosEdges_[size_t(height - i)] = -c;
     }
+    const int steps = 4 * height;
+    rowGuess_.resize(size_t(steps) + 1);
+    for (int b = 0; b <= steps; ++b) {
+        const double z = -1 + 2.0 * b / steps;
+        int iy = 0;
+        while (iy < height - 1 && z <= cosEdges_[size_t(iy) + 1]) ++iy;
+        rowGuess_[size_t(b)] = iy;
+    }
 }
 
 void SkyMap::pixelOf(const Vec3& w, int& ix, int& iy) const {
     const double z = std::clamp(w.z, -1.0, 1.0);
-    iy = std::clamp(int(std::acos(z) / kPi * height_), 0, height_ - 1);
+    iy = rowGuess_[size_t(std::clamp(int((z + 1) * (2 * height_)), 0, 4 * height_))];
     while (iy > 0 && z > cosEdges_[size_t(iy)]) --iy;
     while (iy < height_ - 1 && z <= cosEdges_[size_t(iy) + 1]) ++iy;
     double phi = std::atan2(w.y, w.x);
@@ -115,6 +123,16 @@ void DaylightEnvironment::indexSunDisks() {
     // Each disk goes into every cell its cone (widened a little for the rim
     // tolerance and rounding) may reach.
     const double reach = kSunHalfAngle * 1.01 + 1e-6;
+    Vec3 sum;
+    for (const SunDisk& s : suns_) sum += s.direction;
+    sunConeCos_ = -2;  // every direction
+    if (length(sum) > 1e-9) {
+        sunConeAxis_ = normalize(sum);
+        double widest = 0;
+        for (const SunDisk& s : suns_) widest = std::max(widest, std::acos(std::clamp(dot(s.direction, sunConeAxis_), -1.0, 1.0)));
+        // Wider by the disk, its rim tolerance and rounding.
+        if (widest + 2 * reach < kPi / 2) sunConeCos_ = std::cos(widest + 2 * reach);
+    }
     std::vector<std::vector<uint32_t>> cells(size_t(kThetaCells) * kPhiCells);
     for (size_t k = 0; k < suns_.size(); ++k) {
         const Vec3& d = suns_[k].direction;
@@ -146,7 +164,7 @@ void DaylightEnvironment::indexSunDisks() {
 
 template <class F>
 void DaylightEnvironment::forEachSunDiskAt(const Vec3& w, F&& f) const {
-    if (sunCellStart_.empty()) return;
+    if (sunCellStart_.empty() || dot(w, sunConeAxis_) < sunConeCos_) return;
     const double theta = std::acos(std::clamp(w.z, -1.0, 1.0)), phi = std::atan2(w.y, w.x);
     const size_t c = size_t(thetaCell(theta)) * kPhiCells + size_t(phiCell(phi));
     for (uint32_t i = sunCellStart_[c]; i < sunCellStart_[c + 1]; ++i) {

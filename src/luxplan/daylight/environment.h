@@ -55,6 +55,9 @@ private:
     int width_ = 0, height_ = 0;
     std::vector<Vec3> pixels_;
     std::vector<double> cosEdges_;  // H + 1 values, cos(pi iy / H)
+    // A first guess of a direction's row from its cos(theta), in 4 H equal steps of z
+    // (pixelOf then steps to the exact row): no acos per lookup.
+    std::vector<int> rowGuess_;
 };
 
 // One sun disk of the time average: the sun at one time step, seen as a uniform disk of
@@ -137,6 +140,10 @@ private:
     // that may reach into it (compressed rows: disks of cell c are
     // sunCellDisks_[sunCellStart_[c] .. sunCellStart_[c + 1])).
     std::vector<uint32_t> sunCellStart_, sunCellDisks_;
+    // A cone around every disk (a morning's suns span a few tens of degrees): a
+    // direction outside it sees no sun, found with one dot product.
+    Vec3 sunConeAxis_;
+    double sunConeCos_ = 1;
     void indexSunDisks();
     template <class F> void forEachSunDiskAt(const Vec3& w, F&& f) const;
     double skyIntegral_ = 0, sunIntegral_ = 0, skyHorizontal_ = 0, sunHorizontal_ = 0;
