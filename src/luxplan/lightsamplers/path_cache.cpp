@@ -184,41 +184,39 @@ void PathCache::commit() {
     parallelFor(committed_.size(), [&](size_t w) {
         const Pending& p = pending_[w];
         Paths& committed = committed_[w];
+        auto drop = [&](Record& r) {
+            if (r.kept) committed.garbage += r.segmentCount, r = Record();
+        };
         // Paths this measurement did not ask for hold for the new layout if the move
         // missed them (their shadow queries are not asked again: the scene may have been
         // set to another layout since, for a measurement outside the cache). Only as
         // many as it asked for are checked (the next measurement seldom needs more than
         // twice as many), so that a commit costs no more than the measurement's own
         // checks; the rest are dropped.
-        const size_t visited = size_t(p.visited), checked = std::min(committed.records.size(), 2 * visited);
-        std::vector<char> dropped(checked > visited ? checked - visited : 0, 0);
-        bool changes = !p.tracedPaths.empty() || committed.records.size() > checked;
-        for (size_t path = visited; path < checked; ++path) {
-            const Record& r = committed.records[path];
-            if (r.kept && check(w, r, committed, false) == Verdict::Changed) dropped[path - visited] = 1, changes = true;
+        auto& records = committed.records;
+        const size_t visited = size_t(p.visited), checked = std::min(records.size(), 2 * visited);
+        for (size_t path = visited; path < records.size(); ++path)
+            if (records[path].kept && (path >= checked || check(w, records[path], committed, false) == Verdict::Changed))
+                drop(records[path]);
+        records.resize(std::max(checked, visited));
+        // The paths traced go to the end of the arrays; what they replace stays there
+        // as garbage until it outweighs the rest.
+        for (size_t i = 0; i < p.tracedPaths.size(); ++i) {
+            Record& r = records[size_t(p.tracedPaths[i])];
+            drop(r);
+            if (p.traced.records[i].kept) r = committed.append(p.traced.records[i], p.traced);
         }
-        if (!changes) return;
-        // The work item's arrays are written anew, in path order.
-        const size_t size = std::max(checked, visited);
-        std::vector<int> tracedAt(size, -1);
-        for (size_t i = 0; i < p.tracedPaths.size(); ++i) tracedAt[size_t(p.tracedPaths[i])] = int(i);
-        Paths next;
-        next.records.resize(size);
-        next.segments.reserve(committed.segments.size() + p.traced.segments.size());
-        next.tests.reserve(committed.tests.size() + p.traced.tests.size());
-        for (size_t path = 0; path < size; ++path) {
-            if (tracedAt[path] >= 0) {
-                const Record& t = p.traced.records[size_t(tracedAt[path])];
-                if (t.kept) next.records[path] = next.append(t, p.traced);
-            } else if (path < committed.records.size() && committed.records[path].kept &&
-                       (path < visited || !dropped[path - visited])) {
-                next.records[path] = next.append(committed.records[path], committed);
-            }
+        if (2 * committed.garbage > committed.segments.size()) {
+            Paths packed;
+            packed.records.resize(records.size());
+            packed.segments.reserve(committed.segments.size() - committed.garbage);
+            for (size_t path = 0; path < records.size(); ++path)
+                if (records[path].kept) packed.records[path] = packed.append(records[path], committed);
+            committed = std::move(packed);
         }
-        committed = std::move(next);
     });
     committedSegments_ = 0;
-    for (const Paths& c : committed_) committedSegments_ += c.segments.size();
+    for (const Paths& c : committed_) committedSegments_ += c.segments.size() - c.garbage;
     world_ = newWorld_;
     hasCommitted_ = true;
     discard();

@@ -32,8 +32,9 @@ namespace luxplan {
 class PathCache {
 public:
     // `maxSegments` bounds the memory (24 bytes a segment, and 44 more for a shadow
-    // query's, which keeps its rays and answer): paths beyond it are traced
-    // every time, which changes nothing but the time.
+    // query's, which keeps its rays and answer; the arrays may hold as many again of
+    // replaced paths before they are packed): paths beyond it are traced every time,
+    // which changes nothing but the time.
     explicit PathCache(const Scene& scene, size_t maxSegments = size_t(1) << 24);
 
     // Before a measurement of `rt`'s current layout with `workItems` work items (one per
@@ -76,6 +77,7 @@ private:
         std::vector<Record> records;  // by path index (committed), or in the order traced (pending)
         std::vector<Segment> segments;
         std::vector<OcclusionTest> tests;  // OcclusionTest::segment counts from its record's first
+        size_t garbage = 0;  // segments no record refers to any more
         // `r` (a record of `from`) with its footprint copied to the end of these arrays.
         Record append(const Record& r, const Paths& from);
     };
@@ -86,7 +88,7 @@ private:
         void clear() {  // keeping the arrays' memory for the next measurement
             visited = 0;
             tracedPaths.clear();
-            traced.records.clear(), traced.segments.clear(), traced.tests.clear();
+            traced.records.clear(), traced.segments.clear(), traced.tests.clear(), traced.garbage = 0;
         }
     };
     // Whether a record holds for the layout being measured: changed, missed by the move,
