@@ -279,6 +279,21 @@ TEST(SkyMap, PixelLookupAgreesWithPixelDirections) {
     EXPECT_EQ(iy, 0);
     map.pixelOf({0, 0, -1}, ix, iy);
     EXPECT_EQ(iy, 15);
+    // Random directions, and directions on and next to every row edge: the row is the
+    // one whose edges enclose cos(theta), (cosEdge(iy + 1), cosEdge(iy)].
+    Rng rng(5);
+    std::vector<double> zs;
+    for (int k = 0; k < 20000; ++k) zs.push_back(2 * rng.uniform() - 1);
+    for (int e = 0; e <= 16; ++e)
+        for (double z : {map.cosEdge(e), std::nextafter(map.cosEdge(e), 2.0), std::nextafter(map.cosEdge(e), -2.0)})
+            zs.push_back(std::clamp(z, -1.0, 1.0));
+    for (double z : zs) {
+        int row = 0;
+        while (row < 15 && z <= map.cosEdge(row + 1)) ++row;
+        const double r = std::sqrt(std::max(0.0, 1 - z * z));
+        map.pixelOf({r, 0, z}, ix, iy);
+        ASSERT_EQ(iy, row) << z;
+    }
     double total = 0;
     for (int r = 0; r < 16; ++r) total += map.pixelSolidAngle(r) * 32;
     EXPECT_NEAR(total, 4 * kPi, 1e-12);
@@ -342,6 +357,50 @@ TEST(SunDiskIndex, FindsWhatAScanOfEveryDiskFinds) {
         ASSERT_NEAR(env.sunPdf(w), pdf, 1e-9 * pdf);
     }
     EXPECT_GT(hits, 600 * 20);
+}
+
+// A period's disks crowd into a few tens of degrees: a cone around them all answers
+// most directions with one dot product. It must miss no disk: near every rim, and at
+// random over the sphere.
+TEST(SunDiskIndex, TheConeAroundAPeriodsDisksMissesNone) {
+    DaylightParams p;
+    p.model = SkyModelType::Uniform;
+    p.luminanceNits = 0;
+    p.sun = false;
+    DaylightEnvironment sky = buildDaylight(p, Site{}, {16, 8, 1});
+    std::vector<SunDisk> disks;
+    for (int k = 0; k < 13; ++k) {  // a morning: 15 to 55 degrees high, east to south-east
+        SunDisk s;
+        s.altitudeDeg = 15 + 40.0 * k / 12;
+        s.azimuthDeg = 95 + 45.0 * k / 12;
+        s.direction = horizonToScene(s.altitudeDeg, s.azimuthDeg, 0);
+        s.weight = 1.0 / 13;
+        s.normalIlluminanceLx = 60000 + 1000 * k;
+        s.luminance = s.weight * s.normalIlluminanceLx / kSunDiskProjectedSolidAngle;
+        disks.push_back(s);
+    }
+    DaylightEnvironment env(sky.skyMap(), disks, 0.0);
+    const double cosHalf = std::cos(radians(kSunAngularDiameterDeg / 2));
+    Rng rng(11);
+    std::vector<Vec3> probes;
+    for (const SunDisk& s : disks) {
+        Frame f = Frame::fromNormal(s.direction);
+        for (double r : {0.0, 0.99, 1.0, 1.001})
+            for (int a = 0; a < 16; ++a) {
+                double phi = 2 * kPi * a / 16, t = r * radians(kSunAngularDiameterDeg / 2);
+                probes.push_back(f.toWorld(Vec3(std::sin(t) * std::cos(phi), std::sin(t) * std::sin(phi), std::cos(t))));
+            }
+    }
+    for (int k = 0; k < 20000; ++k) probes.push_back(sampleUniformSphere({rng.uniform(), rng.uniform()}));
+    int hits = 0;
+    for (const Vec3& w : probes) {
+        double Lv = 0;
+        for (const SunDisk& s : disks)
+            if (dot(w, s.direction) >= cosHalf - 1e-12) Lv += s.luminance;
+        hits += Lv > 0;
+        ASSERT_NEAR(env.sunLv(w), Lv, 1e-9 * Lv) << w.x << " " << w.y << " " << w.z;
+    }
+    EXPECT_GT(hits, 13 * 16 * 2);
 }
 
 }  // namespace

@@ -219,7 +219,7 @@ void PathCache::commit() {
     for (const Paths& c : committed_) committedSegments_ += c.segments.size() - c.garbage;
     world_ = newWorld_;
     hasCommitted_ = true;
-    discard();
+    endMeasurement();
 }
 
 void PathCache::discard() {
@@ -243,6 +243,10 @@ void PathCache::discard() {
             }
         }
     }
+    endMeasurement();
+}
+
+void PathCache::endMeasurement() {
     measuring_ = false;
     for (Pending& p : pending_) p.clear();
     pendingSegments_ = 0;

@@ -97,6 +97,7 @@ private:
     // committed layout, which the scene no longer is).
     enum class Verdict { Changed, Missed, SameAnswers };
     Verdict check(size_t work, const Record& r, const Paths& in, bool requery) const;
+    void endMeasurement();  // no measurement pending (its paths are committed or dropped)
 
     const Scene& scene_;
     size_t maxSegments_;
