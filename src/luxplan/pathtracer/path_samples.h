@@ -2,8 +2,8 @@
 // default for light samplers, MeasureOptions::lowDiscrepancy), the paths of one
 // sampler point in one fold are consecutive points of a padded, Owen-scrambled Sobol
 // sequence (core/low_discrepancy.h): at each of the first kDepths vertices every use
-// (the emitter choice, the point on it, the sun, the sky, the next direction, the BSDF
-// lobe, roulette) has a dimension pair of its own, so that across the paths each is
+// (the emitter choice, the point on it, the sun, the sky, the sunlit patch, the next
+// direction, the BSDF lobe, roulette) has a dimension pair of its own, so that across the paths each is
 // stratified. Everything else (later vertices, glass coins), and every number when no
 // sequence is given, comes from the path's PCG stream. Each path's numbers are
 // uniform whatever the layout: estimates stay unbiased.
@@ -19,7 +19,10 @@ namespace luxplan {
 
 class PathSamples {
 public:
-    enum Slot : uint32_t { EmitterChoice, EmitterPoint, SunDisk, SunPoint, SkyPoint, Lobe, Direction, Roulette, kSlots };
+    enum Slot : uint32_t {
+        EmitterChoice, EmitterPoint, SunDisk, SunPoint, SkyPoint, PatchSunDisk, PatchSunPoint, PatchEntry,
+        Lobe, Direction, Roulette, kSlots
+    };
     static constexpr int kDepths = 2;
 
     // One sequence's scrambles, shared by the paths of a sampler point.

@@ -1,6 +1,7 @@
 #include <luxplan/pathtracer/path_tracer.h>
 
 #include <algorithm>
+#include <optional>
 
 #include <luxplan/core/warp.h>
 
@@ -22,10 +23,47 @@ struct Vertex {
     bool isSurface() const { return bsdf != nullptr; }
 };
 
+// A surface vertex where the sunlit patches were sampled, as the MIS weights of the
+// paths it continues need it: the strategy skips the beams whose far end (SunPatches::
+// beamEnd) lies behind an opaque vertex's surface, without tracing them.
+struct PatchOrigin {
+    Vec3 p, ng;
+    bool translucent = false;
+    bool faces(const Vec3& beamEnd) const { return translucent || dot(ng, beamEnd - p) > 0; }
+};
+
+// The vertex at a surface hit, seen from direction wo (unit, away from the surface).
+Vertex surfaceVertex(const Hit& hit, const Bsdf& bsdf, const Vec3& wo) {
+    Vertex v;
+    v.p = hit.point;
+    v.bsdf = &bsdf;
+    v.ng = dot(hit.geometricNormal, wo) >= 0 ? hit.geometricNormal : -hit.geometricNormal;
+    Vec3 ns = dot(hit.shadingNormal, v.ng) >= 0 ? hit.shadingNormal : -hit.shadingNormal;
+    v.shading = Frame::fromNormal(ns);
+    v.wo = v.shading.toLocal(wo);
+    if (v.wo.z <= 0) v.wo = normalize(Vec3(v.wo.x, v.wo.y, 1e-6));  // shading normal tilted away
+    return v;
+}
+
+// The power heuristic for the sun's light at a vertex y reached from a surface vertex
+// x, among three strategies for the same path x -> y -> sun: BSDF sampling at x then
+// the sun sampled at y (densities a * pSun), the sunlit patch sampled from x (b *
+// pSun), BSDF sampling at x then at y (a * pBsdf), with a the area density of x's
+// BSDF sample at y and b the patch's (sun_patches.h). `own` is the numerator's pair.
+double sunWeight(double ownFirst, double ownSecond, double a, double b, double pSun, double pBsdf) {
+    const double own = ownFirst * ownSecond;
+    const double sum = (a * pSun) * (a * pSun) + (b * pSun) * (b * pSun) + (a * pBsdf) * (a * pBsdf);
+    return sum > 0 ? own * own / sum : 0;
+}
+
 }  // namespace
 
 PathTracer::PathTracer(const EmbreeScene& rt, const DaylightEnvironment* daylight, const PathTracerOptions& options)
-    : rt_(rt), daylight_(daylight), options_(options), sky_(rt.scene(), daylight, options.portals), panes_(rt.scene()) {
+    : rt_(rt), daylight_(daylight), options_(options), sky_(rt.scene(), daylight, options.portals),
+      // Glass inside the room would bend no beam but would have to be crossed one hit
+      // at a time both ways; such scenes keep BSDF sampling alone for the patches.
+      patches_(rt.scene(), options.sunPatches && daylight && daylight->hasSun() && !rt.hasGlass()),
+      panes_(rt.scene()) {
     for (const Material& m : rt.scene().materials) bsdfs_.push_back(makeBsdf(m));
     updateLayout();
 }
@@ -120,8 +158,87 @@ double PathTracer::sample(const Sensor& sensor, PathSamples& samples, RayStats& 
     SkyLight::View views[2];  // this vertex's, and the last non-delta vertex's
     int current = 0;
     double firstWeight = 0;
+    // The area density at the current vertex of the BSDF sample that reached it from a
+    // surface vertex where the sunlit patches were sampled (0 otherwise): the patch
+    // strategy could have made the same path, and the sun's MIS weights count it.
+    double arrivalDensity = 0;
+    PatchOrigin arrivalFrom, lastOrigin;
+    bool lastPatched = false;
+    // The patch strategy's area density at patch point y (normal ng) for sun direction
+    // ws, had it been sampled from `from`.
+    auto patchDensity = [&](const PatchOrigin& from, const Vec3& y, const Vec3& ng, const Vec3& ws) {
+        return from.faces(patches_.beamEnd(y, -ws)) ? patches_.density(y, ng, ws) : 0.0;
+    };
 
-    for (int depth = 0; depth < options_.maxDepth; ++depth) {
+    // The sunlit patches (sun_patches.h): one patch point y per path, drawn at the first
+    // surface vertex (a sun direction, a point of an opening, the sunbeam through it to
+    // y) and connected to every later surface vertex that faces the beam, each
+    // connection weighed against the two BSDF ways to the same path (sunWeight). Every
+    // vertex's estimate is unbiased on its own, since y is drawn independently of the
+    // path; drawing it once costs the beam and y's view of the sun once per path.
+    struct PatchLight {
+        bool drawn = false, traced = false, lit = false;
+        EnvironmentSample sun;
+        Vec3 entry, beamEnd;
+        std::optional<Hit> hit;
+        double density = 0, toSun = -1;  // toSun < 0: not asked yet
+    } patch;
+    int depth = 0;
+    auto patchesHere = [&]() { return patches_.active() && v.isSurface(); };
+    auto addSunPatch = [&]() {
+        if (!patch.drawn) {
+            patch.drawn = true;
+            const double uDisk = samples.get1D(PathSamples::PatchSunDisk);
+            patch.sun = daylight_->sampleSun(uDisk, samples.get2D(PathSamples::PatchSunPoint));
+            const Vec2 uEntry = samples.get2D(PathSamples::PatchEntry);
+            patch.lit = patch.sun.pdf > 0 && patches_.sampleEntry(patch.sun.wi, uEntry, patch.entry);
+            if (patch.lit) patch.beamEnd = patches_.beamEnd(patch.entry, -patch.sun.wi);
+        }
+        if (!patch.lit) return;
+        const PatchOrigin here{v.p, v.ng, v.bsdf->hasDiffuseTransmission()};
+        if (!here.faces(patch.beamEnd)) return;
+        const Vec3 ws = patch.sun.wi;
+        if (!patch.traced) {
+            patch.traced = true;
+            ++stats.closest;
+            patch.hit = rt_.intersect({patch.entry, -ws, 0, kInf, kOpaqueMask | kEmitterMask});
+            if (stats.footprint) stats.footprint->add(patch.entry, -ws, 0, patch.hit ? patch.hit->t : kInf);
+            const Hit* h = patch.hit ? &*patch.hit : nullptr;
+            patch.lit = h && h->kind != HitKind::Emitter && patches_.inRoom(h->point);
+            // Zero when the beam grazed an opening's edge.
+            if (patch.lit) patch.density = patches_.density(h->point, h->geometricNormal, ws);
+            patch.lit = patch.density > 0;
+            if (!patch.lit) return;
+        }
+        const Hit& h = *patch.hit;
+        const Vec3 toPatch = h.point - v.p;
+        const double d2 = dot(toPatch, toPatch);
+        if (!(d2 > 0)) return;
+        const double dist = std::sqrt(d2);
+        const Vec3 wi = toPatch / dist;
+        const Vec3 fx = evalCos(v, wi);
+        if (maxComponent(fx) <= 0) return;
+        const Vertex y = surfaceVertex(h, bsdfs_[h.material], -wi);
+        const Vec3 fy = evalCos(y, ws);
+        if (maxComponent(fy) <= 0) return;
+        const double b = patch.density, pSun = patch.sun.pdf;
+        const double cosY = std::abs(dot(y.ng, wi));
+        const double w = sunWeight(b, pSun, pdfOf(v, wi) * cosY / d2, b, pSun, pdfOf(y, ws));
+        if (!(w > 0)) return;
+        if (patch.toSun < 0) {
+            patch.toSun = transmittance(spawn(y, ws), ws, kInf, -1, stats);
+            patch.lit = patch.toSun > 0;
+            if (!patch.lit) return;
+        }
+        // The connection stops short of y's surface, which it would otherwise meet.
+        const double connection = transmittance(spawn(v, wi), wi, dist * (1 - 1e-4), -1, stats);
+        if (connection <= 0) return;
+        const Vec3 contribution = throughput * fx * fy * patch.sun.Le * (cosY / d2 * connection * patch.toSun * w / (pSun * b));
+        if (stats.budget) stats.budget->credit(LightBudget::kSun, depth, luminance(contribution));
+        L += contribution;
+    };
+
+    for (; depth < options_.maxDepth; ++depth) {
         samples.setDepth(depth);
         bool deltaVertex = v.isSurface() ? v.bsdf->isDelta() : sensor.isDelta();
 
@@ -134,6 +251,10 @@ double PathTracer::sample(const Sensor& sensor, PathSamples& samples, RayStats& 
                 double T = transmittance(spawn(v, wi), wi, v.isSurface() ? maxT : maxT - kRayEpsilon, target, stats);
                 if (T <= 0) return;
                 double w = powerHeuristic(1, lightPdf, 1, pdfOf(v, wi));
+                if (source == LightBudget::kSun && arrivalDensity > 0) {
+                    const double b = patchDensity(arrivalFrom, v.p, v.ng, wi);
+                    if (b > 0) w = sunWeight(arrivalDensity, lightPdf, arrivalDensity, b, lightPdf, pdfOf(v, wi));
+                }
                 Vec3 contribution = throughput * f * Le * (T * w / lightPdf);
                 if (stats.budget) stats.budget->credit(source, depth, luminance(contribution));
                 if (depth == 0 && sensorLight) {
@@ -161,6 +282,7 @@ double PathTracer::sample(const Sensor& sensor, PathSamples& samples, RayStats& 
                 EnvironmentSample s = sky_.sample(view, v.p, samples.get2D(PathSamples::SkyPoint));
                 addLight(s.wi, s.Le, s.pdf, kInf, -1, LightBudget::kSky);
             }
+            if (patchesHere()) addSunPatch();
         }
 
         // ---- choose the next direction ----
@@ -187,6 +309,8 @@ double PathTracer::sample(const Sensor& sensor, PathSamples& samples, RayStats& 
         if (!delta) {
             lastPdf = pdf;
             lastPoint = v.p;
+            lastPatched = patchesHere();
+            if (lastPatched) lastOrigin = {v.p, v.ng, v.bsdf->hasDiffuseTransmission()};
             if (sky) current ^= 1;  // views[current ^ 1] is now the last non-delta vertex's
         }
         lastDelta = delta;
@@ -211,7 +335,13 @@ double PathTracer::sample(const Sensor& sensor, PathSamples& samples, RayStats& 
                     const bool hidden = depth == 0 && sensor.hidesSources();
                     Vec3 sky = daylight_->Le(d), sun = hidden ? Vec3() : daylight_->sunLe(d);
                     double wSky = lastDelta ? 1 : powerHeuristic(1, lastPdf, 1, sky_.pdf(views[current ^ 1], lastPoint, d));
-                    double wSun = lastDelta ? 1 : powerHeuristic(1, lastPdf, 1, daylight_->sunPdf(d));
+                    double wSun = 1;
+                    if (!lastDelta && maxComponent(sun) > 0) {
+                        const double pSun = daylight_->sunPdf(d);
+                        const double b = arrivalDensity > 0 ? patchDensity(arrivalFrom, lastPoint, v.ng, d) : 0;
+                        wSun = b > 0 ? sunWeight(arrivalDensity, lastPdf, arrivalDensity, b, pSun, lastPdf)
+                                     : powerHeuristic(1, lastPdf, 1, pSun);
+                    }
                     L += throughput * (sky * wSky + sun * wSun);
                     if (stats.budget) {
                         stats.budget->credit(LightBudget::kSky, depth, luminance(throughput * sky * wSky));
@@ -249,15 +379,14 @@ double PathTracer::sample(const Sensor& sensor, PathSamples& samples, RayStats& 
                 continue;
             }
             // A scattering surface: the next vertex. Surfaces are two-sided.
-            v = Vertex();
-            v.p = hit->point;
-            v.bsdf = &bsdf;
-            Vec3 wo = -d;
-            v.ng = dot(hit->geometricNormal, wo) >= 0 ? hit->geometricNormal : -hit->geometricNormal;
-            Vec3 ns = dot(hit->shadingNormal, v.ng) >= 0 ? hit->shadingNormal : -hit->shadingNormal;
-            v.shading = Frame::fromNormal(ns);
-            v.wo = v.shading.toLocal(wo);
-            if (v.wo.z <= 0) v.wo = normalize(Vec3(v.wo.x, v.wo.y, 1e-6));  // shading normal tilted away
+            v = surfaceVertex(*hit, bsdf, -d);
+            arrivalDensity = 0;
+            if (!lastDelta && lastPatched) {
+                const Vec3 e = v.p - lastPoint;
+                const double d2 = dot(e, e);
+                if (d2 > 0) arrivalDensity = lastPdf * std::abs(dot(v.ng, d)) / d2;
+                arrivalFrom = lastOrigin;
+            }
             scattered = true;
         }
         if (!scattered) break;

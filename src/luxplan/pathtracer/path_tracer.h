@@ -1,8 +1,8 @@
 // The photometric path tracer: paths start at a sensor (sensor.h: what a light
 // sampler or a camera pixel responds to) and take next-event estimation to every
 // light (area emitters of emitters.h, the sun disks, the sky through window portals
-// of sky_light.h) combined with BSDF sampling by multiple importance sampling (power
-// heuristic), Russian roulette instead of a depth cap, and thin glass panes that
+// of sky_light.h, and at surfaces the sunlit patches of sun_patches.h) combined with
+// BSDF sampling by multiple importance sampling (power heuristic), Russian roulette instead of a depth cap, and thin glass panes that
 // shadow rays and paths pass through, attenuated by the pane's transmittance (the
 // windows' panes analytically for shadow rays, panes.h). Translucent surfaces are
 // vertices like opaque ones (they block shadow rays) whose light sampling and BSDF
@@ -22,6 +22,7 @@
 #include <luxplan/pathtracer/path_samples.h>
 #include <luxplan/pathtracer/sensor.h>
 #include <luxplan/pathtracer/sky_light.h>
+#include <luxplan/pathtracer/sun_patches.h>
 #include <luxplan/rt/embree_scene.h>
 
 namespace luxplan {
@@ -29,6 +30,7 @@ namespace luxplan {
 struct PathTracerOptions {
     EmitterSelection emitterSelection = EmitterSelection::PowerDistance;
     bool portals = true;       // sample the sky through the room's openings from inside it
+    bool sunPatches = true;    // sample the room's sunlit patches at surface vertices
     int rouletteDepth = 3;     // bounces before Russian roulette starts
     int maxDepth = 256;        // a safety net only: roulette ends paths long before
 };
@@ -128,6 +130,7 @@ private:
     std::vector<Bsdf> bsdfs_;  // per scene material
     EmitterSet emitters_;
     SkyLight sky_;
+    SunPatches patches_;
     OpeningPanes panes_;
 };
 

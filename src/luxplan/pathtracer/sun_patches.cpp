@@ -1,0 +1,69 @@
+#include <luxplan/pathtracer/sun_patches.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include <luxplan/materials/bsdf.h>
+#include <luxplan/scene/room.h>
+
+namespace luxplan {
+
+SunPatches::SunPatches(const Scene& scene, bool enabled) {
+    const RoomShell* room = scene.room();
+    if (!enabled || !room) return;
+    // The same millimetre of slack as the sky's portals: hit points on the shell lie a
+    // float ulp either side of the box.
+    room_ = Bounds3(room->box.lo - Vec3(1e-3, 1e-3, 1e-3), room->box.hi + Vec3(1e-3, 1e-3, 1e-3));
+    const Vec3 centre = (room->box.lo + room->box.hi) * 0.5;
+    for (const Opening& o : room->openings) {
+        // Opaque and translucent panels let no sunbeam straight through.
+        if (o.material && !makeBsdf(scene.materials[*o.material]).passesStraight()) continue;
+        const Rect3 rect = openingQuad(room->box, o);
+        Vec3 n = rect.normal();
+        if (dot(n, rect.center() - centre) < 0) n = -n;
+        openings_.push_back({rect, n, rect.area()});
+    }
+}
+
+double SunPatches::projectedArea(const Vec3& ws) const {
+    double total = 0;
+    for (const Entrance& o : openings_) total += o.area * std::max(0.0, dot(o.outward, ws));
+    return total;
+}
+
+bool SunPatches::sampleEntry(const Vec3& ws, Vec2 u, Vec3& entry) const {
+    const double total = projectedArea(ws);
+    if (!(total > 0)) return false;
+    double target = u.x * total, acc = 0;
+    for (const Entrance& o : openings_) {
+        const double w = o.area * std::max(0.0, dot(o.outward, ws));
+        if (w > 0 && target < acc + w) {
+            const double x = std::min((target - acc) / w, 1 - 1e-12);
+            entry = o.rect.corner + o.rect.edgeU * x + o.rect.edgeV * u.y;
+            return true;
+        }
+        acc += w;
+    }
+    return false;
+}
+
+Vec3 SunPatches::beamEnd(const Vec3& p, const Vec3& beam) const {
+    double t = kInf;
+    for (int i = 0; i < 3; ++i) {
+        if (beam[i] > 0) t = std::min(t, (room_.hi[i] - p[i]) / beam[i]);
+        else if (beam[i] < 0) t = std::min(t, (room_.lo[i] - p[i]) / beam[i]);
+    }
+    return p + beam * std::max(t, 0.0);
+}
+
+double SunPatches::density(const Vec3& y, const Vec3& n, const Vec3& ws) const {
+    if (!room_.contains(y)) return 0;
+    for (const Entrance& o : openings_) {
+        if (dot(o.outward, ws) <= 0 || o.rect.intersect(y, ws) <= 0) continue;
+        // From inside the (convex) room a ray leaves through one opening at most.
+        return std::abs(dot(n, ws)) / projectedArea(ws);
+    }
+    return 0;
+}
+
+}  // namespace luxplan

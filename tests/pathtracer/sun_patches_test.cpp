@@ -1,0 +1,116 @@
+// The sunlit patches as a light (pathtracer/sun_patches.h): the beam points land with
+// the density the strategy claims (chi-square). The estimates it gives are tested in
+// lightsamplers/sun_patches_estimate_test.cpp.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include <luxplan/core/rng.h>
+#include <luxplan/pathtracer/sun_patches.h>
+#include "support/scene_builder.h"
+
+namespace luxplan {
+namespace {
+
+using test::SceneBuilder;
+
+// A 6 x 4 x 3 m room lit through a south and an east window, a door closed by an
+// opaque panel on the west wall (not an entrance for the sun).
+Scene twoWindowRoom() {
+    return SceneBuilder()
+        .material("wall", test::diffuse(0.5))
+        .material("glass", test::glass(0.8))
+        .room({0, 0, 0}, {6, 4, 3}, "wall", "wall", "wall")
+        .window(Wall::South, 1, 2, 1, 1, "glass")
+        .window(Wall::East, 1, 1.5, 0.8, 1.2)
+        .window(Wall::West, 1, 1, 0, 2.1, "wall")
+        .build();
+}
+
+TEST(SunPatches, BeamPointsLandWithTheDensityTheyClaim) {
+    const Scene scene = twoWindowRoom();
+    const SunPatches patches(scene, true);
+    ASSERT_TRUE(patches.active());
+    // The sun south-east and above: both windows face it.
+    const Vec3 ws = normalize(Vec3(0.4, -0.7, 0.6));
+    EXPECT_NEAR(patches.projectedArea(ws), 2.0 * 0.7 / length(Vec3(0.4, -0.7, 0.6)) + 1.8 * 0.4 / length(Vec3(0.4, -0.7, 0.6)),
+                1e-12);
+    EXPECT_EQ(patches.projectedArea(-ws), 0.0);  // the sun behind the windows lights nothing
+
+    // Where the beams land in the empty room: the room box's exit point along -ws. Bins:
+    // 0.5 m cells of the floor, then the four walls and the ceiling one bin each.
+    const int nx = 12, ny = 8, floorBins = nx * ny;
+    auto binOf = [&](const Vec3& y) {
+        if (y.z < 1e-9) return std::min(int(y.x / 0.5), nx - 1) * ny + std::min(int(y.y / 0.5), ny - 1);
+        if (y.z > 3 - 1e-9) return floorBins + 4;
+        if (y.y < 1e-9) return floorBins + 0;
+        if (y.y > 4 - 1e-9) return floorBins + 1;
+        if (y.x < 1e-9) return floorBins + 2;
+        return floorBins + 3;
+    };
+    const int n = 100000;
+    std::vector<double> observed(size_t(floorBins + 5), 0.0);
+    Rng rng(7);
+    for (int i = 0; i < n; ++i) {
+        Vec3 entry;
+        ASSERT_TRUE(patches.sampleEntry(ws, {rng.uniform(), rng.uniform()}, entry));
+        observed[size_t(binOf(patches.beamEnd(entry, -ws)))] += 1;
+    }
+    // Expected: n times the density integrated over each bin (midpoint quadrature; the
+    // beams' edges cross cells, so the quadrature is fine enough to be exact here).
+    std::vector<double> expected(observed.size(), 0.0);
+    auto integrate = [&](Vec3 corner, Vec3 u, Vec3 v, Vec3 normal, int bin, int m) {
+        const double dA = length(u) * length(v) / (double(m) * m);
+        for (int i = 0; i < m; ++i)
+            for (int j = 0; j < m; ++j) {
+                const Vec3 y = corner + u * ((i + 0.5) / m) + v * ((j + 0.5) / m);
+                expected[size_t(bin < 0 ? binOf(y) : bin)] += n * patches.density(y, normal, ws) * dA;
+            }
+    };
+    integrate({0, 0, 0}, {6, 0, 0}, {0, 4, 0}, {0, 0, 1}, -1, 2400);
+    integrate({0, 0, 0}, {6, 0, 0}, {0, 0, 3}, {0, 1, 0}, floorBins + 0, 600);
+    integrate({0, 4, 0}, {6, 0, 0}, {0, 0, 3}, {0, 1, 0}, floorBins + 1, 600);
+    integrate({0, 0, 0}, {0, 4, 0}, {0, 0, 3}, {1, 0, 0}, floorBins + 2, 600);
+    integrate({6, 0, 0}, {0, 4, 0}, {0, 0, 3}, {1, 0, 0}, floorBins + 3, 600);
+    integrate({0, 0, 3}, {6, 0, 0}, {0, 4, 0}, {0, 0, 1}, floorBins + 4, 600);
+    double total = 0;
+    for (double e : expected) total += e;
+    EXPECT_NEAR(total / n, 1.0, 2e-3);  // every beam lands somewhere in the room
+
+    // Bins expected to hold fewer than 20 are pooled.
+    double chi2 = 0, pooledE = 0, pooledO = 0;
+    int dof = -1;
+    for (size_t b = 0; b < expected.size(); ++b) {
+        if (expected[b] < 20) {
+            pooledE += expected[b], pooledO += observed[b];
+            continue;
+        }
+        chi2 += (observed[b] - expected[b]) * (observed[b] - expected[b]) / expected[b];
+        ++dof;
+    }
+    if (pooledE > 0) chi2 += (pooledO - pooledE) * (pooledO - pooledE) / pooledE, ++dof;
+    else EXPECT_EQ(pooledO, 0.0);
+    ASSERT_GT(dof, 20);
+    // The 0.999 quantile of chi-square is below dof + 4.5 sqrt(dof) for these dof.
+    EXPECT_LT(chi2, dof + 4.5 * std::sqrt(2.0 * dof)) << "dof " << dof;
+}
+
+TEST(SunPatches, OnlyRoomsWithSunlitEntrancesHaveThem) {
+    EXPECT_FALSE(SunPatches(twoWindowRoom(), false).active());
+    const Scene closed = SceneBuilder()
+                             .material("wall", test::diffuse(0.5))
+                             .room({0, 0, 0}, {6, 4, 3}, "wall", "wall", "wall")
+                             .window(Wall::South, 1, 2, 1, 1, "wall")
+                             .build();
+    EXPECT_FALSE(SunPatches(closed, true).active());
+    // Outside the room, or on a line that leaves the room through a wall, the strategy
+    // makes no point.
+    const SunPatches patches(twoWindowRoom(), true);
+    const Vec3 ws = normalize(Vec3(0.4, -0.7, 0.6));
+    EXPECT_EQ(patches.density({3, -1, 1}, {0, 0, 1}, ws), 0.0);
+    EXPECT_EQ(patches.density({0.2, 3.8, 0}, {0, 0, 1}, ws), 0.0);
+}
+
+}  // namespace
+}  // namespace luxplan
