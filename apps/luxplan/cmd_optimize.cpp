@@ -68,6 +68,7 @@ struct OptimizeArgs {
     bool flat = false, quiet = false, noPictures = false, fixedPaths = false, fullEvaluation = false,
          freshNoise = false, noiseBlind = false, nested = false, cycle = false, singleTest = false;
     std::string sampling = "sobol";
+    std::string sunPatches = "report";
 };
 
 // One status line, redrawn in place on a terminal, printed every few seconds
@@ -156,7 +157,10 @@ int runOptimize(const OptimizeArgs& args) {
     std::unique_ptr<PathTracedLighting> lighting;
     const int reportPaths = std::max(scene.optimizer.reportPathsPerPoint, measure.pathsPerPoint);
     if (!scene.samplers.empty()) {
-        lighting = std::make_unique<PathTracedLighting>(scene, daylight ? &*daylight : nullptr, measure);
+        PathTracerOptions search, report;
+        search.sunPatches = args.sunPatches == "on";
+        report.sunPatches = args.sunPatches != "off";
+        lighting = std::make_unique<PathTracedLighting>(scene, daylight ? &*daylight : nullptr, measure, search, report);
         lighting->setReportPaths(reportPaths);  // confirmations, the final choice and the report
         lighting->setIncremental(!args.fullEvaluation);
         lighting->setFreshNoise(args.freshNoise);
@@ -261,6 +265,12 @@ void registerOptimizeCommand(CLI::App& app, int& threads) {
                   "penalty is settled, --paths being the most)");
     cmd->add_option("--sampling", args->sampling, "Random numbers of the paths' first vertices: sobol (default) or random")
         ->check(CLI::IsMember({"sobol", "random"}));
+    cmd->add_option("--sun-patches", args->sunPatches,
+                    "Sample the room's sunlit patches at every surface a path meets: in the re-measured candidates and "
+                    "the report only (report, default: in the search they cost more rays than their lower noise "
+                    "saves), everywhere (on) or nowhere (off). The values are the same, with less noise where "
+                    "sunlight bounces")
+        ->check(CLI::IsMember({"on", "off", "report"}));
     cmd->add_flag("--full-evaluation", args->fullEvaluation,
                   "Trace every path of every evaluated layout (default: only the paths a move can change are "
                   "traced again; the numbers are the same)");

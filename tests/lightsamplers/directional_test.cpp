@@ -92,8 +92,11 @@ TEST(Directional, AdaptiveMeasurementDropsStrataThatCannotHoldTheMax) {
     MeasureResult m = measureSamplers(*lab.tracer, o);
     const SamplerResult& r = m.samplers[0];
     const int batch = o.batchPaths;
-    EXPECT_EQ(r.pathsPerPoint, 1000);               // the lamp's stratum, on its band's edge
-    EXPECT_EQ(m.paths, uint64_t(1000 + 8 * batch));  // the eight dark ones: one round
+    // The lamp's stratum sits on its band's edge, within the 1% that the sphere's size
+    // puts between its luminance and I / (d^2 A): it runs on for many rounds (where it
+    // stops depends on the paths' numbers), the eight dark ones stop after one.
+    EXPECT_GE(r.pathsPerPoint, 16 * batch);
+    EXPECT_EQ(m.paths, uint64_t(r.pathsPerPoint + 8 * batch));
     EXPECT_NEAR(r.value, expected, 4 * r.standardError + 0.01 * expected);
 }
 

@@ -10,16 +10,18 @@ constexpr uint64_t kFreshTag = 0x6672657368ULL;  // "fresh"
 
 }  // namespace
 
-PathTracedLighting::PathTracedLighting(const Scene& scene, const DaylightEnvironment* daylight, const MeasureOptions& options)
-    : scene_(scene), rt_(scene, initialLayout(scene)), tracer_(rt_, daylight), options_(options), cache_(scene) {}
+PathTracedLighting::PathTracedLighting(const Scene& scene, const DaylightEnvironment* daylight, const MeasureOptions& options,
+                                       const PathTracerOptions& searchTracing, const PathTracerOptions& reportTracing)
+    : scene_(scene), rt_(scene, initialLayout(scene)), tracer_(rt_, daylight, searchTracing),
+      reportTracer_(rt_, daylight, reportTracing), options_(options), cache_(scene) {}
 
 double PathTracedLighting::evaluate(const Layout& /*layout*/, const std::vector<Transform>& world, LightingBreakdown* out) {
     if (fresh_) {
         MeasureOptions fresh = options_;
         fresh.seed = hashValues({options_.seed, kFreshTag, ++freshDraws_});
-        return measure(world, fresh, nullptr, out);
+        return measure(tracer_, world, fresh, nullptr, out);
     }
-    return measure(world, options_, incremental_ ? &cache_ : nullptr, out);
+    return measure(tracer_, world, options_, incremental_ ? &cache_ : nullptr, out);
 }
 
 double PathTracedLighting::measureIndependently(const Layout& /*layout*/, const std::vector<Transform>& world,
@@ -29,16 +31,16 @@ double PathTracedLighting::measureIndependently(const Layout& /*layout*/, const 
     if (reportPaths_ > 0) independent.pathsPerPoint = reportPaths_;
     independent.adaptive = false;
     // Not through the cache: its committed paths are the search's, and stay so.
-    return measure(world, independent, nullptr, out);
+    return measure(reportTracer_, world, independent, nullptr, out);
 }
 
-double PathTracedLighting::measure(const std::vector<Transform>& world, const MeasureOptions& options, PathCache* cache,
-                                   LightingBreakdown* out) {
+double PathTracedLighting::measure(PathTracer& tracer, const std::vector<Transform>& world, const MeasureOptions& options,
+                                   PathCache* cache, LightingBreakdown* out) {
     // Only instance transforms change: the top level is re-committed, nothing rebuilt.
     for (size_t i = 0; i < world.size(); ++i) rt_.setEntityTransform(int(i), world[i]);
     rt_.commit();
-    tracer_.updateLayout();
-    last_ = measureSamplers(tracer_, options, cache);
+    tracer.updateLayout();
+    last_ = measureSamplers(tracer, options, cache);
     ++evaluations_;
     rays_ += last_.rays;
     reusedPaths_ += last_.reusedPaths;

@@ -12,7 +12,11 @@ public:
     // `daylight` may be null (night). Every evaluation uses the same seed: common random
     // numbers, so that the difference between two layouts' costs carries less noise
     // than either cost (the paths differ only where the geometry does).
-    PathTracedLighting(const Scene& scene, const DaylightEnvironment* daylight, const MeasureOptions& options);
+    // `searchTracing` for the search's evaluations, `reportTracing` for the independent
+    // measurements (the sunlit patches, say, cost the search more than they save it,
+    // but lower the report's error).
+    PathTracedLighting(const Scene& scene, const DaylightEnvironment* daylight, const MeasureOptions& options,
+                       const PathTracerOptions& searchTracing = {}, const PathTracerOptions& reportTracing = {});
 
     double evaluate(const Layout& layout, const std::vector<Transform>& world, LightingBreakdown* out) override;
     // A fixed number of paths per point (setReportPaths; by default the search's), from
@@ -41,12 +45,12 @@ public:
     RayStats rays() const { return rays_; }
 
 private:
-    double measure(const std::vector<Transform>& world, const MeasureOptions& options, PathCache* cache,
-                   LightingBreakdown* out);
+    double measure(PathTracer& tracer, const std::vector<Transform>& world, const MeasureOptions& options,
+                   PathCache* cache, LightingBreakdown* out);
 
     const Scene& scene_;
     EmbreeScene rt_;
-    PathTracer tracer_;
+    PathTracer tracer_, reportTracer_;
     MeasureOptions options_;
     int reportPaths_ = 0;  // 0: options_.pathsPerPoint
     PathCache cache_;
