@@ -1,0 +1,73 @@
+// `--sun-patches`: measure's choice of estimator, and optimize's (the search's and the
+// report's apart).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "run_cli.h"
+#include "support/temp_files.h"
+
+namespace luxplan {
+namespace {
+
+const std::string kOffice = std::string(LUXPLAN_SOURCE_DIR) + "/scenes/demo/office.json";
+
+nlohmann::json measure(const std::string& extra) {
+    test::CliResult r = test::runCli("measure " + kOffice + " --json --paths 400 --seed 3 --threads 2 " + extra);
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+    return r.exitCode == 0 ? nlohmann::json::parse(r.output) : nlohmann::json();
+}
+
+// The same values either way (within their errors), with less noise in all over the
+// sunlit office.
+TEST(SunPatchesCli, MeasureGivesTheSameValuesWithLessNoise) {
+    nlohmann::json on = measure(""), off = measure("--sun-patches off");
+    ASSERT_FALSE(on.is_null());
+    ASSERT_FALSE(off.is_null());
+    EXPECT_EQ(on["sun_patches"], true);
+    EXPECT_EQ(off["sun_patches"], false);
+    ASSERT_EQ(on["samplers"].size(), off["samplers"].size());
+    double varianceOn = 0, varianceOff = 0;
+    for (size_t k = 0; k < on["samplers"].size(); ++k) {
+        const auto &a = on["samplers"][k], &b = off["samplers"][k];
+        if (a["type"] != "planar") continue;  // the others' values hold a selection
+        const double ea = a["std_error"], eb = b["std_error"];
+        EXPECT_NEAR(double(a["value"]), double(b["value"]), 4 * std::hypot(ea, eb)) << a["name"];
+        varianceOn += ea * ea, varianceOff += eb * eb;
+    }
+    EXPECT_LT(varianceOn, 0.9 * varianceOff);
+}
+
+TEST(SunPatchesCli, AnUnknownChoiceIsAnError) {
+    test::CliResult r = test::runCli("measure " + kOffice + " --paths 4 --sun-patches maybe");
+    EXPECT_NE(r.exitCode, 0);
+    EXPECT_NE(r.output.find("--sun-patches"), std::string::npos) << r.output;
+    r = test::runCli("optimize " + kOffice + " -o /nonexistent --sun-patches sometimes");
+    EXPECT_NE(r.exitCode, 0);
+    EXPECT_NE(r.output.find("--sun-patches"), std::string::npos) << r.output;
+}
+
+// optimize's default samples the patches in the report but not in the search: the search
+// (layout, trace) is the one of `off`, the report's measurement is not.
+TEST(SunPatchesCli, OptimizeSamplesThemForTheReportOnly) {
+    test::TempDir dir;
+    auto run = [&](const std::string& name, const std::string& extra) {
+        const auto out = dir.path() / name;
+        test::CliResult r = test::runCli("optimize " + kOffice + " -o " + out.string() +
+                                         " --iterations 60 --paths 16 --seed 2 --threads 2 -q --no-pictures " + extra);
+        EXPECT_EQ(r.exitCode, 0) << r.output;
+        std::ifstream layout(out / "layout.json"), report(out / "report.json");
+        return std::make_pair(nlohmann::json::parse(layout), nlohmann::json::parse(report));
+    };
+    const auto standard = run("report", ""), off = run("off", "--sun-patches off"), on = run("on", "--sun-patches on");
+    EXPECT_EQ(standard.first, off.first);
+    EXPECT_EQ(standard.second["search_estimate"], off.second["search_estimate"]);
+    EXPECT_NE(standard.second["C"], off.second["C"]);
+    EXPECT_NE(on.second["search_estimate"], off.second["search_estimate"]);
+}
+
+}  // namespace
+}  // namespace luxplan
