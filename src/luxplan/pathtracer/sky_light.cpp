@@ -24,6 +24,8 @@ SkyLight::SkyLight(const Scene& scene, const DaylightEnvironment* daylight, bool
             if (o.material && !makeBsdf(scene.materials[*o.material]).passesStraight()) continue;
             openings_.push_back(openingQuad(room->box, o));
             openingNormals_.push_back(cross(openings_.back().edgeU, openings_.back().edgeV));
+            openingAreas_.push_back(length(openingNormals_.back()));
+            openingUnitNormals_.push_back(openingNormals_.back() / openingAreas_.back());
         }
     }
 }
@@ -55,8 +57,9 @@ void SkyLight::compute(const Vec3& p, View& view, bool buildAll) const {
         double w = d2 > 0 ? std::abs(dot(openingNormals_[size_t(i)], d)) / (d2 * std::sqrt(d2)) : 2 * kPi;
         view.weight[i] = std::min(w, 2 * kPi);
         view.weightTotal += view.weight[i];
+        view.spherical[i] = w > kSphericalAbove;
         view.built[i] = false;
-        if (buildAll) rect(view, i);
+        if (buildAll && view.spherical[i]) rect(view, i);
     }
 }
 
@@ -72,11 +75,18 @@ double SkyLight::pdf(const View& view, const Vec3& p, const Vec3& w) const {
     if (!active()) return 0;
     if (!view.active) return daylight_->skyPdf(w);
     if (view.weightTotal <= 0) return 0;
-    for (int i = 0; i < view.count; ++i)
-        if (view.weight[i] > 0 && openings_[size_t(i)].intersect(p, w) > 0) {
-            double omega = rect(view, i).solidAngle();
-            return omega > 0 ? view.weight[i] / view.weightTotal / omega : 0;
+    for (int i = 0; i < view.count; ++i) {
+        if (!(view.weight[i] > 0)) continue;
+        const double t = openings_[size_t(i)].intersect(p, w);
+        if (t <= 0) continue;
+        const double chosen = view.weight[i] / view.weightTotal;
+        if (!view.spherical[i]) {
+            const double cosine = std::abs(dot(openingUnitNormals_[size_t(i)], w));
+            return cosine > 0 ? chosen * t * t / (openingAreas_[size_t(i)] * cosine) : 0;
         }
+        double omega = rect(view, i).solidAngle();
+        return omega > 0 ? chosen / omega : 0;
+    }
     return 0;
 }
 
@@ -96,12 +106,26 @@ EnvironmentSample SkyLight::sample(const View& view, const Vec3& p, Vec2 u) cons
         acc += view.weight[i];
     }
     if (chosen < 0) return s;
+    const double pChosen = view.weight[chosen] / view.weightTotal;
+    if (!view.spherical[chosen]) {
+        const Rect3& o = openings_[size_t(chosen)];
+        const Vec3 d = o.corner + o.edgeU * u.x + o.edgeV * u.y - p;
+        const double d2 = dot(d, d);
+        if (!(d2 > 0)) return s;
+        const double dist = std::sqrt(d2);
+        s.wi = d / dist;
+        const double cosine = std::abs(dot(openingUnitNormals_[size_t(chosen)], s.wi));
+        if (!(cosine > 0)) return s;
+        s.Le = daylight_->Le(s.wi);
+        s.pdf = pChosen * d2 / (openingAreas_[size_t(chosen)] * cosine);
+        return s;
+    }
     const SphericalRect& r = rect(view, chosen);
     if (r.solidAngle() <= 0) return s;
     Vec3 q = r.sample(u);
     s.wi = normalize(q - p);
     s.Le = daylight_->Le(s.wi);
-    s.pdf = view.weight[chosen] / view.weightTotal / r.solidAngle();
+    s.pdf = pChosen / r.solidAngle();
     return s;
 }
 

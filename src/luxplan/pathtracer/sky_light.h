@@ -15,18 +15,25 @@ namespace luxplan {
 
 class SkyLight {
 public:
-    // A portal is chosen with a cheap weight (area x cos / distance^2, capped at 2 pi),
-    // then a direction uniform in its spherical rectangle: pdf = P(portal) / solid
-    // angle. Only the rectangles a vertex samples or an escaping ray passes through are
-    // set up (four acos each); the view of a sampler point, shared by all its paths,
-    // sets up all. Openings beyond kMaxPortals are not sampled directly (BSDF sampling
-    // still finds them, so the estimate stays unbiased).
+    // A portal is chosen with a cheap weight (area x cos / distance^2 at its centre,
+    // capped at 2 pi), then, when that weight is above kSphericalAbove, a direction
+    // uniform in its spherical rectangle: pdf = P(portal) / solid angle; farther away, a
+    // point uniform on its area: pdf = P(portal) d^2 / (area |cos|), which is nearly
+    // uniform in solid angle there and needs no trigonometry. Only the rectangles a
+    // vertex samples or an escaping ray passes through are set up (four acos each);
+    // the view of a sampler point, shared by all its paths, sets up all. Openings
+    // beyond kMaxPortals are not sampled directly (BSDF sampling still finds them, so
+    // the estimate stays unbiased).
     static constexpr int kMaxPortals = 16;
+    // Where d^2 / cos varies over a portal by more than about a third (a square seen
+    // face on from less than its side away), the spherical rectangle.
+    static constexpr double kSphericalAbove = 0.5;
     struct View {
         bool active = false;  // the vertex is inside the room: sample the portals
         int count = 0;
         Vec3 point;
         double weight[kMaxPortals] = {};
+        bool spherical[kMaxPortals] = {};
         double weightTotal = 0;
         mutable SphericalRect rects[kMaxPortals];
         mutable bool built[kMaxPortals] = {};
@@ -54,6 +61,8 @@ private:
     bool portals_ = true;
     std::vector<Rect3> openings_;
     std::vector<Vec3> openingNormals_;  // edgeU x edgeV: the opening's normal times its area
+    std::vector<Vec3> openingUnitNormals_;
+    std::vector<double> openingAreas_;
     Bounds3 room_;
     bool hasRoom_ = false;
     uint64_t id_ = 0;  // unique per light, keys the per-thread view cache

@@ -1,0 +1,117 @@
+// The sky sampled through the room's openings (pathtracer/sky_light.h): near an opening
+// by its spherical rectangle, farther away by its area. Both must draw directions with
+// the density pdf() reports (chi-square over cells of each opening), and a sample's own
+// pdf must be pdf()'s.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include <luxplan/core/rng.h>
+#include <luxplan/daylight/daylight.h>
+#include <luxplan/pathtracer/sky_light.h>
+#include <luxplan/scene/room.h>
+#include "support/scene_builder.h"
+
+namespace luxplan {
+namespace {
+
+using test::SceneBuilder;
+
+struct Chi2 {
+    double value = 0;
+    int dof = -1;
+};
+
+// n samples from p, binned by the opening they cross and a cells x cells grid on it,
+// against n times the density integrated over each cell (quadrature in the opening's
+// area: pdf(w) |cos| / d^2 dA).
+Chi2 chiSquare(const SkyLight& sky, const SkyLight::View& view, const std::vector<Rect3>& openings, const Vec3& p) {
+    const int cells = 6, n = 120000, m = 24;
+    const size_t bins = openings.size() * cells * cells;
+    std::vector<double> observed(bins, 0.0), expected(bins, 0.0);
+    auto binOf = [&](const Vec3& w, int& bin) {
+        for (size_t o = 0; o < openings.size(); ++o) {
+            const Rect3& r = openings[o];
+            const double t = r.intersect(p, w);
+            if (t <= 0) continue;
+            const Vec3 q = p + w * t - r.corner;
+            const int a = std::min(cells - 1, int(dot(q, r.edgeU) / dot(r.edgeU, r.edgeU) * cells));
+            const int b = std::min(cells - 1, int(dot(q, r.edgeV) / dot(r.edgeV, r.edgeV) * cells));
+            bin = int(o) * cells * cells + std::max(0, a) * cells + std::max(0, b);
+            return true;
+        }
+        return false;
+    };
+    Rng rng(11);
+    for (int i = 0; i < n; ++i) {
+        const EnvironmentSample s = sky.sample(view, p, {rng.uniform(), rng.uniform()});
+        if (!(s.pdf > 0)) continue;
+        EXPECT_NEAR(s.pdf, sky.pdf(view, p, s.wi), 1e-9 * s.pdf);
+        int bin = -1;
+        EXPECT_TRUE(binOf(s.wi, bin));
+        if (bin >= 0) observed[size_t(bin)] += 1;
+    }
+    for (size_t o = 0; o < openings.size(); ++o) {
+        const Rect3& r = openings[o];
+        const Vec3 normal = r.normal();
+        const double dA = r.area() / (double(cells) * cells * m * m);
+        for (int a = 0; a < cells * m; ++a)
+            for (int b = 0; b < cells * m; ++b) {
+                const Vec3 q = r.corner + r.edgeU * ((a + 0.5) / (cells * m)) + r.edgeV * ((b + 0.5) / (cells * m));
+                const Vec3 d = q - p;
+                const double d2 = dot(d, d);
+                const Vec3 w = d / std::sqrt(d2);
+                expected[o * cells * cells + size_t(a / m) * cells + size_t(b / m)] +=
+                    n * sky.pdf(view, p, w) * std::abs(dot(normal, w)) / d2 * dA;
+            }
+    }
+    Chi2 c;
+    double total = 0;
+    for (size_t b = 0; b < bins; ++b) {
+        total += expected[b];
+        if (expected[b] < 20) continue;
+        c.value += (observed[b] - expected[b]) * (observed[b] - expected[b]) / expected[b];
+        ++c.dof;
+    }
+    EXPECT_NEAR(total / n, 1.0, 2e-3);  // every sample goes through an opening
+    return c;
+}
+
+TEST(SkyLight, DirectionsFollowTheirDensityNearAndFarFromAnOpening) {
+    const Scene scene = SceneBuilder()
+                            .material("grey", test::diffuse(0.5))
+                            .uniformSky(1000)
+                            .room({0, 0, 0}, {4, 5, 3}, "grey", "grey", "grey")
+                            .window(Wall::South, 1, 2, 1, 1.5)
+                            .window(Wall::East, 1, 1.2, 0.9, 1.2)
+                            .skylight({2, 3}, {1, 0.8})
+                            .build();
+    const DaylightEnvironment daylight = buildDaylight(*scene.daylight, scene.site);
+    const SkyLight sky(scene, &daylight, true);
+    std::vector<Rect3> openings;
+    for (const Opening& o : scene.room()->openings) openings.push_back(openingQuad(scene.room()->box, o));
+    // Near the south window (its spherical rectangle), and far from every opening
+    // (areas), and a point that samples some each way.
+    for (const Vec3 p : {Vec3(2, 0.6, 1.6), Vec3(0.5, 4.5, 0.3), Vec3(2.5, 2.8, 2.2)}) {
+        SkyLight::View view;
+        sky.view(p, view);
+        ASSERT_TRUE(view.active);
+        int spherical = 0;
+        for (int i = 0; i < view.count; ++i) spherical += view.spherical[i];
+        const Chi2 c = chiSquare(sky, view, openings, p);
+        ASSERT_GT(c.dof, 30);
+        // Above the 0.999 quantile of chi-square with these degrees of freedom.
+        EXPECT_LT(c.value, c.dof + 4.5 * std::sqrt(2.0 * c.dof)) << "at " << p.x << "," << p.y << "," << p.z
+                                                                 << ": " << spherical << " spherical rectangles";
+    }
+    // The three points do test both ways.
+    SkyLight::View near, far;
+    sky.view({2, 0.6, 1.6}, near);
+    sky.view({0.5, 4.5, 0.3}, far);
+    EXPECT_TRUE(near.spherical[0]);
+    for (int i = 0; i < far.count; ++i) EXPECT_FALSE(far.spherical[i]) << i;
+}
+
+}  // namespace
+}  // namespace luxplan
