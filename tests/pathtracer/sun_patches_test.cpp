@@ -8,6 +8,8 @@
 
 #include <luxplan/core/rng.h>
 #include <luxplan/pathtracer/sun_patches.h>
+#include <luxplan/rt/embree_scene.h>
+#include <luxplan/scene/layout.h>
 #include "support/scene_builder.h"
 
 namespace luxplan {
@@ -110,6 +112,54 @@ TEST(SunPatches, OnlyRoomsWithSunlitEntrancesHaveThem) {
     const Vec3 ws = normalize(Vec3(0.4, -0.7, 0.6));
     EXPECT_EQ(patches.density({3, -1, 1}, {0, 0, 1}, ws), 0.0);
     EXPECT_EQ(patches.density({0.2, 3.8, 0}, {0, 0, 1}, ws), 0.0);
+}
+
+// The sun's shadow rays that must leave through a wall are not traced (the shell is
+// static: no move changes their answer). Only from strictly inside the room, so that a
+// path that went out of a window still sees the sun from the shell's outer face.
+TEST(SunPatches, TheShellShadesWhatCannotLeaveThroughAnOpening) {
+    const SunPatches off(twoWindowRoom(), false);  // works without the strategy too
+    const Vec3 ws = normalize(Vec3(0.4, -0.7, 0.6));
+    EXPECT_FALSE(off.shadedByShell({2, 1.0, 0.8}, ws));   // out through the south window
+    EXPECT_TRUE(off.shadedByShell({2, 3.5, 0.2}, ws));    // into the ceiling
+    EXPECT_TRUE(off.shadedByShell({0.3, 0.3, 2.5}, ws));  // into the south wall beside it
+    EXPECT_FALSE(off.shadedByShell({2, -1e-4, 2.5}, ws)); // the south wall's outer face
+    EXPECT_FALSE(off.shadedByShell({7, 2, 1}, ws));       // outside the room
+    EXPECT_TRUE(off.shadedByShell({0.3, 3.9, 0.1}, -ws));  // the sun behind the windows
+    // The door (an opaque panel) is shell; a translucent shell lets light through anywhere.
+    EXPECT_TRUE(off.shadedByShell({1.5, 1.5, 1}, normalize(Vec3(-1, 0, 0.1))));
+    Material translucent = test::diffuse(0.4);
+    translucent.type = MaterialType::Translucent;
+    translucent.diffuseTransmittance = Vec3(0.2, 0.2, 0.2);
+    const Scene paper = SceneBuilder()
+                            .material("wall", test::diffuse(0.5))
+                            .material("paper", translucent)
+                            .room({0, 0, 0}, {6, 4, 3}, "wall", "paper", "wall")
+                            .window(Wall::South, 1, 2, 1, 1)
+                            .build();
+    EXPECT_FALSE(SunPatches(paper, false).shadedByShell({2, 3.5, 0.2}, ws));
+}
+
+// What it declares shaded, Embree finds blocked (random points and directions).
+TEST(SunPatches, WhatTheShellShadesEmbreeFindsBlocked) {
+    const Scene scene = twoWindowRoom();
+    const EmbreeScene rt(scene, initialLayout(scene));
+    const SunPatches patches(scene, false);
+    Rng rng(3);
+    int shaded = 0, open = 0;
+    for (int i = 0; i < 20000; ++i) {
+        const Vec3 p(rng.uniform() * 6, rng.uniform() * 4, rng.uniform() * 3);
+        const double z = rng.uniform(), phi = 2 * kPi * rng.uniform(), r = std::sqrt(1 - z * z);
+        const Vec3 w(r * std::cos(phi), r * std::sin(phi), z);
+        if (!patches.shadedByShell(p, w)) {
+            ++open;
+            continue;
+        }
+        ++shaded;
+        EXPECT_TRUE(rt.occluded({p, w, 0, kInf, kOpaqueMask})) << p.x << "," << p.y << "," << p.z;
+    }
+    EXPECT_GT(shaded, 10000);
+    EXPECT_GT(open, 500);
 }
 
 }  // namespace

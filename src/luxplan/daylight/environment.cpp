@@ -215,13 +215,22 @@ double DaylightEnvironment::sunPdf(const Vec3& w) const {
     return pmfSum / kSunSolidAngle;
 }
 
+void DaylightEnvironment::sunAt(const Vec3& w, Vec3& Le, double& pdf) const {
+    Le = Vec3();
+    double pmfSum = 0;
+    forEachSunDiskAt(w, [&](uint32_t k) {
+        Le += suns_[k].radiance();
+        pmfSum += sunDistribution_.pmf(k);
+    });
+    pdf = pmfSum / kSunSolidAngle;
+}
+
 EnvironmentSample DaylightEnvironment::sampleSun(double uDisk, Vec2 u) const {
     EnvironmentSample s;
     if (suns_.empty()) return s;
     const size_t k = sunDistribution_.sampleDiscrete(uDisk);
     s.wi = normalize(Frame::fromNormal(suns_[k].direction).toWorld(sampleUniformCone(u, kSunCosHalfAngle)));
-    s.Le = sunLe(s.wi);
-    s.pdf = sunPdf(s.wi);
+    sunAt(s.wi, s.Le, s.pdf);
     return s;
 }
 

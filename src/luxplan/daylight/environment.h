@@ -111,6 +111,8 @@ public:
     // uniformly in its cone (u). pdf is the mixture density over all disks containing wi.
     EnvironmentSample sampleSun(double uDisk, Vec2 u) const;
     double sunPdf(const Vec3& w) const;
+    // sunLe(w) and sunPdf(w) from one lookup.
+    void sunAt(const Vec3& w, Vec3& Le, double& pdf) const;
     // Sum of disk luminance x disk solid angle (cd sr / m^2).
     double sunIntegral() const { return sunIntegral_; }
 

@@ -273,7 +273,7 @@ double PathTracer::sample(const Sensor& sensor, PathSamples& samples, RayStats& 
             if (daylight_ && daylight_->hasSun()) {
                 const double uDisk = samples.get1D(PathSamples::SunDisk);
                 EnvironmentSample s = daylight_->sampleSun(uDisk, samples.get2D(PathSamples::SunPoint));
-                addLight(s.wi, s.Le, s.pdf, kInf, -1, LightBudget::kSun);
+                if (!patches_.shadedByShell(spawn(v, s.wi), s.wi)) addLight(s.wi, s.Le, s.pdf, kInf, -1, LightBudget::kSun);
             }
             if (sky) {
                 SkyLight::View& view = views[current];

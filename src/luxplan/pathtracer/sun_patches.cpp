@@ -8,9 +8,16 @@
 
 namespace luxplan {
 
-SunPatches::SunPatches(const Scene& scene, bool enabled) {
+SunPatches::SunPatches(const Scene& scene, bool enabled) : enabled_(enabled) {
     const RoomShell* room = scene.room();
-    if (!enabled || !room) return;
+    if (!room) return;
+    shell_ = room->box;
+    // A translucent or glass wall lets light through where no opening is.
+    opaqueShell_ = true;
+    for (uint32_t m : {room->floorMaterial, room->wallMaterial, room->ceilingMaterial}) {
+        const Bsdf bsdf = makeBsdf(scene.materials[m]);
+        if (bsdf.passesStraight() || bsdf.hasDiffuseTransmission()) opaqueShell_ = false;
+    }
     // The same millimetre of slack as the sky's portals: hit points on the shell lie a
     // float ulp either side of the box.
     room_ = Bounds3(room->box.lo - Vec3(1e-3, 1e-3, 1e-3), room->box.hi + Vec3(1e-3, 1e-3, 1e-3));
@@ -54,6 +61,15 @@ Vec3 SunPatches::beamEnd(const Vec3& p, const Vec3& beam) const {
         else if (beam[i] < 0) t = std::min(t, (room_.lo[i] - p[i]) / beam[i]);
     }
     return p + beam * std::max(t, 0.0);
+}
+
+bool SunPatches::shadedByShell(const Vec3& p, const Vec3& ws) const {
+    if (!opaqueShell_) return false;
+    for (int i = 0; i < 3; ++i)
+        if (!(p[i] > shell_.lo[i] && p[i] < shell_.hi[i])) return false;
+    for (const Entrance& o : openings_)
+        if (dot(o.outward, ws) > 0 && o.rect.intersect(p, ws) > 0) return false;
+    return true;
 }
 
 double SunPatches::density(const Vec3& y, const Vec3& n, const Vec3& ws) const {

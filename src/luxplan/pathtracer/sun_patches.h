@@ -21,10 +21,17 @@ class SunPatches {
 public:
     SunPatches() = default;
     // Uses the room's openings that let sunlight through unscattered (open, or clear
-    // panes). Inactive without a room, or when `enabled` is false.
+    // panes). Inactive without a room, or when `enabled` is false (shadedByShell()
+    // works either way).
     SunPatches(const Scene& scene, bool enabled);
 
-    bool active() const { return !openings_.empty(); }
+    bool active() const { return enabled_ && !openings_.empty(); }
+    // True when p is strictly inside the room's box and p + t ws leaves it through the
+    // shell outside every opening that lets sunlight through, the shell being opaque:
+    // such a ray is blocked whatever the layout, with no ray traced. p is the shadow
+    // ray's origin, offset from its surface: a vertex on the shell's outer face (a path
+    // that went out of a window) then lies outside the box.
+    bool shadedByShell(const Vec3& p, const Vec3& ws) const;
     // The area of the openings that face `ws` (towards the sun) projected across it.
     double projectedArea(const Vec3& ws) const;
     // A point on an opening facing `ws`, uniform in projected area (the opening chosen
@@ -51,6 +58,9 @@ private:
     };
     std::vector<Entrance> openings_;
     Bounds3 room_;
+    Bounds3 shell_;  // the room's box itself
+    bool enabled_ = false;
+    bool opaqueShell_ = false;
 };
 
 }  // namespace luxplan
