@@ -403,5 +403,41 @@ TEST(SunDiskIndex, TheConeAroundAPeriodsDisksMissesNone) {
     EXPECT_GT(hits, 13 * 16 * 2);
 }
 
+// A sun sample's radiance and density are sunLe and sunPdf at its direction, both when
+// the disks lie apart (a morning's half-hour steps: no lookup) and when they overlap
+// (minute steps).
+TEST(SunDiskIndex, SamplesCarryTheRadianceAndDensityOfTheirDirection) {
+    DaylightParams p;
+    p.model = SkyModelType::Uniform;
+    p.luminanceNits = 0;
+    p.sun = false;
+    DaylightEnvironment sky = buildDaylight(p, Site{}, {16, 8, 1});
+    for (const double stepDeg : {3.0, 0.2}) {
+        std::vector<SunDisk> disks;
+        for (int k = 0; k < 13; ++k) {
+            SunDisk s;
+            s.altitudeDeg = 15 + stepDeg * k;
+            s.azimuthDeg = 95 + stepDeg * k / 2;
+            s.direction = horizonToScene(s.altitudeDeg, s.azimuthDeg, 0);
+            s.weight = 1.0 / 13;
+            s.normalIlluminanceLx = 60000 + 1000 * k;
+            s.luminance = s.weight * s.normalIlluminanceLx / kSunDiskProjectedSolidAngle;
+            disks.push_back(s);
+        }
+        DaylightEnvironment env(sky.skyMap(), disks, 0.0);
+        Rng rng(5);
+        int overlapping = 0;
+        for (int i = 0; i < 20000; ++i) {
+            const EnvironmentSample s = env.sampleSun(rng.uniform(), {rng.uniform(), rng.uniform()});
+            ASSERT_GT(s.pdf, 0);
+            EXPECT_EQ(s.pdf, env.sunPdf(s.wi));
+            EXPECT_EQ(s.Le, env.sunLe(s.wi));
+            overlapping += s.pdf * kSunSolidAngle > 0.1;  // more than any one disk's share
+        }
+        if (stepDeg > 1) EXPECT_EQ(overlapping, 0);
+        else EXPECT_GT(overlapping, 1000);
+    }
+}
+
 }  // namespace
 }  // namespace luxplan

@@ -133,6 +133,16 @@ void DaylightEnvironment::indexSunDisks() {
         // Wider by the disk, its rim tolerance and rounding.
         if (widest + 2 * reach < kPi / 2) sunConeCos_ = std::cos(widest + 2 * reach);
     }
+    // Apart by more than two of the widened disks (checked pair by pair up to a few
+    // thousand disks; beyond that, many steps overlap anyway).
+    sunDisksApart_ = suns_.size() <= 4096;
+    const double apartCos = std::cos(2 * reach);
+    for (size_t i = 0; i < suns_.size() && sunDisksApart_; ++i)
+        for (size_t j = i + 1; j < suns_.size(); ++j)
+            if (dot(suns_[i].direction, suns_[j].direction) >= apartCos) {
+                sunDisksApart_ = false;
+                break;
+            }
     std::vector<std::vector<uint32_t>> cells(size_t(kThetaCells) * kPhiCells);
     for (size_t k = 0; k < suns_.size(); ++k) {
         const Vec3& d = suns_[k].direction;
@@ -230,6 +240,14 @@ EnvironmentSample DaylightEnvironment::sampleSun(double uDisk, Vec2 u) const {
     if (suns_.empty()) return s;
     const size_t k = sunDistribution_.sampleDiscrete(uDisk);
     s.wi = normalize(Frame::fromNormal(suns_[k].direction).toWorld(sampleUniformCone(u, kSunCosHalfAngle)));
+    if (sunDisksApart_) {
+        // What sunAt would sum: disk k alone (the same rim test).
+        if (dot(s.wi, suns_[k].direction) >= kSunCosHalfAngle - kDiskRimTolerance) {
+            s.Le = suns_[k].radiance();
+            s.pdf = sunDistribution_.pmf(k) / kSunSolidAngle;
+        }
+        return s;
+    }
     sunAt(s.wi, s.Le, s.pdf);
     return s;
 }

@@ -146,6 +146,9 @@ private:
     // direction outside it sees no sun, found with one dot product.
     Vec3 sunConeAxis_;
     double sunConeCos_ = 1;
+    // No two disks reach each other (steps apart by more than a disk): a direction drawn
+    // in one disk lies in it alone, so sampleSun needs no lookup.
+    bool sunDisksApart_ = false;
     void indexSunDisks();
     template <class F> void forEachSunDiskAt(const Vec3& w, F&& f) const;
     double skyIntegral_ = 0, sunIntegral_ = 0, skyHorizontal_ = 0, sunHorizontal_ = 0;
