@@ -18,6 +18,31 @@ struct Rect3 {
     double intersect(const Vec3& p, const Vec3& w) const;
 };
 
+// A rectangle that many rays are tested against (window panes, portals): its normal and
+// squared edge lengths computed once, the crossing then the same arithmetic as
+// Rect3::intersect's.
+class RectTarget {
+public:
+    RectTarget() = default;
+    explicit RectTarget(const Rect3& r)
+        : rect_(r), n_(cross(r.edgeU, r.edgeV)), uu_(dot(r.edgeU, r.edgeU)), vv_(dot(r.edgeV, r.edgeV)) {}
+    const Rect3& rect() const { return rect_; }
+    double intersect(const Vec3& p, const Vec3& w) const {
+        const double denom = dot(n_, w);
+        if (denom == 0) return -1;
+        const double t = dot(n_, rect_.corner - p) / denom;
+        if (t <= 0) return -1;
+        const Vec3 q = p + w * t - rect_.corner;
+        const double a = dot(q, rect_.edgeU) / uu_, b = dot(q, rect_.edgeV) / vv_;
+        return (a >= 0 && a <= 1 && b >= 0 && b <= 1) ? t : -1;
+    }
+
+private:
+    Rect3 rect_;
+    Vec3 n_;
+    double uu_ = 1, vv_ = 1;
+};
+
 // The spherical rectangle of `rect` seen from `origin`.
 class SphericalRect {
 public:

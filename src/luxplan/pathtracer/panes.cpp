@@ -14,7 +14,7 @@ OpeningPanes::OpeningPanes(const Scene& scene) {
         Bsdf bsdf = makeBsdf(scene.materials[*o.material]);
         if (!bsdf.passesStraight()) continue;  // a closed opening: opaque, Embree's job
         const Rect3 rect = openingQuad(room->box, o);
-        panes_.push_back({rect, rect.normal(), std::move(bsdf)});
+        panes_.push_back({RectTarget(rect), rect.normal(), std::move(bsdf)});
     }
 }
 

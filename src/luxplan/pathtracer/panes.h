@@ -25,7 +25,7 @@ public:
 
 private:
     struct Pane {
-        Rect3 rect;
+        RectTarget rect;
         Vec3 normal;  // unit
         Bsdf bsdf;
     };

@@ -23,6 +23,7 @@ SkyLight::SkyLight(const Scene& scene, const DaylightEnvironment* daylight, bool
             // by scattering at the pane: BSDF sampling finds it).
             if (o.material && !makeBsdf(scene.materials[*o.material]).passesStraight()) continue;
             openings_.push_back(openingQuad(room->box, o));
+            targets_.emplace_back(openings_.back());
             openingNormals_.push_back(cross(openings_.back().edgeU, openings_.back().edgeV));
             openingAreas_.push_back(length(openingNormals_.back()));
             openingUnitNormals_.push_back(openingNormals_.back() / openingAreas_.back());
@@ -77,7 +78,7 @@ double SkyLight::pdf(const View& view, const Vec3& p, const Vec3& w) const {
     if (view.weightTotal <= 0) return 0;
     for (int i = 0; i < view.count; ++i) {
         if (!(view.weight[i] > 0)) continue;
-        const double t = openings_[size_t(i)].intersect(p, w);
+        const double t = targets_[size_t(i)].intersect(p, w);
         if (t <= 0) continue;
         const double chosen = view.weight[i] / view.weightTotal;
         if (!view.spherical[i]) {

@@ -60,6 +60,7 @@ private:
     const DaylightEnvironment* daylight_ = nullptr;
     bool portals_ = true;
     std::vector<Rect3> openings_;
+    std::vector<RectTarget> targets_;  // the same, for crossings
     std::vector<Vec3> openingNormals_;  // edgeU x edgeV: the opening's normal times its area
     std::vector<Vec3> openingUnitNormals_;
     std::vector<double> openingAreas_;

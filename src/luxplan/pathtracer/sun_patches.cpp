@@ -28,7 +28,7 @@ SunPatches::SunPatches(const Scene& scene, bool enabled) : enabled_(enabled) {
         const Rect3 rect = openingQuad(room->box, o);
         Vec3 n = rect.normal();
         if (dot(n, rect.center() - centre) < 0) n = -n;
-        openings_.push_back({rect, n, rect.area()});
+        openings_.push_back({RectTarget(rect), n, rect.area()});
     }
 }
 
@@ -46,7 +46,7 @@ bool SunPatches::sampleEntry(const Vec3& ws, Vec2 u, Vec3& entry) const {
         const double w = o.area * std::max(0.0, dot(o.outward, ws));
         if (w > 0 && target < acc + w) {
             const double x = std::min((target - acc) / w, 1 - 1e-12);
-            entry = o.rect.corner + o.rect.edgeU * x + o.rect.edgeV * u.y;
+            entry = o.target.rect().corner + o.target.rect().edgeU * x + o.target.rect().edgeV * u.y;
             return true;
         }
         acc += w;
@@ -68,14 +68,14 @@ bool SunPatches::shadedByShell(const Vec3& p, const Vec3& ws) const {
     for (int i = 0; i < 3; ++i)
         if (!(p[i] > shell_.lo[i] && p[i] < shell_.hi[i])) return false;
     for (const Entrance& o : openings_)
-        if (dot(o.outward, ws) > 0 && o.rect.intersect(p, ws) > 0) return false;
+        if (dot(o.outward, ws) > 0 && o.target.intersect(p, ws) > 0) return false;
     return true;
 }
 
 double SunPatches::density(const Vec3& y, const Vec3& n, const Vec3& ws) const {
     if (!room_.contains(y)) return 0;
     for (const Entrance& o : openings_) {
-        if (dot(o.outward, ws) <= 0 || o.rect.intersect(y, ws) <= 0) continue;
+        if (dot(o.outward, ws) <= 0 || o.target.intersect(y, ws) <= 0) continue;
         // From inside the (convex) room a ray leaves through one opening at most.
         return std::abs(dot(n, ws)) / projectedArea(ws);
     }

@@ -52,7 +52,7 @@ public:
 
 private:
     struct Entrance {
-        Rect3 rect;
+        RectTarget target;
         Vec3 outward;  // unit
         double area = 0;
     };
