@@ -1,57 +1,71 @@
 #!/usr/bin/env python3
-"""Empirical error per ray of the path sampling: scrambled Sobol (the default) against
-PCG (`--sampling random`), on every bundled scene.
+"""Empirical error per ray of two path estimators, on every bundled scene: scrambled
+Sobol (the default) against PCG (`--sampling random`), or, with `--sun-patches`, the
+sunlit patches sampled (the default of `measure`) against BSDF sampling alone
+(`--sun-patches off`).
 
 A low-discrepancy estimate's reported standard error comes from the spread of its
 paths, which overstates its real error (the paths are not independent), so this
 measures the real one: the spread of each sampler's value over SEEDS seeds, for both
-samplings, at PATHS paths per point, one thread. Per scene: the rays ratio and the
-median over samplers of the variance ratio sobol/random; efficiency
-(1 / (variance x rays)) of sobol is 1 / (rays ratio x variance ratio).
+estimators, at PATHS paths per point, one thread. Per scene: the rays ratio, the time
+ratio and the median over samplers of the variance ratio first/second; efficiency
+(1 / (variance x time)) of the first is 1 / (time ratio x variance ratio).
 
-    scripts/error-per-ray.py BINARY [PATHS] [SEEDS]
+    scripts/error-per-ray.py BINARY [PATHS] [SEEDS] [--sun-patches]
 """
 import glob
 import json
 import statistics
 import subprocess
 import sys
+import time
 
 
-def measure(binary, scene, paths, seed, sampling):
-    args = [binary, "measure", scene, "--paths", str(paths), "--seed", str(seed), "--threads", "1", "--sampling", sampling]
+def measure(binary, scene, paths, seed, extra):
+    args = [binary, "measure", scene, "--paths", str(paths), "--seed", str(seed), "--threads", "1"] + extra
+    start = time.perf_counter()
     data = json.loads(subprocess.run(args + ["--json"], capture_output=True, text=True, check=True).stdout)
+    seconds = time.perf_counter() - start
     table = subprocess.run(args, capture_output=True, text=True, check=True).stdout
     rays = int(table.strip().split("\n")[-1].split(",")[1].split()[0])  # "N paths (...), R rays in S s"
-    return [s["value"] for s in data["samplers"]], [s["type"] for s in data["samplers"]], rays
+    return [s["value"] for s in data["samplers"]], [s["type"] for s in data["samplers"]], rays, seconds
 
 
 def main():
-    if len(sys.argv) < 2:
+    args = [a for a in sys.argv[1:] if not a.startswith("--")]
+    if not args:
         sys.exit(__doc__)
-    binary = sys.argv[1]
-    paths = int(sys.argv[2]) if len(sys.argv) > 2 else 64
-    seeds = int(sys.argv[3]) if len(sys.argv) > 3 else 8
+    binary = args[0]
+    paths = int(args[1]) if len(args) > 1 else 64
+    seeds = int(args[2]) if len(args) > 2 else 8
+    if "--sun-patches" in sys.argv:
+        names, options = ("patches", "off"), {"patches": ["--sun-patches", "on"], "off": ["--sun-patches", "off"]}
+    else:
+        names, options = ("sobol", "random"), {"sobol": ["--sampling", "sobol"], "random": ["--sampling", "random"]}
+    first, second = names
     scenes = ["scenes/demo/office.json"] + sorted(s for s in glob.glob("scenes/paper/*.json") if not s.endswith("-layout.json"))
     print(f"{paths} paths per point, {seeds} seeds")
-    print("| scene | rays sobol/random | directional: median var sobol/random | others: median var sobol/random |")
-    print("|---|---|---|---|")
+    print(f"| scene | rays {first}/{second} | time {first}/{second} | directional: median var {first}/{second} "
+          f"| others: median var {first}/{second} |")
+    print("|---|---|---|---|---|")
     all_dir, all_other = [], []
     for scene in scenes:
-        runs = {m: [measure(binary, scene, paths, seed, m) for seed in range(1, seeds + 1)] for m in ("sobol", "random")}
-        types = runs["sobol"][0][1]
+        runs = {m: [measure(binary, scene, paths, seed, options[m]) for seed in range(1, seeds + 1)] for m in names}
+        types = runs[first][0][1]
         rays = {m: sum(r[2] for r in runs[m]) for m in runs}
+        seconds = {m: sum(r[3] for r in runs[m]) for m in runs}
         directional, others = [], []
         for k, kind in enumerate(types):
             var = {m: statistics.variance([r[0][k] for r in runs[m]]) for m in runs}
-            if var["random"] > 0 and var["sobol"] >= 0:
-                (directional if kind == "directional" else others).append(var["sobol"] / var["random"])
+            if var[second] > 0 and var[first] >= 0:
+                (directional if kind == "directional" else others).append(var[first] / var[second])
         all_dir += directional
         all_other += others
         cell = lambda v: f"{statistics.median(v):.2f} ({len(v)})" if v else "-"
-        print(f"| {scene} | {rays['sobol'] / rays['random']:.3f} | {cell(directional)} | {cell(others)} |")
+        print(f"| {scene} | {rays[first] / rays[second]:.3f} | {seconds[first] / seconds[second]:.2f} "
+              f"| {cell(directional)} | {cell(others)} |")
     cell = lambda v: f"{statistics.median(v):.2f} ({len(v)})" if v else "-"
-    print(f"| all | | {cell(all_dir)} | {cell(all_other)} |")
+    print(f"| all | | | {cell(all_dir)} | {cell(all_other)} |")
 
 
 if __name__ == "__main__":
