@@ -95,7 +95,7 @@ void runMeasure(const MeasureArgs& args) {
         }
         nlohmann::json out = {{"samplers", samplers},
                               {"paths_per_point", options.pathsPerPoint},
-                              {"adaptive", options.adaptive}, {"sampling", args.sampling}, {"sun_patches", tracing.sunPatches},
+                              {"adaptive", options.adaptive}, {"sampling", args.sampling}, {"sun_patches", tracer.samplesSunPatches()},
                               {"seed", options.seed},
                               {"L", lighting}, {"L_std_error", lightingError},
                               {"G", geometry.cost}, {"C", cost}, {"C_std_error", w * lightingError},

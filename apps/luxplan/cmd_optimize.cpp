@@ -220,6 +220,7 @@ int runOptimize(const OptimizeArgs& args) {
     if (!args.noPictures) {
         OutputOptions pictures;
         pictures.seed = options.seed;
+        pictures.tracing.sunPatches = args.sunPatches != "off";
         pictures.initialLabel = "start";
         // A (second) stop signal from now on skips the pictures still to make.
         interrupted.store(false);
@@ -266,10 +267,10 @@ void registerOptimizeCommand(CLI::App& app, int& threads) {
     cmd->add_option("--sampling", args->sampling, "Random numbers of the paths' first vertices: sobol (default) or random")
         ->check(CLI::IsMember({"sobol", "random"}));
     cmd->add_option("--sun-patches", args->sunPatches,
-                    "Sample the room's sunlit patches at every surface a path meets: in the re-measured candidates and "
-                    "the report only (report, default: in the search they cost more rays than their lower noise "
-                    "saves), everywhere (on) or nowhere (off). The values are the same, with less noise where "
-                    "sunlight bounces")
+                    "Sample the room's sunlit patches at every surface a path meets: in the re-measured candidates, "
+                    "the report and the pictures only (report, default: in the search they cost more rays than their "
+                    "lower noise saves), everywhere (on) or nowhere (off). The values are the same, with less noise "
+                    "where sunlight bounces")
         ->check(CLI::IsMember({"on", "off", "report"}));
     cmd->add_flag("--full-evaluation", args->fullEvaluation,
                   "Trace every path of every evaluated layout (default: only the paths a move can change are "

@@ -43,6 +43,10 @@ TEST(SunPatches, LeaveEveryEstimateAsItWasWithLessNoise) {
                             .sampler("back", planarSampler({3, 3.3, 0.8}, {0, 0, 1}, {0, 1, 0}, {2, 0.6}, {4, 2}), 0)
                             .sampler("wall", planarSampler({1, 3.99, 1.5}, {0, -1, 0}, {0, 0, 1}, {0.1, 0.1}, {1, 1}), 0)
                             .sampler("desk", planarSampler({2.6, 1.6, 0.76}, {0, 0, 1}, {0, 1, 0}, {1, 0.6}, {2, 2}), 0)
+                            // In the desk's shadow: lit by its underside, which the sunlit
+                            // floor 0.7 m below lights (a connection that must not meet
+                            // the floor it connects to).
+                            .sampler("under", planarSampler({2.6, 1.6, 0.01}, {0, 0, 1}, {0, 1, 0}, {0.6, 0.3}, {2, 1}), 0)
                             .build();
     PathTracerOptions without;
     without.sunPatches = false;

@@ -138,6 +138,11 @@ TEST(SunPatches, TheShellShadesWhatCannotLeaveThroughAnOpening) {
                             .window(Wall::South, 1, 2, 1, 1)
                             .build();
     EXPECT_FALSE(SunPatches(paper, false).shadedByShell({2, 3.5, 0.2}, ws));
+    // An invisible room only collides: no shell in the ray-tracing scene.
+    Scene invisible = twoWindowRoom();
+    for (auto& g : invisible.geometry)
+        if (g.room) g.invisible = true;
+    EXPECT_FALSE(SunPatches(invisible, false).shadedByShell({2, 3.5, 0.2}, ws));
 }
 
 // What it declares shaded, Embree finds blocked (random points and directions).

@@ -63,7 +63,7 @@ RunOutputs writeRunOutputs(const std::filesystem::path& folder, const Scene& sce
     bool grids = room && (options.plan || compare);
 
     EmbreeScene rt(scene, finalLayout);
-    PathTracer tracer(rt, daylight);
+    PathTracer tracer(rt, daylight, options.tracing);
     MeasureOptions measure;
     measure.pathsPerPoint = options.samplerPaths;
     measure.seed = options.seed;
@@ -102,7 +102,7 @@ RunOutputs writeRunOutputs(const std::filesystem::path& folder, const Scene& sce
             instant.from = from.plusMinutes(minutes);
             instant.to.reset();
             const DaylightEnvironment environment = buildDaylight(instant, scene.site);
-            PathTracer at(rt, &environment);
+            PathTracer at(rt, &environment, options.tracing);
             hours.push_back({instant.from->str(), measureSamplers(at, hourly).samplers});
         }
         timed("hour by hour");

@@ -41,6 +41,7 @@ struct OutputOptions {
     double workPlaneHeight = 0.8;   // m above the floor
     int samplerPaths = 256;         // per sampler point, where a layout's samplers must be measured
     uint64_t seed = 1;
+    PathTracerOptions tracing;      // every path traced for the outputs
     std::string title;              // report.html's title; empty: "luxplan: <scene name>"
     std::string initialLabel = "initial", finalLabel = "optimized";
     // Once true (a stop signal), the steps not yet begun are skipped.

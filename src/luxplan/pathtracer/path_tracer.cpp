@@ -230,8 +230,13 @@ double PathTracer::sample(const Sensor& sensor, PathSamples& samples, RayStats& 
             patch.lit = patch.toSun > 0;
             if (!patch.lit) return;
         }
-        // The connection stops short of y's surface, which it would otherwise meet.
-        const double connection = transmittance(spawn(v, wi), wi, dist * (1 - 1e-4), -1, stats);
+        // Between the two surfaces, each end offset from its own: a ray from x's offset
+        // point to y itself would meet y's surface first when x is near it.
+        const Vec3 from = spawn(v, wi), to = spawn(y, -wi);
+        const Vec3 span = to - from;
+        const double gap = std::sqrt(dot(span, span));
+        if (!(gap > 0) || dot(span, wi) <= 0) return;
+        const double connection = transmittance(from, span / gap, gap, -1, stats);
         if (connection <= 0) return;
         const Vec3 contribution = throughput * fx * fy * patch.sun.Le * (cosY / d2 * connection * patch.toSun * w / (pSun * b));
         if (stats.budget) stats.budget->credit(LightBudget::kSun, depth, luminance(contribution));

@@ -115,6 +115,9 @@ public:
     const EmbreeScene& rayTracer() const { return rt_; }
     const EmitterSet& emitters() const { return emitters_; }
     const DaylightEnvironment* daylight() const { return daylight_; }  // null at night
+    // Whether paths sample the sunlit patches (asked for, and the scene has a sun, a room
+    // with an opening it shines through, and no glass furniture).
+    bool samplesSunPatches() const { return patches_.active(); }
 
     // Transmittance along p + t w up to tMax (the distance to the sampled point on
     // emitter `target`, or infinity for sun and sky): products of pane transmittances, 0

@@ -12,8 +12,11 @@ SunPatches::SunPatches(const Scene& scene, bool enabled) : enabled_(enabled) {
     const RoomShell* room = scene.room();
     if (!room) return;
     shell_ = room->box;
-    // A translucent or glass wall lets light through where no opening is.
+    // A translucent or glass wall lets light through where no opening is, and an
+    // invisible room (one that only collides) has no shell in the ray-tracing scene.
     opaqueShell_ = true;
+    for (const auto& g : scene.geometry)
+        if (g.room && g.invisible) opaqueShell_ = false;
     for (uint32_t m : {room->floorMaterial, room->wallMaterial, room->ceilingMaterial}) {
         const Bsdf bsdf = makeBsdf(scene.materials[m]);
         if (bsdf.passesStraight() || bsdf.hasDiffuseTransmission()) opaqueShell_ = false;
