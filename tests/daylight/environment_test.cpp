@@ -11,6 +11,19 @@
 namespace luxplan {
 namespace {
 
+// A sun disk at (altitude, azimuth) with its share `weight` of a period and its normal
+// illuminance, as the daylight builder makes them.
+SunDisk sunDisk(double altitudeDeg, double azimuthDeg, double weight, double normalIlluminanceLx) {
+    SunDisk s;
+    s.altitudeDeg = altitudeDeg;
+    s.azimuthDeg = azimuthDeg;
+    s.direction = horizonToScene(altitudeDeg, azimuthDeg, 0);
+    s.weight = weight;
+    s.normalIlluminanceLx = normalIlluminanceLx;
+    s.luminance = weight * normalIlluminanceLx / kSunDiskProjectedSolidAngle;
+    return s;
+}
+
 DaylightEnvironment uniformSky(double nits, double rho, int w = 128, int h = 64) {
     DaylightParams p;
     p.model = SkyModelType::Uniform;
@@ -171,14 +184,7 @@ DaylightEnvironment threeSuns() {
     DaylightEnvironment sky = buildDaylight(p, Site{}, {16, 8, 1});
     std::vector<SunDisk> disks;
     auto disk = [&](double alt, double az, double en) {
-        SunDisk s;
-        s.altitudeDeg = alt;
-        s.azimuthDeg = az;
-        s.direction = horizonToScene(alt, az, 0);
-        s.weight = 1.0 / 3;
-        s.normalIlluminanceLx = en;
-        s.luminance = s.weight * en / kSunDiskProjectedSolidAngle;
-        disks.push_back(s);
+        disks.push_back(sunDisk(alt, az, 1.0 / 3, en));
     };
     disk(40.0, 180.0, 90000);
     disk(40.2, 180.1, 60000);  // overlaps the first
@@ -317,14 +323,9 @@ TEST(SunDiskIndex, FindsWhatAScanOfEveryDiskFinds) {
     std::vector<SunDisk> disks;
     Rng rng(7);
     for (int k = 0; k < 600; ++k) {
-        SunDisk s;
-        s.altitudeDeg = k < 500 ? 90 * rng.uniform() : 89 + rng.uniform();  // the last 100 at the zenith
-        s.azimuthDeg = 360 * rng.uniform();
-        s.direction = horizonToScene(s.altitudeDeg, s.azimuthDeg, 0);
-        s.weight = 1.0 / 600;
-        s.normalIlluminanceLx = 50000 + 100 * k;
-        s.luminance = s.weight * s.normalIlluminanceLx / kSunDiskProjectedSolidAngle;
-        disks.push_back(s);
+        const double altitude = k < 500 ? 90 * rng.uniform() : 89 + rng.uniform();  // the last 100 at the zenith
+        const double azimuth = 360 * rng.uniform();
+        disks.push_back(sunDisk(altitude, azimuth, 1.0 / 600, 50000 + 100 * k));
     }
     DaylightEnvironment env(sky.skyMap(), disks, 0.0);
     const double cosHalf = std::cos(radians(kSunAngularDiameterDeg / 2));
@@ -370,14 +371,7 @@ TEST(SunDiskIndex, TheConeAroundAPeriodsDisksMissesNone) {
     DaylightEnvironment sky = buildDaylight(p, Site{}, {16, 8, 1});
     std::vector<SunDisk> disks;
     for (int k = 0; k < 13; ++k) {  // a morning: 15 to 55 degrees high, east to south-east
-        SunDisk s;
-        s.altitudeDeg = 15 + 40.0 * k / 12;
-        s.azimuthDeg = 95 + 45.0 * k / 12;
-        s.direction = horizonToScene(s.altitudeDeg, s.azimuthDeg, 0);
-        s.weight = 1.0 / 13;
-        s.normalIlluminanceLx = 60000 + 1000 * k;
-        s.luminance = s.weight * s.normalIlluminanceLx / kSunDiskProjectedSolidAngle;
-        disks.push_back(s);
+        disks.push_back(sunDisk(15 + 40.0 * k / 12, 95 + 45.0 * k / 12, 1.0 / 13, 60000 + 1000 * k));
     }
     DaylightEnvironment env(sky.skyMap(), disks, 0.0);
     const double cosHalf = std::cos(radians(kSunAngularDiameterDeg / 2));
@@ -415,14 +409,7 @@ TEST(SunDiskIndex, SamplesCarryTheRadianceAndDensityOfTheirDirection) {
     for (const double stepDeg : {3.0, 0.2}) {
         std::vector<SunDisk> disks;
         for (int k = 0; k < 13; ++k) {
-            SunDisk s;
-            s.altitudeDeg = 15 + stepDeg * k;
-            s.azimuthDeg = 95 + stepDeg * k / 2;
-            s.direction = horizonToScene(s.altitudeDeg, s.azimuthDeg, 0);
-            s.weight = 1.0 / 13;
-            s.normalIlluminanceLx = 60000 + 1000 * k;
-            s.luminance = s.weight * s.normalIlluminanceLx / kSunDiskProjectedSolidAngle;
-            disks.push_back(s);
+            disks.push_back(sunDisk(15 + stepDeg * k, 95 + stepDeg * k / 2, 1.0 / 13, 60000 + 1000 * k));
         }
         DaylightEnvironment env(sky.skyMap(), disks, 0.0);
         Rng rng(5);

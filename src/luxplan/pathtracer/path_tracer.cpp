@@ -255,10 +255,11 @@ double PathTracer::sample(const Sensor& sensor, PathSamples& samples, RayStats& 
                 if (maxComponent(f) <= 0) return;
                 double T = transmittance(spawn(v, wi), wi, v.isSurface() ? maxT : maxT - kRayEpsilon, target, stats);
                 if (T <= 0) return;
-                double w = powerHeuristic(1, lightPdf, 1, pdfOf(v, wi));
+                const double bsdfPdf = pdfOf(v, wi);
+                double w = powerHeuristic(1, lightPdf, 1, bsdfPdf);
                 if (source == LightBudget::kSun && arrivalDensity > 0) {
                     const double b = patchDensity(arrivalFrom, v.p, v.ng, wi);
-                    if (b > 0) w = sunWeight(arrivalDensity, lightPdf, arrivalDensity, b, lightPdf, pdfOf(v, wi));
+                    if (b > 0) w = sunWeight(arrivalDensity, lightPdf, arrivalDensity, b, lightPdf, bsdfPdf);
                 }
                 Vec3 contribution = throughput * f * Le * (T * w / lightPdf);
                 if (stats.budget) stats.budget->credit(source, depth, luminance(contribution));

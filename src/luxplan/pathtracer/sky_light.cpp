@@ -22,11 +22,10 @@ SkyLight::SkyLight(const Scene& scene, const DaylightEnvironment* daylight, bool
             // a translucent one no sky seen straight through it (its light reaches the room
             // by scattering at the pane: BSDF sampling finds it).
             if (o.material && !makeBsdf(scene.materials[*o.material]).passesStraight()) continue;
-            openings_.push_back(openingQuad(room->box, o));
-            targets_.emplace_back(openings_.back());
-            openingNormals_.push_back(cross(openings_.back().edgeU, openings_.back().edgeV));
-            openingAreas_.push_back(length(openingNormals_.back()));
-            openingUnitNormals_.push_back(openingNormals_.back() / openingAreas_.back());
+            const Rect3 r = openingQuad(room->box, o);
+            const Vec3 areaNormal = cross(r.edgeU, r.edgeV);
+            const double area = length(areaNormal);
+            openings_.push_back({RectTarget(r), areaNormal, areaNormal / area, area});
         }
     }
 }
@@ -49,13 +48,14 @@ void SkyLight::compute(const Vec3& p, View& view, bool buildAll) const {
     view.count = 0;
     view.weightTotal = 0;
     if (!view.active) return;
-    for (const Rect3& r : openings_) {
+    for (const Portal& portal : openings_) {
+        const Rect3& r = portal.target.rect();
         if (view.count == kMaxPortals) break;
         const int i = view.count++;
         // Area x cos / d^2 = |n . d| / d^3 with n = edgeU x edgeV (|n| = area).
         Vec3 d = r.corner + (r.edgeU + r.edgeV) * 0.5 - p;
         double d2 = dot(d, d);
-        double w = d2 > 0 ? std::abs(dot(openingNormals_[size_t(i)], d)) / (d2 * std::sqrt(d2)) : 2 * kPi;
+        double w = d2 > 0 ? std::abs(dot(portal.areaNormal, d)) / (d2 * std::sqrt(d2)) : 2 * kPi;
         view.weight[i] = std::min(w, 2 * kPi);
         view.weightTotal += view.weight[i];
         view.spherical[i] = w > kSphericalAbove;
@@ -66,7 +66,7 @@ void SkyLight::compute(const Vec3& p, View& view, bool buildAll) const {
 
 const SphericalRect& SkyLight::rect(const View& view, int i) const {
     if (!view.built[i]) {
-        view.rects[i] = SphericalRect(openings_[size_t(i)], view.point);
+        view.rects[i] = SphericalRect(openings_[size_t(i)].target.rect(), view.point);
         view.built[i] = true;
     }
     return view.rects[i];
@@ -78,12 +78,12 @@ double SkyLight::pdf(const View& view, const Vec3& p, const Vec3& w) const {
     if (view.weightTotal <= 0) return 0;
     for (int i = 0; i < view.count; ++i) {
         if (!(view.weight[i] > 0)) continue;
-        const double t = targets_[size_t(i)].intersect(p, w);
+        const double t = openings_[size_t(i)].target.intersect(p, w);
         if (t <= 0) continue;
         const double chosen = view.weight[i] / view.weightTotal;
         if (!view.spherical[i]) {
-            const double cosine = std::abs(dot(openingUnitNormals_[size_t(i)], w));
-            return cosine > 0 ? chosen * t * t / (openingAreas_[size_t(i)] * cosine) : 0;
+            const double cosine = std::abs(dot(openings_[size_t(i)].normal, w));
+            return cosine > 0 ? chosen * t * t / (openings_[size_t(i)].area * cosine) : 0;
         }
         double omega = rect(view, i).solidAngle();
         return omega > 0 ? chosen / omega : 0;
@@ -109,16 +109,17 @@ EnvironmentSample SkyLight::sample(const View& view, const Vec3& p, Vec2 u) cons
     if (chosen < 0) return s;
     const double pChosen = view.weight[chosen] / view.weightTotal;
     if (!view.spherical[chosen]) {
-        const Rect3& o = openings_[size_t(chosen)];
+        const Portal& portal = openings_[size_t(chosen)];
+        const Rect3& o = portal.target.rect();
         const Vec3 d = o.corner + o.edgeU * u.x + o.edgeV * u.y - p;
         const double d2 = dot(d, d);
         if (!(d2 > 0)) return s;
         const double dist = std::sqrt(d2);
         s.wi = d / dist;
-        const double cosine = std::abs(dot(openingUnitNormals_[size_t(chosen)], s.wi));
+        const double cosine = std::abs(dot(portal.normal, s.wi));
         if (!(cosine > 0)) return s;
         s.Le = daylight_->Le(s.wi);
-        s.pdf = pChosen * d2 / (openingAreas_[size_t(chosen)] * cosine);
+        s.pdf = pChosen * d2 / (portal.area * cosine);
         return s;
     }
     const SphericalRect& r = rect(view, chosen);

@@ -59,11 +59,13 @@ private:
 
     const DaylightEnvironment* daylight_ = nullptr;
     bool portals_ = true;
-    std::vector<Rect3> openings_;
-    std::vector<RectTarget> targets_;  // the same, for crossings
-    std::vector<Vec3> openingNormals_;  // edgeU x edgeV: the opening's normal times its area
-    std::vector<Vec3> openingUnitNormals_;
-    std::vector<double> openingAreas_;
+    struct Portal {
+        RectTarget target;
+        Vec3 areaNormal;  // edgeU x edgeV: the opening's normal times its area
+        Vec3 normal;      // unit
+        double area = 0;
+    };
+    std::vector<Portal> openings_;
     Bounds3 room_;
     bool hasRoom_ = false;
     uint64_t id_ = 0;  // unique per light, keys the per-thread view cache
