@@ -30,19 +30,19 @@ Scene bulbOver(double targetMin, double targetMax, double tolerance) {
         .build();
 }
 
-MeasureResult measure(const SceneLab& lab, int paths, bool adaptive, uint64_t seed = 1) {
+MeasureResult measure(const SceneLab& lab, int paths, bool adaptive, uint64_t seed = 1, int minPaths = MeasureOptions().minPaths) {
     MeasureOptions o;
-    o.pathsPerPoint = paths, o.seed = seed, o.adaptive = adaptive;
+    o.pathsPerPoint = paths, o.seed = seed, o.adaptive = adaptive, o.minPaths = minPaths;
     return measureSamplers(*lab.tracer, o);
 }
 
-TEST(AdaptivePaths, FarFromTheBandStopsAfterOneBatchAndReadsAsAFixedRun) {
+TEST(AdaptivePaths, FarFromTheBandStopsAtTheFirstLookAndReadsAsAFixedRun) {
     SceneLab lab(bulbOver(300, 500, 100));  // E ~ 100 lx: far below
     MeasureResult a = measure(lab, 1000, true);
-    const int batch = MeasureOptions().batchPaths;
-    ASSERT_EQ(a.samplers[0].pathsPerPoint, batch);
-    EXPECT_EQ(a.paths, uint64_t(batch));
-    MeasureResult fixed = measure(lab, batch, false);
+    const int firstLook = MeasureOptions().minPaths;
+    ASSERT_EQ(a.samplers[0].pathsPerPoint, firstLook);
+    EXPECT_EQ(a.paths, uint64_t(firstLook));
+    MeasureResult fixed = measure(lab, firstLook, false);
     EXPECT_EQ(a.samplers[0].value, fixed.samplers[0].value);
     EXPECT_EQ(a.samplers[0].standardError, fixed.samplers[0].standardError);
     EXPECT_EQ(a.samplers[0].points, fixed.samplers[0].points);
@@ -84,6 +84,78 @@ TEST(AdaptivePaths, StoppingEarlyLeavesTheValueUnbiased) {
     EXPECT_LT(std::abs(bias), 4 * sd / std::sqrt(double(seeds)) + 4 * truth.standardError / E)
         << "relative bias " << bias << ", one run's relative error " << error / seeds;
     EXPECT_EQ(wrongPiece, 0);
+}
+
+// Light that only rare paths find: a black room lit by a sunbeam through a small south
+// window onto a white tile on the floor, seen by an upward point only by way of the
+// white ceiling (point -> ceiling -> tile -> sun), traced as the search traces (the
+// patches found by BSDF sampling alone). A few percent of the paths find the tile from
+// the ceiling, and they carry all of the value: 16 paths miss it often, read 0 with an
+// error of 0, and would stop inside a band the true value lies above. The first look
+// comes after minPaths (64) paths, which all miss it in about 1% of runs.
+Scene rareTile(double top, bool directional = false) {
+    DaylightParams sun;
+    sun.model = SkyModelType::Uniform;
+    sun.luminanceNits = 0;
+    sun.sunOverride = SunOverride{30, 180, 60000};
+    sun.groundReflectance = 0;
+    // The beam through the window (x 1.5-4.5, z 1.5-2.5) meets the floor at y 2.6-4.33;
+    // at the point's height it is at y 1.2-2.9.
+    return SceneBuilder()
+        .material("black", test::diffuse(0))
+        .material("white", test::diffuse(0.8))
+        .daylight(sun)
+        .room({0, 0, 0}, {6, 6, 3}, "black", "black", "white")
+        .window(Wall::South, 1.5, 3, 1.5, 1)
+        .box("tile", {1.4, 2.5, 0}, {4.6, 4.45, 0.01}, "white")
+        .sampler("p", directional ? directionalSampler({3, 5, 0.8}, {0, 0, 1}, {0, 1, 0}, 60, 2)
+                                  : planarSampler({3, 5, 0.8}, {0, 0, 1}, {0, 1, 0}, {0.001, 0.001}, {1, 1}),
+                 0, top, 0.1 * top)
+        .build();
+}
+
+TEST(AdaptivePaths, RarePathsGetAFairChanceBeforeTheFirstLook) {
+    PathTracerOptions bsdfOnly;  // as the search traces: the sunlit patches found by BSDF sampling
+    bsdfOnly.sunPatches = false;
+    const SamplerResult truth = measure(SceneLab(rareTile(1), bsdfOnly), 40000, false).samplers[0];
+    ASSERT_GT(truth.value, 20 * truth.standardError);
+    const double top = 0.7 * truth.value;  // the truth lies above the band
+    SceneLab lab(rareTile(top), bsdfOnly);
+    const int seeds = 100;
+    auto wrongStops = [&](int minPaths) {
+        int wrong = 0;
+        for (int s = 0; s < seeds; ++s) {
+            const SamplerResult r = measure(lab, 1000, true, 100 + s, minPaths).samplers[0];
+            wrong += r.pathsPerPoint < 1000 && r.value <= top;
+        }
+        return wrong;
+    };
+    const int guarded = wrongStops(MeasureOptions().minPaths), early = wrongStops(16);
+    // Measured: 1 and 37 of 100 (the chance that 64 or 16 paths all miss the tile).
+    EXPECT_LE(guarded, 8) << "of " << seeds << " runs stopped inside the band";
+    EXPECT_GE(early, 20) << "a first look at 16 paths should often stop inside the band here";
+}
+
+// The directional sampler's value is the brightest stratum's, cross-fitted over eight
+// folds, and its error the spread of the eight fold values: an interval from eight
+// values must span Student's 4.53 errors to be as sure as 3 normal ones. Looking up at
+// the ceiling the rare tile lights, its early stops land in the right piece.
+TEST(AdaptivePaths, AFoldErrorStopsOnStudentsInterval) {
+    PathTracerOptions bsdfOnly;
+    bsdfOnly.sunPatches = false;
+    const SamplerResult truth = measure(SceneLab(rareTile(1, true), bsdfOnly), 40000, false).samplers[0];
+    ASSERT_GT(truth.value, 10 * truth.standardError);
+    const double top = 0.7 * truth.value;
+    SceneLab lab(rareTile(top, true), bsdfOnly);
+    int wrong = 0, early = 0;
+    for (int s = 0; s < 100; ++s) {
+        const SamplerResult r = measure(lab, 1000, true, 300 + s).samplers[0];
+        early += r.pathsPerPoint < 1000;
+        wrong += r.pathsPerPoint < 1000 && r.value <= top;
+    }
+    // Measured: 1 of 100 runs stopped inside the band (7 on a 3-error interval).
+    EXPECT_GT(early, 50);
+    EXPECT_LE(wrong, 3) << "of 100 runs stopped inside the band";
 }
 
 }  // namespace

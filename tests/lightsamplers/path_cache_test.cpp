@@ -98,7 +98,7 @@ void runSequence(bool adaptive, int paths, int moves, uint64_t moveSeed) {
     const Scene& scene = lab.scene;
     const DaylightEnvironment* daylight = lab.daylight ? &*lab.daylight : nullptr;
     MeasureOptions o;
-    o.pathsPerPoint = paths, o.seed = 7, o.adaptive = adaptive, o.batchPaths = 8;
+    o.pathsPerPoint = paths, o.seed = 7, o.adaptive = adaptive, o.batchPaths = 8, o.minPaths = 8;
     PathCache cache(scene);
     Layout committed = initialLayout(scene);
     lab.rt->setLayout(committed);

@@ -83,13 +83,13 @@ TEST(SamplerStatistics, VolumeMinAndU0UnderAPointSource) {
 }
 
 TEST(SamplerStatistics, AdaptiveMeasurementWaitsForEveryGoal) {
-    // The mean's open target settles after one batch; a U0 goal whose bound sits on
+    // The mean's open target settles at the first look; a U0 goal whose bound sits on
     // the plane's U0 keeps the sampler tracing to the most paths.
     const auto plane = planarSampler({0, 0, 0}, {0, 0, 1}, {0, 1, 0}, {2, 1.6}, {5, 4});
     MeasureOptions o;
     o.pathsPerPoint = 160, o.adaptive = true;
     SceneLab free(lampOver(plane));
-    EXPECT_EQ(measureSamplers(*free.tracer, o).samplers[0].pathsPerPoint, o.batchPaths);
+    EXPECT_EQ(measureSamplers(*free.tracer, o).samplers[0].pathsPerPoint, o.minPaths);
     const SamplerResult exact = free.measure(160).samplers[0];
     const double u0 = pointStatistics(exact.points, exact.pointErrors).u0.value;
     SceneLab held(SceneBuilder()

@@ -31,7 +31,7 @@ Scene lampInView(std::shared_ptr<const SamplerType> sampler, double targetMax) {
 
 OptimizerResult optimize(const Scene& scene, const DaylightEnvironment* daylight = nullptr) {
     MeasureOptions measure;
-    measure.pathsPerPoint = 64, measure.seed = 3, measure.adaptive = true;
+    measure.pathsPerPoint = 64, measure.seed = 3, measure.adaptive = true, measure.minPaths = 16;
     PathTracedLighting lighting(scene, daylight, measure);
     return Optimizer(scene, optimizerOptions(scene), &lighting).run();
 }

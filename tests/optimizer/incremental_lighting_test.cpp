@@ -52,7 +52,7 @@ TEST(IncrementalLighting, TheSearchIsTheSameWithAndWithoutThePathCache) {
     const Scene scene = litStudy();
     const DaylightEnvironment daylight = buildDaylight(*scene.daylight, scene.site);
     MeasureOptions measure;
-    measure.pathsPerPoint = 48, measure.seed = 5, measure.adaptive = true;
+    measure.pathsPerPoint = 48, measure.seed = 5, measure.adaptive = true, measure.minPaths = 16;
     OptimizerResult runs[2];
     uint64_t reused[2] = {};
     for (int incremental = 0; incremental < 2; ++incremental) {

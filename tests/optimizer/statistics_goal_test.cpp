@@ -34,7 +34,7 @@ Scene lampOverTable(bool uniformityGoal) {
 
 OptimizerResult optimize(const Scene& scene) {
     MeasureOptions measure;
-    measure.pathsPerPoint = 32, measure.seed = 3, measure.adaptive = true;
+    measure.pathsPerPoint = 32, measure.seed = 3, measure.adaptive = true, measure.minPaths = 16;
     PathTracedLighting lighting(scene, nullptr, measure);
     return Optimizer(scene, optimizerOptions(scene), &lighting).run();
 }

@@ -183,6 +183,7 @@ public:
         double var = 0;
         for (size_t g = 0; g < value.size(); ++g) var += std::pow(weight[g] / total * (value[g] - r.value), 2);
         r.standardError = std::sqrt(var * double(value.size()) / double(value.size() - 1));
+        r.degreesOfFreedom = int(value.size()) - 1;
         return r;
     }
 

@@ -227,6 +227,7 @@ Estimate PlacedGlare::combine(const ItemEstimates& e) const {
         for (double v : folds) mean += v / double(folds.size());
         for (double v : folds) var += (v - mean) * (v - mean);
         r.standardError = std::sqrt(var * double(folds.size() - 1) / double(folds.size()));
+        r.degreesOfFreedom = int(folds.size()) - 1;
     }
     return r;
 }

@@ -3,6 +3,7 @@
 #include <array>
 #include <stdexcept>
 
+#include <luxplan/core/confidence.h>
 #include <luxplan/core/estimator.h>
 #include <luxplan/core/parallel.h>
 #include <luxplan/core/point_statistics.h>
@@ -102,9 +103,11 @@ bool settled(double value, double standardError, double targetMin, double target
     return hi <= targetMin || (lo >= targetMin && hi <= targetMax) || lo >= targetMax;
 }
 
-// ... for the sampler's value and each of its statistics goals.
+// ... for the sampler's value (its interval as wide as its error's degrees of freedom
+// ask: core/confidence.h) and each of its statistics goals.
 bool settled(const LightSamplerSpec& spec, const Estimate& e, const ItemEstimates& items, double z) {
-    if (!settled(e.value, e.standardError, spec.targetMin, spec.targetMax, z)) return false;
+    const double zValue = confidenceMultiplier(z, e.degreesOfFreedom);
+    if (!settled(e.value, e.standardError, spec.targetMin, spec.targetMax, zValue)) return false;
     if (spec.statistics.empty()) return true;
     std::vector<double> values, errors;
     for (int i = 0; i < items.items(); ++i) {
@@ -228,6 +231,10 @@ MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& op
             parallelFor(round.size(), [&](size_t i) { trace(round[i], from, to); });
             for (size_t index : round) traced[index] = to;
             if (!options.adaptive || to == paths) break;
+            if (to < options.minPaths) {  // no look at the data yet
+                from = to;
+                continue;
+            }
             const ItemEstimates e = estimates(k);
             if (settled(scene.samplers[k], placed[k]->combine(e), e, options.confidenceZ)) break;
             const std::vector<char> keep = placed[k]->stillNeeded(e, options.confidenceZ);

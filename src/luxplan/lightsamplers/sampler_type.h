@@ -24,10 +24,12 @@ class PathTracer;
 class PathSamples;
 struct RayStats;
 
-// A value and its standard error.
+// A value and its standard error. An error estimated from the spread of a few values
+// (folds) has that many less one degrees of freedom; 0 means many (from the paths).
 struct Estimate {
     double value = 0;
     double standardError = 0;
+    int degreesOfFreedom = 0;
 };
 
 // What one path adds to a sampler's items: to the item it was traced for and, for a
