@@ -33,7 +33,7 @@ inline double confidenceMultiplier(double z, int dof) {
     if (dof <= 0) return z;
     const double level = std::erf(z / std::sqrt(2.0));  // P(|Z| <= z)
     double lo = z, hi = z;
-    while (studentTCentral(hi, dof) < level) hi *= 2;
+    for (int i = 0; i < 64 && studentTCentral(hi, dof) < level; ++i) hi *= 2;  // bounded where level rounds to 1
     for (int i = 0; i < 100 && hi - lo > 1e-9 * hi; ++i) {
         const double mid = 0.5 * (lo + hi);
         (studentTCentral(mid, dof) < level ? lo : hi) = mid;
