@@ -1,6 +1,8 @@
 #include <luxplan/lightsamplers/light_samplers.h>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <stdexcept>
 
 #include <luxplan/core/confidence.h>
@@ -122,6 +124,20 @@ bool settled(const LightSamplerSpec& spec, const Estimate& e, const ItemEstimate
     return true;
 }
 
+// Where the next look at a sampler that is not settled should come: where its interval,
+// narrowing as 1 / sqrt(paths), would clear the nearest bound of its band; at least a
+// round on and at most a quarter more paths (a wider step overshoots the stop). Fewer
+// looks cost fewer estimates and give the data fewer chances to stop by luck.
+int nextLook(const LightSamplerSpec& spec, const Estimate& value, int paths, int batch, double z) {
+    double gap = kInf;
+    for (double bound : {spec.targetMin, spec.targetMax})
+        if (std::isfinite(bound)) gap = std::min(gap, std::abs(value.value - bound));
+    const double width = confidenceMultiplier(z, value.degreesOfFreedom) * value.standardError;
+    double want = gap > 0 && gap < kInf ? paths * (width / gap) * (width / gap) : 2.0 * paths;
+    want = std::clamp(want, double(paths + batch), std::max(double(paths + batch), 1.25 * paths));
+    return int(std::ceil(want / batch)) * batch;
+}
+
 }  // namespace
 
 MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& options, PathCache* cache) {
@@ -215,15 +231,17 @@ MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& op
         return e;
     };
 
-    // Rounds of options.batchPaths paths per point (one round of all when not
-    // adaptive); a sampler stops once its value is settled, and an item once its
-    // sampler no longer needs it. A sampler's stop reads only its own items, so each
-    // runs its own rounds, all at once: none waits for the others' rounds.
+    // Rounds of paths per point up to the next look (one round of all when not
+    // adaptive: MeasureOptions); a sampler stops once its value is settled, and an item
+    // once its sampler no longer needs it. A sampler's stop reads only its own items, so
+    // each runs its own rounds, all at once: none waits for the others' rounds.
     std::vector<int> traced(work.size(), 0);
     std::vector<char> needed(work.size(), 1);
     parallelFor(samplers, [&](size_t k) {
+        const int batch = std::max(1, options.batchPaths);
+        int look = std::max(options.minPaths, batch);  // paths per point at the next look
         for (int from = 0; from < paths;) {
-            const int to = options.adaptive ? std::min(paths, from + std::max(1, options.batchPaths)) : paths;
+            const int to = !options.adaptive ? paths : std::min(paths, std::max(from + batch, look));
             std::vector<size_t> round;
             for (size_t index = firstWork[k]; index < firstWork[k + 1]; ++index)
                 if (needed[index]) round.push_back(index);
@@ -231,14 +249,12 @@ MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& op
             parallelFor(round.size(), [&](size_t i) { trace(round[i], from, to); });
             for (size_t index : round) traced[index] = to;
             if (!options.adaptive || to == paths) break;
-            if (to < options.minPaths) {  // no look at the data yet
-                from = to;
-                continue;
-            }
             const ItemEstimates e = estimates(k);
-            if (settled(scene.samplers[k], placed[k]->combine(e), e, options.confidenceZ)) break;
+            const Estimate value = placed[k]->combine(e);
+            if (settled(scene.samplers[k], value, e, options.confidenceZ)) break;
             const std::vector<char> keep = placed[k]->stillNeeded(e, options.confidenceZ);
             for (size_t i = 0; i < keep.size(); ++i) needed[firstWork[k] + i] = needed[firstWork[k] + i] && keep[i];
+            look = nextLook(scene.samplers[k], value, to, batch, options.confidenceZ);
             from = to;
         }
     });

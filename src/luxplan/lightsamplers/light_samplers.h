@@ -21,18 +21,20 @@ std::unique_ptr<PlacedSampler> placeSampler(const LightSamplerSpec& sampler, con
 struct MeasureOptions {
     int pathsPerPoint = 1000;  // exactly, or at most when adaptive
     uint64_t seed = 1;
-    // Adaptive: paths are traced in rounds of batchPaths per point, and a sampler
-    // stops after a round once value +- confidenceZ standard errors lies inside one
-    // linear piece of its penalty (below, inside or above its target band), and so
-    // does each statistics goal's statistic: more paths would then only refine
-    // penalties that are linear in the values. A stopped
-    // sampler reads exactly as a fixed run of the paths it traced.
+    // Adaptive: a sampler looks at its paths from time to time and stops once value +-
+    // confidenceZ standard errors lies inside one linear piece of its penalty (below,
+    // inside or above its target band), and so does each statistics goal's statistic:
+    // more paths would then only refine penalties that are linear in the values. A
+    // stopped sampler reads exactly as a fixed run of the paths it traced.
     // The first look comes after minPaths paths per point: an interval from fewer paths
     // is not to be trusted where rare paths carry much of the light (a sunlit patch seen
     // after a bounce or two: in the office's glare samplers 1% of the paths carry 30-50%
     // of the value, and 16 paths that missed them read 10x low with a small error;
     // docs/light-transport.md). A value whose error comes from a few fold values
     // (Estimate::degreesOfFreedom) is settled on Student's interval at the same level.
+    // Each later look comes where the interval, narrowing as 1 / sqrt(paths), would
+    // clear the band's nearest bound: at least batchPaths and at most a quarter more
+    // paths per point on.
     bool adaptive = false;
     int batchPaths = 16;
     int minPaths = 64;
