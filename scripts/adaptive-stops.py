@@ -9,9 +9,10 @@ most, 1000 paths per point (`measure --adaptive`, the patches as the search trac
 them: off unless asked), are compared with it: an early stop (fewer than 1000 paths)
 whose value lies in another piece than the truth's (below, inside or above the target
 band) is a wrong stop. Also reported: values beyond 3 of their standard errors from
-the truth (4.53 for a directional sampler's fold error, Student's t with 7 degrees of
-freedom) and the paths a run traced.
+the truth (4.53 for an error from eight fold values, Student's t with 7 degrees of
+freedom: directional, ugr and dgp samplers) and the paths a run traced.
 """
+import argparse
 import json
 import statistics
 import subprocess
@@ -32,31 +33,36 @@ def piece(value, target):
 
 
 def main():
-    args = [a for a in sys.argv[1:] if not a.startswith("--")]
-    patches = "on" if "--sun-patches" in sys.argv and sys.argv[sys.argv.index("--sun-patches") + 1] == "on" else "off"
-    args = [a for a in args if a not in ("on", "off")]
-    binary, scene, layout = args[:3]
-    seeds = int(args[3]) if len(args) > 3 else 16
-    refs = [measure(binary, scene, layout, 16000, 1000 + s, "on", False) for s in range(4)]
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("binary")
+    parser.add_argument("scene")
+    parser.add_argument("layout")
+    parser.add_argument("seeds", nargs="?", type=int, default=16)
+    parser.add_argument("--sun-patches", choices=["on", "off"], default="off")
+    a = parser.parse_args()
+    refs = [measure(a.binary, a.scene, a.layout, 16000, 1000 + s, "on", False) for s in range(4)]
     truth = [statistics.mean(r[i]["value"] for r in refs) for i in range(len(refs[0]))]
-    runs = [measure(binary, scene, layout, 1000, s, patches, True) for s in range(1, seeds + 1)]
-    wrong_total = beyond_total = 0
+    runs = [measure(a.binary, a.scene, a.layout, 1000, s, a.sun_patches, True) for s in range(1, a.seeds + 1)]
+    wrong_total = beyond_total = early_total = 0
     paths = [0] * len(runs)
-    print(f"{'sampler':24s} {'truth':>9s} {'mean':>9s} {'paths/pt':>9s} {'beyond':>7s} {'wrong stops':>11s}")
+    print(f"{'sampler':24s} {'truth':>9s} {'mean':>9s} {'paths/pt':>9s} {'beyond':>7s} {'early':>6s} {'wrong':>6s}")
     for i, s in enumerate(refs[0]):
-        k = 4.53 if s["type"] == "directional" else 3.0
+        k = 4.53 if s["type"] in ("directional", "ugr", "dgp") else 3.0
         values = [r[i]["value"] for r in runs]
         beyond = sum(abs(r[i]["value"] - truth[i]) > k * r[i]["std_error"] for r in runs)
-        wrong = sum(r[i]["paths_per_point"] < 1000 and piece(r[i]["value"], s["target"]) != piece(truth[i], s["target"])
-                    for r in runs)
+        early = [r for r in runs if r[i]["paths_per_point"] < 1000]
+        wrong = sum(piece(r[i]["value"], s["target"]) != piece(truth[i], s["target"]) for r in early)
         for j, r in enumerate(runs):
-            paths[j] += r[i]["paths_per_point"] * (len(r[i]["points"]) if isinstance(r[i]["points"], list) else r[i]["points"])
+            points = r[i]["points"]
+            paths[j] += r[i]["paths_per_point"] * (len(points) if isinstance(points, list) else points)
         wrong_total += wrong
         beyond_total += beyond
+        early_total += len(early)
         print(f"{s['name']:24s} {truth[i]:9.1f} {statistics.mean(values):9.1f} "
-              f"{statistics.mean(r[i]['paths_per_point'] for r in runs):9.0f} {beyond:7d} {wrong:11d}")
+              f"{statistics.mean(r[i]['paths_per_point'] for r in runs):9.0f} {beyond:7d} {len(early):6d} {wrong:6d}")
     n = len(runs) * len(truth)
-    print(f"wrong stops {wrong_total} of {n}, beyond {beyond_total} of {n}, paths per run {statistics.mean(paths):.0f}")
+    print(f"{n} measurements: {early_total} early stops, {wrong_total} of them in the wrong piece; "
+          f"{beyond_total} values beyond their interval; paths per run {statistics.mean(paths):.0f}")
 
 
 if __name__ == "__main__":

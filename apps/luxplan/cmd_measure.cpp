@@ -170,7 +170,8 @@ void registerMeasureCommand(CLI::App& app, int& threads) {
                     "One instant of daylight (ISO 8601 with its UTC offset, e.g. 2026-03-20T16:30+02:00) instead of the "
                     "scene's period averaged");
     cmd->add_flag("--adaptive", args->adaptive,
-                  "Stop each sampler once value +- 3 standard errors lies inside one linear piece of its penalty "
+                  "Stop each sampler once value +- 3 standard errors (Student's interval for an error from fold "
+                  "values) lies inside one linear piece of its penalty, looking first after 64 paths per point "
                   "(--paths is then the most per point)");
     cmd->add_option("--sampling", args->sampling,
                     "Random numbers of the paths' first vertices: sobol (scrambled low-discrepancy, default) or random (PCG)")

@@ -92,7 +92,7 @@ TEST(AdaptivePaths, StoppingEarlyLeavesTheValueUnbiased) {
 // patches found by BSDF sampling alone). A few percent of the paths find the tile from
 // the ceiling, and they carry all of the value: 16 paths miss it often, read 0 with an
 // error of 0, and would stop inside a band the true value lies above. The first look
-// comes after minPaths (64) paths, which all miss it in about 1% of runs.
+// comes after minPaths (64) paths, which all miss it in about 2% of runs.
 Scene rareTile(double top, bool directional = false) {
     DaylightParams sun;
     sun.model = SkyModelType::Uniform;

@@ -126,14 +126,17 @@ bool settled(const LightSamplerSpec& spec, const Estimate& e, const ItemEstimate
 
 // Where the next look at a sampler that is not settled should come: where its interval,
 // narrowing as 1 / sqrt(paths), would clear the nearest bound of its band; at least a
-// round on and at most a quarter more paths (a wider step overshoots the stop). Fewer
-// looks cost fewer estimates and give the data fewer chances to stop by luck.
+// round on and at most about a quarter more paths (rounded up to whole rounds: a wider
+// step overshoots the stop). Fewer looks cost fewer estimates and give the data fewer
+// chances to stop by luck. A settled value whose statistics goals are not asks for the
+// next round.
 int nextLook(const LightSamplerSpec& spec, const Estimate& value, int paths, int batch, double z) {
     double gap = kInf;
     for (double bound : {spec.targetMin, spec.targetMax})
         if (std::isfinite(bound)) gap = std::min(gap, std::abs(value.value - bound));
     const double width = confidenceMultiplier(z, value.degreesOfFreedom) * value.standardError;
     double want = gap > 0 && gap < kInf ? paths * (width / gap) * (width / gap) : 2.0 * paths;
+    if (!(want == want)) want = 1.25 * paths;  // a NaN error: the widest step
     want = std::clamp(want, double(paths + batch), std::max(double(paths + batch), 1.25 * paths));
     return int(std::ceil(want / batch)) * batch;
 }

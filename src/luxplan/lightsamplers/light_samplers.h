@@ -33,8 +33,9 @@ struct MeasureOptions {
     // docs/light-transport.md). A value whose error comes from a few fold values
     // (Estimate::degreesOfFreedom) is settled on Student's interval at the same level.
     // Each later look comes where the interval, narrowing as 1 / sqrt(paths), would
-    // clear the band's nearest bound: at least batchPaths and at most a quarter more
-    // paths per point on.
+    // clear the band's nearest bound: at least batchPaths and at most about a quarter
+    // more paths per point on. With pathsPerPoint <= minPaths there is no look: the run
+    // is a fixed one.
     bool adaptive = false;
     int batchPaths = 16;
     int minPaths = 64;

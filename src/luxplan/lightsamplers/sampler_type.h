@@ -133,7 +133,7 @@ public:
     // The sampler's value from its items' estimates. Default: the mean of the items,
     // whose error is the root sum of squares over their count.
     virtual Estimate combine(const ItemEstimates& items) const;
-    // In adaptive measurement, after a round that left the value unsettled: which
+    // In adaptive measurement, at a look that left the value unsettled: which
     // items still need paths, z being the confidence multiplier. Default: all (a
     // mean needs every item).
     virtual std::vector<char> stillNeeded(const ItemEstimates& items, double z) const;
