@@ -311,15 +311,20 @@ TEST(SkyMap, PixelLookupAgreesWithPixelDirections) {
 namespace luxplan {
 namespace {
 
-// sunLe and sunPdf look disks up by direction; they must find exactly the disks a scan
-// of all of them finds: near every disk's centre and rim, near the zenith, and at
-// random, for disks spread over the sky and crowded round the zenith.
-TEST(SunDiskIndex, FindsWhatAScanOfEveryDiskFinds) {
+// A black sky and no sun of its own, for tests that set the disks themselves.
+DaylightEnvironment blackSkyWithoutSun() {
     DaylightParams p;
     p.model = SkyModelType::Uniform;
     p.luminanceNits = 0;
     p.sun = false;
-    DaylightEnvironment sky = buildDaylight(p, Site{}, {16, 8, 1});
+    return buildDaylight(p, Site{}, {16, 8, 1});
+}
+
+// sunLe and sunPdf look disks up by direction; they must find exactly the disks a scan
+// of all of them finds: near every disk's centre and rim, near the zenith, and at
+// random, for disks spread over the sky and crowded round the zenith.
+TEST(SunDiskIndex, FindsWhatAScanOfEveryDiskFinds) {
+    DaylightEnvironment sky = blackSkyWithoutSun();
     std::vector<SunDisk> disks;
     Rng rng(7);
     for (int k = 0; k < 600; ++k) {
@@ -364,11 +369,7 @@ TEST(SunDiskIndex, FindsWhatAScanOfEveryDiskFinds) {
 // most directions with one dot product. It must miss no disk: near every rim, and at
 // random over the sphere.
 TEST(SunDiskIndex, TheConeAroundAPeriodsDisksMissesNone) {
-    DaylightParams p;
-    p.model = SkyModelType::Uniform;
-    p.luminanceNits = 0;
-    p.sun = false;
-    DaylightEnvironment sky = buildDaylight(p, Site{}, {16, 8, 1});
+    DaylightEnvironment sky = blackSkyWithoutSun();
     std::vector<SunDisk> disks;
     for (int k = 0; k < 13; ++k) {  // a morning: 15 to 55 degrees high, east to south-east
         disks.push_back(sunDisk(15 + 40.0 * k / 12, 95 + 45.0 * k / 12, 1.0 / 13, 60000 + 1000 * k));
@@ -401,11 +402,7 @@ TEST(SunDiskIndex, TheConeAroundAPeriodsDisksMissesNone) {
 // the disks lie apart (a morning's half-hour steps: no lookup) and when they overlap
 // (minute steps).
 TEST(SunDiskIndex, SamplesCarryTheRadianceAndDensityOfTheirDirection) {
-    DaylightParams p;
-    p.model = SkyModelType::Uniform;
-    p.luminanceNits = 0;
-    p.sun = false;
-    DaylightEnvironment sky = buildDaylight(p, Site{}, {16, 8, 1});
+    DaylightEnvironment sky = blackSkyWithoutSun();
     for (const double stepDeg : {3.0, 0.2}) {
         std::vector<SunDisk> disks;
         for (int k = 0; k < 13; ++k) {

@@ -94,17 +94,12 @@ TEST(AdaptivePaths, StoppingEarlyLeavesTheValueUnbiased) {
 // error of 0, and would stop inside a band the true value lies above. The first look
 // comes after minPaths (64) paths, which all miss it in about 2% of runs.
 Scene rareTile(double top, bool directional = false) {
-    DaylightParams sun;
-    sun.model = SkyModelType::Uniform;
-    sun.luminanceNits = 0;
-    sun.sunOverride = SunOverride{30, 180, 60000};
-    sun.groundReflectance = 0;
     // The beam through the window (x 1.5-4.5, z 1.5-2.5) meets the floor at y 2.6-4.33;
     // at the point's height it is at y 1.2-2.9.
     return SceneBuilder()
         .material("black", test::diffuse(0))
         .material("white", test::diffuse(0.8))
-        .daylight(sun)
+        .sunAndUniformSky({30, 180, 60000}, 0)
         .room({0, 0, 0}, {6, 6, 3}, "black", "black", "white")
         .window(Wall::South, 1.5, 3, 1.5, 1)
         .box("tile", {1.4, 2.5, 0}, {4.6, 4.45, 0.01}, "white")

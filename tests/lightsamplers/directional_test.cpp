@@ -27,13 +27,8 @@ double cellArea(double fovDeg, int strata) {
 // A black room with a wide south opening and the sun at 30 deg altitude due south,
 // alone in a black sky.
 SceneBuilder sunRoom(double normalLx) {
-    DaylightParams d;
-    d.model = SkyModelType::Uniform;
-    d.luminanceNits = 0;
-    d.sunOverride = SunOverride{30, 180, normalLx};
-    d.groundReflectance = 0;
     SceneBuilder b;
-    b.material("black", test::diffuse(0)).daylight(d).room({0, 0, 0}, {6, 6, 3}, "black", "black", "black");
+    b.material("black", test::diffuse(0)).sunAndUniformSky({30, 180, normalLx}, 0).room({0, 0, 0}, {6, 6, 3}, "black", "black", "black");
     b.window(Wall::South, 1, 4, 0.3, 2.5);
     return b;
 }

@@ -22,16 +22,11 @@ const Vec3 kZ(0, 0, 1);
 // a lamp (its own entity, with a shade emitter), a chair, a cabinet; a fixed plane on
 // the floor, a fixed directional sampler looking at the window, a volume.
 Scene studio() {
-    DaylightParams d;
-    d.model = SkyModelType::Uniform;
-    d.luminanceNits = 3000;
-    d.sunOverride = SunOverride{35, 170, 50000};
-    d.groundReflectance = 0.2;
     return SceneBuilder()
         .material("wall", test::diffuse(0.6))
         .material("wood", test::diffuse(0.4))
         .material("glass", test::glass(0.8))
-        .daylight(d)
+        .sunAndUniformSky({35, 170, 50000}, 3000, 0.2)
         .room({0, 0, 0}, {6, 4, 3}, "wall", "wall", "wall")
         .window(Wall::South, 1, 2, 0.9, 1.4, "glass")
         .emitter("panel", rectEmitter({3, 2, 2.99}, {0, 0, -1}, {0, 1, 0}, {0.6, 0.6}), 3000)

@@ -21,11 +21,6 @@ using test::SceneLab;
 // so with and without it the estimates agree; where the light comes off the patches
 // (an upward plane in the back, a wall point), it has less noise.
 TEST(SunPatches, LeaveEveryEstimateAsItWasWithLessNoise) {
-    DaylightParams sun;
-    sun.model = SkyModelType::Uniform;
-    sun.luminanceNits = 2000;
-    sun.sunOverride = SunOverride{35, 160, 60000};
-    sun.groundReflectance = 0.2;
     Material translucent = test::diffuse(0.3);
     translucent.type = MaterialType::Translucent;
     translucent.diffuseTransmittance = Vec3(0.3, 0.3, 0.3);
@@ -35,7 +30,7 @@ TEST(SunPatches, LeaveEveryEstimateAsItWasWithLessNoise) {
                             .material("floor", test::diffuse(0.3))
                             .material("glass", test::glass(0.8))
                             .material("translucent", translucent)
-                            .daylight(sun)
+                            .sunAndUniformSky({35, 160, 60000}, 2000, 0.2)
                             .room({0, 0, 0}, {6, 4, 3}, "floor", "wall", "ceiling")
                             .window(Wall::South, 1, 3, 0.9, 1.5, "glass")
                             .box("desk", {2, 1.2, 0.7}, {3.2, 2, 0.75}, "wall")

@@ -130,6 +130,13 @@ SceneBuilder& SceneBuilder::uniformSky(double luminanceNits, double groundReflec
     return daylight(d);
 }
 
+SceneBuilder& SceneBuilder::sunAndUniformSky(const SunOverride& sun, double skyNits, double groundReflectance) {
+    uniformSky(skyNits, groundReflectance);
+    daylight_->sun.reset();  // the override implies a sun
+    daylight_->sunOverride = sun;
+    return *this;
+}
+
 SceneBuilder& SceneBuilder::overcastSky(double horizontalIlluminanceLx, double groundReflectance) {
     DaylightParams d;
     d.model = SkyModelType::CieOvercast;

@@ -45,6 +45,8 @@ public:
 
     SceneBuilder& daylight(const DaylightParams& d);
     SceneBuilder& uniformSky(double luminanceNits, double groundReflectance = 0);  // no sun
+    // A uniform sky and the sun where `sun` puts it.
+    SceneBuilder& sunAndUniformSky(const SunOverride& sun, double skyNits, double groundReflectance = 0);
     SceneBuilder& overcastSky(double horizontalIlluminanceLx, double groundReflectance = 0.2);
 
     // An emitter or a sampler: carried by the open entity, if any, else fixed.
