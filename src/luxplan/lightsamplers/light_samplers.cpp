@@ -105,10 +105,9 @@ bool settled(double value, double standardError, double targetMin, double target
     return hi <= targetMin || (lo >= targetMin && hi <= targetMax) || lo >= targetMax;
 }
 
-// ... for the sampler's value (its interval as wide as its error's degrees of freedom
-// ask: core/confidence.h) and each of its statistics goals.
-bool settled(const LightSamplerSpec& spec, const Estimate& e, const ItemEstimates& items, double z) {
-    const double zValue = confidenceMultiplier(z, e.degreesOfFreedom);
+// ... for the sampler's value, at zValue errors (as many as its error's degrees of
+// freedom ask: core/confidence.h), and each of its statistics goals, at z.
+bool settled(const LightSamplerSpec& spec, const Estimate& e, const ItemEstimates& items, double zValue, double z) {
     if (!settled(e.value, e.standardError, spec.targetMin, spec.targetMax, zValue)) return false;
     if (spec.statistics.empty()) return true;
     std::vector<double> values, errors;
@@ -130,11 +129,12 @@ bool settled(const LightSamplerSpec& spec, const Estimate& e, const ItemEstimate
 // step overshoots the stop). Fewer looks cost fewer estimates and give the data fewer
 // chances to stop by luck. A settled value whose statistics goals are not asks for the
 // next round.
-int nextLook(const LightSamplerSpec& spec, const Estimate& value, int paths, int batch, double z) {
+// zValue is the value's multiplier, as settled() takes it.
+int nextLook(const LightSamplerSpec& spec, const Estimate& value, int paths, int batch, double zValue) {
     double gap = kInf;
     for (double bound : {spec.targetMin, spec.targetMax})
         if (std::isfinite(bound)) gap = std::min(gap, std::abs(value.value - bound));
-    const double width = confidenceMultiplier(z, value.degreesOfFreedom) * value.standardError;
+    const double width = zValue * value.standardError;
     double want = gap > 0 && gap < kInf ? paths * (width / gap) * (width / gap) : 2.0 * paths;
     if (!(want == want)) want = 1.25 * paths;  // a NaN error: the widest step
     want = std::clamp(want, double(paths + batch), std::max(double(paths + batch), 1.25 * paths));
@@ -254,10 +254,11 @@ MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& op
             if (!options.adaptive || to == paths) break;
             const ItemEstimates e = estimates(k);
             const Estimate value = placed[k]->combine(e);
-            if (settled(scene.samplers[k], value, e, options.confidenceZ)) break;
+            const double zValue = confidenceMultiplier(options.confidenceZ, value.degreesOfFreedom);
+            if (settled(scene.samplers[k], value, e, zValue, options.confidenceZ)) break;
             const std::vector<char> keep = placed[k]->stillNeeded(e, options.confidenceZ);
             for (size_t i = 0; i < keep.size(); ++i) needed[firstWork[k] + i] = needed[firstWork[k] + i] && keep[i];
-            look = nextLook(scene.samplers[k], value, to, batch, options.confidenceZ);
+            look = nextLook(scene.samplers[k], value, to, batch, zValue);
             from = to;
         }
     });
