@@ -99,16 +99,22 @@ std::unique_ptr<PlacedSampler> placeSampler(const LightSamplerSpec& s, const Emb
 
 namespace {
 
-// value +- z standard errors lies inside one linear piece of a term's penalty.
-bool settled(double value, double standardError, double targetMin, double targetMax, double z) {
-    const double lo = value - z * standardError, hi = value + z * standardError;
+// [lo, hi] lies inside one linear piece of a term's penalty.
+bool settled(double lo, double hi, double targetMin, double targetMax) {
     return hi <= targetMin || (lo >= targetMin && hi <= targetMax) || lo >= targetMax;
+}
+// ... value +- z standard errors.
+bool settled(double value, double standardError, double targetMin, double targetMax, double z) {
+    return settled(value - z * standardError, value + z * standardError, targetMin, targetMax);
 }
 
 // ... for the sampler's value, at zValue errors (as many as its error's degrees of
-// freedom ask: core/confidence.h), and each of its statistics goals, at z.
-bool settled(const LightSamplerSpec& spec, const Estimate& e, const ItemEstimates& items, double zValue, double z) {
-    if (!settled(e.value, e.standardError, spec.targetMin, spec.targetMax, zValue)) return false;
+// freedom ask: core/confidence.h) and up to the sampler's upper end at z
+// (PlacedSampler::upperEnd), and each of its statistics goals, at z.
+bool settled(const LightSamplerSpec& spec, const PlacedSampler& sampler, const Estimate& e, const ItemEstimates& items,
+             double zValue, double z) {
+    const double hi = std::max(e.value + zValue * e.standardError, sampler.upperEnd(items, z));
+    if (!settled(e.value - zValue * e.standardError, hi, spec.targetMin, spec.targetMax)) return false;
     if (spec.statistics.empty()) return true;
     std::vector<double> values, errors;
     for (int i = 0; i < items.items(); ++i) {
@@ -255,7 +261,7 @@ MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& op
             const ItemEstimates e = estimates(k);
             const Estimate value = placed[k]->combine(e);
             const double zValue = confidenceMultiplier(options.confidenceZ, value.degreesOfFreedom);
-            if (settled(scene.samplers[k], value, e, zValue, options.confidenceZ)) break;
+            if (settled(scene.samplers[k], *placed[k], value, e, zValue, options.confidenceZ)) break;
             const std::vector<char> keep = placed[k]->stillNeeded(e, options.confidenceZ);
             for (size_t i = 0; i < keep.size(); ++i) needed[firstWork[k] + i] = needed[firstWork[k] + i] && keep[i];
             look = nextLook(scene.samplers[k], value, to, batch, zValue);

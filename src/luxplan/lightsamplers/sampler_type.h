@@ -137,6 +137,10 @@ public:
     // items still need paths, z being the confidence multiplier. Default: all (a
     // mean needs every item).
     virtual std::vector<char> stillNeeded(const ItemEstimates& items, double z) const;
+    // In adaptive measurement: how high the value may be, at z errors, where its own
+    // interval can fall short of that (a stop needs both below a bound). Default: no
+    // more than the value's interval says.
+    virtual double upperEnd(const ItemEstimates& /*items*/, double /*z*/) const { return -kInf; }
     virtual SamplerDrawing drawing() const = 0;
 };
 
