@@ -31,7 +31,9 @@ struct MeasureOptions {
     // after a bounce or two: in the office's glare samplers 1% of the paths carry 30-50%
     // of the value, and 16 paths that missed them read 10x low with a small error;
     // docs/light-transport.md). A value whose error comes from a few fold values
-    // (Estimate::degreesOfFreedom) is settled on Student's interval at the same level.
+    // (Estimate::degreesOfFreedom) is settled on Student's interval at the same level,
+    // and below a bound only when the sampler's upper end is too (PlacedSampler::upperEnd:
+    // for the directional type, every stratum's).
     // Each later look comes where the interval, narrowing as 1 / sqrt(paths), would
     // clear the band's nearest bound: at least batchPaths and at most about a quarter
     // more paths per point on. With pathsPerPoint <= minPaths there is no look: the run
