@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <utility>
+#include <vector>
 
 #include <luxplan/core/rng.h>
 #include <luxplan/emitters/emitter_shape.h>
@@ -94,6 +96,32 @@ TEST(Directional, AdaptiveMeasurementDropsStrataThatCannotHoldTheMax) {
     EXPECT_GE(r.pathsPerPoint, 4 * firstLook);
     EXPECT_EQ(m.paths, uint64_t(r.pathsPerPoint + 8 * firstLook));
     EXPECT_NEAR(r.value, expected, 4 * r.standardError + 0.01 * expected);
+}
+
+// Which strata a look leaves with paths to trace: those that may hold the max
+// (successive elimination) and, where the band starts at 0, may decide which side of
+// its top the max is on.
+TEST(Directional, AdaptiveMeasurementDropsStrataThatCannotLiftTheMaxAboveTheBand) {
+    auto placed = directionalSampler({0, 0, 0}, {0, 1, 0}, kZ, 60, 2)->place(Transform());
+    ASSERT_EQ(placed->items(), 4);
+    ItemEstimates e(4, 1);
+    // Two paths a fold: a noisy bright stratum (150, its upper end far above 100), two
+    // precise ones near 80 and a dark one.
+    const double paths[4][2] = {{0, 300}, {75, 85}, {10, 12}, {70, 90}};
+    for (int i = 0; i < 4; ++i)
+        for (int g = 0; g < ItemEstimates::kFolds; ++g)
+            for (double v : paths[i]) e.cell(i, 0, g).add(v);
+    const double z = 3;
+    auto upper = [&](int i) { return e.of(i).value + z * e.of(i).standardError; };
+    ASSERT_GT(upper(0), 100);
+    ASSERT_LT(upper(1), 100);
+    ASSERT_LT(upper(3), 100);
+    const std::vector<char> band = placed->stillNeeded(e, z, 0, 100);
+    EXPECT_EQ(band, (std::vector<char>{1, 0, 0, 0}));
+    // Every upper end below the top (a [0, 1000] band), a band that starts above 0, or
+    // none: successive elimination alone, which drops only the dark stratum.
+    for (auto [lo, hi] : {std::pair{0.0, 1000.0}, std::pair{50.0, 100.0}, std::pair{-kInf, kInf}})
+        EXPECT_EQ(placed->stillNeeded(e, z, lo, hi), (std::vector<char>{1, 1, 0, 1})) << lo << " " << hi;
 }
 
 TEST(Directional, UniformSkyThroughAnOpeningReadsItsLuminanceInEveryStratum) {

@@ -185,7 +185,7 @@ TEST(DgpSampler, AdaptiveStopsOnlyTheCellsSurelyBelowTheThreshold) {
     const double cell[4][2] = {{100, 110}, {5000, 5200}, {1900, 2050}, {0, 4000}};  // two paths each
     for (int c = 0; c < 4; ++c)
         for (int k = 0; k < 2; ++k) e.cell(PlacedGlare::kFirstCell + c, 0, k).add(cell[c][k]);
-    const std::vector<char> keep = placed->stillNeeded(e, 3);
+    const std::vector<char> keep = placed->stillNeeded(e, 3, 0, kInf);
     EXPECT_TRUE(keep[0]);  // E_v
     EXPECT_TRUE(keep[1]);  // a slot
     EXPECT_FALSE(keep[size_t(PlacedGlare::kFirstCell)]);  // 105 +- 5: surely dark

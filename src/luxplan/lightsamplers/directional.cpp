@@ -139,17 +139,25 @@ public:
 
     // Successive elimination: a stratum whose upper bound (mean + z sigma) lies below
     // another's lower bound cannot hold the max; its paths stop (its estimate keeps
-    // the paths it had, and the light samples other strata's paths send it).
-    std::vector<char> stillNeeded(const ItemEstimates& e, double z) const override {
+    // the paths it had, and the light samples other strata's paths send it). Where
+    // the band starts at 0 or below, a stratum whose upper bound lies below the band's
+    // top while another's does not stops too: the max is above the top only through
+    // the others, and below it only once every upper bound is (upperEnd), which its own
+    // already is.
+    std::vector<char> stillNeeded(const ItemEstimates& e, double z, double targetMin, double targetMax) const override {
         const int n = e.items();
-        std::vector<Estimate> x(static_cast<size_t>(n));
-        double bestLower = -kInf;
+        std::vector<double> upper(static_cast<size_t>(n));
+        double bestLower = -kInf, mostUpper = -kInf;
         for (int i = 0; i < n; ++i) {
-            x[size_t(i)] = e.of(i);
-            bestLower = std::max(bestLower, x[size_t(i)].value - z * x[size_t(i)].standardError);
+            const Estimate x = e.of(i);
+            upper[size_t(i)] = x.value + z * x.standardError;
+            bestLower = std::max(bestLower, x.value - z * x.standardError);
+            mostUpper = std::max(mostUpper, upper[size_t(i)]);
         }
+        const bool belowTopIdle = targetMin <= 0 && mostUpper >= targetMax;
         std::vector<char> keep(static_cast<size_t>(n));
-        for (int i = 0; i < n; ++i) keep[size_t(i)] = x[size_t(i)].value + z * x[size_t(i)].standardError >= bestLower;
+        for (int i = 0; i < n; ++i)
+            keep[size_t(i)] = upper[size_t(i)] >= bestLower && !(belowTopIdle && upper[size_t(i)] < targetMax);
         return keep;
     }
 

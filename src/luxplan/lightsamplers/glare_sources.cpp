@@ -202,7 +202,7 @@ void PlacedGlare::addRegions(const std::vector<double>& m, std::vector<GlareSour
     }
 }
 
-std::vector<char> PlacedGlare::stillNeeded(const ItemEstimates& e, double z) const {
+std::vector<char> PlacedGlare::stillNeeded(const ItemEstimates& e, double z, double, double) const {
     std::vector<char> keep(size_t(e.items()), 1);
     for (int k = kFirstCell; k < e.items(); ++k) {
         const Estimate x = e.of(k);

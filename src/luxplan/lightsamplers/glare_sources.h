@@ -73,7 +73,7 @@ public:
     Estimate combine(const ItemEstimates& items) const override;
     // Adaptive measurement stops the cells that are surely below the threshold (their
     // upper bound is): they are no source and E_v is item 0's.
-    std::vector<char> stillNeeded(const ItemEstimates& items, double z) const override;
+    std::vector<char> stillNeeded(const ItemEstimates& items, double z, double targetMin, double targetMax) const override;
     SamplerDrawing drawing() const override;
     // The survey from item means (points of a SamplerResult, in item order); the first
     // `luminaires` slots are the scene's emitters, the rest sun disks (which only

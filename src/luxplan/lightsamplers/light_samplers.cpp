@@ -76,7 +76,7 @@ uint64_t ItemEstimates::pathsInFold(int item, int fold) const {
     return n;
 }
 
-std::vector<char> PlacedSampler::stillNeeded(const ItemEstimates& items, double) const {
+std::vector<char> PlacedSampler::stillNeeded(const ItemEstimates& items, double, double, double) const {
     return std::vector<char>(size_t(items.items()), 1);
 }
 
@@ -262,7 +262,7 @@ MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& op
             const Estimate value = placed[k]->combine(e);
             const double zValue = confidenceMultiplier(options.confidenceZ, value.degreesOfFreedom);
             if (settled(scene.samplers[k], *placed[k], value, e, zValue, options.confidenceZ)) break;
-            const std::vector<char> keep = placed[k]->stillNeeded(e, options.confidenceZ);
+            const std::vector<char> keep = placed[k]->stillNeeded(e, options.confidenceZ, scene.samplers[k].targetMin, scene.samplers[k].targetMax);
             for (size_t i = 0; i < keep.size(); ++i) needed[firstWork[k] + i] = needed[firstWork[k] + i] && keep[i];
             look = nextLook(scene.samplers[k], value, to, batch, zValue);
             from = to;

@@ -134,9 +134,9 @@ public:
     // whose error is the root sum of squares over their count.
     virtual Estimate combine(const ItemEstimates& items) const;
     // In adaptive measurement, at a look that left the value unsettled: which
-    // items still need paths, z being the confidence multiplier. Default: all (a
-    // mean needs every item).
-    virtual std::vector<char> stillNeeded(const ItemEstimates& items, double z) const;
+    // items still need paths, z being the confidence multiplier and [targetMin,
+    // targetMax] the sampler's band. Default: all (a mean needs every item).
+    virtual std::vector<char> stillNeeded(const ItemEstimates& items, double z, double targetMin, double targetMax) const;
     // In adaptive measurement: how high the value may be, at z errors, where its own
     // interval can fall short of that (a stop needs both below a bound). Default: no
     // more than the value's interval says.
