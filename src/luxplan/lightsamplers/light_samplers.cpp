@@ -261,10 +261,11 @@ MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& op
             const ItemEstimates e = estimates(k);
             const Estimate value = placed[k]->combine(e);
             const double zValue = confidenceMultiplier(options.confidenceZ, value.degreesOfFreedom);
-            if (settled(scene.samplers[k], *placed[k], value, e, zValue, options.confidenceZ)) break;
-            const std::vector<char> keep = placed[k]->stillNeeded(e, options.confidenceZ, scene.samplers[k].targetMin, scene.samplers[k].targetMax);
+            const LightSamplerSpec& spec = scene.samplers[k];
+            if (settled(spec, *placed[k], value, e, zValue, options.confidenceZ)) break;
+            const std::vector<char> keep = placed[k]->stillNeeded(e, options.confidenceZ, spec.targetMin, spec.targetMax);
             for (size_t i = 0; i < keep.size(); ++i) needed[firstWork[k] + i] = needed[firstWork[k] + i] && keep[i];
-            look = nextLook(scene.samplers[k], value, to, batch, zValue);
+            look = nextLook(spec, value, to, batch, zValue);
             from = to;
         }
     });
