@@ -79,5 +79,36 @@ TEST(GlareGoal, TheDgpGoalTurnsTheChairAwayFromTheWindow) {
     EXPECT_NEAR(std::abs(std::remainder(rotation, 360.0)), 180, 1e-9) << "the chair faces " << rotation << " degrees";
 }
 
+// The search traces the glare surveys with the report's tracing (the sunlit patches),
+// the other samplers with its own: a survey's E_v from few paths misses the light off
+// a sunlit floor, with an error that does not show it, and its adaptive stops go wrong.
+TEST(GlareGoal, TheSearchTracesGlareSurveysWithTheSunlitPatches) {
+    const Scene scene = test::SceneBuilder()
+                            .material("wall", test::diffuse(0.7))
+                            .material("floor", test::diffuse(0.3))
+                            .sunAndUniformSky({35, 160, 60000}, 2000, 0.2)
+                            .room({0, 0, 0}, {6, 4, 3}, "floor", "wall", "wall")
+                            .window(Wall::South, 1, 3, 0.9, 1.5)
+                            .sampler("desk", planarSampler({3, 3, 0.8}, {0, 0, 1}, {0, 1, 0}, {1, 0.6}, {2, 2}), 0)
+                            .sampler("beside the window", dgpSampler({3, 2, 1.2}, {1, 0, 0}, 2000, 8), 0, 0.35)
+                            .build();
+    PathTracerOptions search, report;
+    search.sunPatches = false;
+    const test::SceneLab with(scene, report), without(scene, search);
+    const MeasureResult a = with.measure(64, 7), b = without.measure(64, 7);
+    // The patches change the survey's paths (or this test could not fail).
+    ASSERT_NE(a.samplers[1].value, b.samplers[1].value);
+
+    MeasureOptions measure;
+    measure.pathsPerPoint = 64, measure.seed = 7;
+    PathTracedLighting lighting(scene, &*with.daylight, measure, search, report);
+    const Layout layout = initialLayout(scene);
+    lighting.evaluate(layout, worldTransforms(scene, layout), nullptr);
+    const MeasureResult& r = lighting.lastMeasurement();
+    EXPECT_EQ(r.samplers[0].value, b.samplers[0].value);
+    EXPECT_EQ(r.samplers[1].value, a.samplers[1].value);
+    EXPECT_EQ(r.samplers[1].standardError, a.samplers[1].standardError);
+}
+
 }  // namespace
 }  // namespace luxplan

@@ -149,7 +149,8 @@ int nextLook(const LightSamplerSpec& spec, const Estimate& value, int paths, int
 
 }  // namespace
 
-MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& options, PathCache* cache) {
+MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& options, PathCache* cache,
+                              const PathTracer* glareTracer) {
     const EmbreeScene& rt = tracer.rayTracer();
     const Scene& scene = rt.scene();
     const size_t samplers = scene.samplers.size();
@@ -162,6 +163,10 @@ MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& op
         for (int i = 0; i < placed.back()->items(); ++i) work.push_back({int(k), i});
     }
     firstWork.push_back(work.size());
+    std::vector<const PathTracer*> tracerOf(samplers, &tracer);
+    if (glareTracer)
+        for (size_t k = 0; k < samplers; ++k)
+            if (dynamic_cast<const PlacedGlare*>(placed[k].get())) tracerOf[k] = glareTracer;
     if (cache) {
         std::vector<int> workSampler;
         for (const WorkItem& w : work) workSampler.push_back(w.sampler);
@@ -204,7 +209,7 @@ MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& op
                     scratch.clear();
                     r.stats.footprint = &scratch;
                 }
-                sampler.sample(tracer, w.item, samples, r.stats, c);
+                sampler.sample(*tracerOf[size_t(w.sampler)], w.item, samples, r.stats, c);
                 r.stats.footprint = nullptr;
                 if (cache) cache->keep(index, path, c, scratch);
             }

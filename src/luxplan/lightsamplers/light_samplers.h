@@ -62,6 +62,11 @@ struct MeasureResult {
 // (set once by the caller, see core/parallel.h). With a cache, paths no move since its
 // committed layout can have changed are read from it (the result is the same), and
 // the paths traced go to its pending delta (commit or discard it after).
-MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& options, PathCache* cache = nullptr);
+// `glareTracer`, when given (on the same scene), traces the glare surveys (the "ugr" and
+// "dgp" samplers) instead of `tracer`: the search gives them the sunlit patches and the
+// others not (a survey's vertical illuminance misses the light off sunlit surfaces in
+// a third of its first looks, with an error that does not show it: docs/light-transport.md).
+MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& options, PathCache* cache = nullptr,
+                              const PathTracer* glareTracer = nullptr);
 
 }  // namespace luxplan

@@ -19,9 +19,9 @@ double PathTracedLighting::evaluate(const Layout& /*layout*/, const std::vector<
     if (fresh_) {
         MeasureOptions fresh = options_;
         fresh.seed = hashValues({options_.seed, kFreshTag, ++freshDraws_});
-        return measure(tracer_, world, fresh, nullptr, out);
+        return measure(tracer_, world, fresh, nullptr, out, &reportTracer_);
     }
-    return measure(tracer_, world, options_, incremental_ ? &cache_ : nullptr, out);
+    return measure(tracer_, world, options_, incremental_ ? &cache_ : nullptr, out, &reportTracer_);
 }
 
 double PathTracedLighting::measureIndependently(const Layout& /*layout*/, const std::vector<Transform>& world,
@@ -35,12 +35,13 @@ double PathTracedLighting::measureIndependently(const Layout& /*layout*/, const 
 }
 
 double PathTracedLighting::measure(PathTracer& tracer, const std::vector<Transform>& world, const MeasureOptions& options,
-                                   PathCache* cache, LightingBreakdown* out) {
+                                   PathCache* cache, LightingBreakdown* out, PathTracer* glareTracer) {
     // Only instance transforms change: the top level is re-committed, nothing rebuilt.
     for (size_t i = 0; i < world.size(); ++i) rt_.setEntityTransform(int(i), world[i]);
     rt_.commit();
     tracer.updateLayout();
-    last_ = measureSamplers(tracer, options, cache);
+    if (glareTracer) glareTracer->updateLayout();
+    last_ = measureSamplers(tracer, options, cache, glareTracer);
     ++evaluations_;
     rays_ += last_.rays;
     reusedPaths_ += last_.reusedPaths;

@@ -13,8 +13,9 @@ public:
     // numbers, so that the difference between two layouts' costs carries less noise
     // than either cost (the paths differ only where the geometry does).
     // `searchTracing` for the search's evaluations, `reportTracing` for the independent
-    // measurements (the sunlit patches, say, cost the search more than they save it,
-    // but lower the report's error).
+    // measurements and, in the search too, for the glare surveys (ugr and dgp samplers):
+    // the sunlit patches, say, cost the search more than they save it, but lower the
+    // report's error, and a survey's adaptive stops need them (measureSamplers).
     PathTracedLighting(const Scene& scene, const DaylightEnvironment* daylight, const MeasureOptions& options,
                        const PathTracerOptions& searchTracing = {}, const PathTracerOptions& reportTracing = {});
 
@@ -46,7 +47,7 @@ public:
 
 private:
     double measure(PathTracer& tracer, const std::vector<Transform>& world, const MeasureOptions& options,
-                   PathCache* cache, LightingBreakdown* out);
+                   PathCache* cache, LightingBreakdown* out, PathTracer* glareTracer = nullptr);
 
     const Scene& scene_;
     EmbreeScene rt_;
