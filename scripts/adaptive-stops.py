@@ -13,8 +13,8 @@ the truth (4.53 for an error from eight fold values, Student's t with 7 degrees 
 freedom: directional, ugr and dgp samplers) and the paths a run traced.
 
 LAYOUT "-" measures the scene as it is. --near-bound DELTA (repeatable) moves each
-sampler's band top to its truth times 1 + DELTA (the band's bottom stays) and checks
-the stops there: the hardest place for them.
+sampler's band top to its truth times 1 + DELTA (the band's bottom stays, or becomes 0
+where it was above the new top) and checks the stops there: the hardest place for them.
 """
 import argparse
 import json
@@ -63,7 +63,9 @@ def check(a, scene, truth, refs):
         values = [r[i]["value"] for r in runs]
         beyond = sum(abs(r[i]["value"] - truth[i]) > k * r[i]["std_error"] for r in runs)
         early = [r for r in runs if r[i]["paths_per_point"] < 1000]
-        wrong = sum(piece(r[i]["value"], s["target"]) != piece(truth[i], s["target"]) for r in early)
+        wrong_runs = [(seed, r) for seed, r in enumerate(runs, 1)
+                      if r[i]["paths_per_point"] < 1000 and piece(r[i]["value"], s["target"]) != piece(truth[i], s["target"])]
+        wrong = len(wrong_runs)
         for j, r in enumerate(runs):
             points = r[i]["points"]
             paths[j] += r[i]["paths_per_point"] * (len(points) if isinstance(points, list) else points)
@@ -72,6 +74,9 @@ def check(a, scene, truth, refs):
         early_total += len(early)
         print(f"{s['name']:24s} {truth[i]:9.4g} {statistics.mean(values):9.4g} "
               f"{statistics.mean(r[i]['paths_per_point'] for r in runs):9.0f} {beyond:7d} {len(early):6d} {wrong:6d}")
+        for seed, r in wrong_runs:
+            x = r[i]
+            print(f"    wrong: seed {seed}, {x['value']:.4g} +- {x['std_error']:.3g} after {x['paths_per_point']} paths per point")
     n = len(runs) * len(truth)
     print(f"{n} measurements: {early_total} early stops, {wrong_total} of them in the wrong piece; "
           f"{beyond_total} values beyond their interval; paths per run {statistics.mean(paths):.0f}")
@@ -99,7 +104,10 @@ def main():
         for i, s in enumerate(refs[0]):
             if s["name"] not in specs:
                 sys.exit(f"adaptive-stops.py: no sampler named {s['name']!r} in {a.scene}")
-            specs[s["name"]]["target"][1] = truth[i] * (1 + delta)
+            target = specs[s["name"]]["target"]
+            target[1] = truth[i] * (1 + delta)
+            if target[0] is not None and target[0] > target[1]:
+                target[0] = 0  # a band that started above the new top
         # Beside the original, so that its relative paths (meshes, photometry) still resolve.
         fd, path = tempfile.mkstemp(suffix=".json", dir=os.path.dirname(os.path.abspath(a.scene)))
         try:
