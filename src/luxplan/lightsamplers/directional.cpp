@@ -141,9 +141,10 @@ public:
     // another's lower bound cannot hold the max; its paths stop (its estimate keeps
     // the paths it had, and the light samples other strata's paths send it). Where
     // the band starts at 0 or below, a stratum whose upper bound lies below the band's
-    // top while another's does not stops too: the max is above the top only through
-    // the others, and below it only once every upper bound is (upperEnd), which its own
-    // already is.
+    // top while another's does not pauses: the max is above the top only through the
+    // others, and below it only once every upper bound is (upperEnd), but its own is
+    // from fewer paths, which may not have met the rare bright ones yet, so it catches
+    // up before the value settles below the top (kPaused).
     std::vector<char> stillNeeded(const ItemEstimates& e, double z, double targetMin, double targetMax) const override {
         const int n = e.items();
         std::vector<double> upper(static_cast<size_t>(n));
@@ -157,7 +158,9 @@ public:
         const bool belowTopIdle = targetMin <= 0 && mostUpper >= targetMax;
         std::vector<char> keep(static_cast<size_t>(n));
         for (int i = 0; i < n; ++i)
-            keep[size_t(i)] = upper[size_t(i)] >= bestLower && !(belowTopIdle && upper[size_t(i)] < targetMax);
+            keep[size_t(i)] = upper[size_t(i)] < bestLower                          ? kNoMorePaths
+                              : belowTopIdle && upper[size_t(i)] < targetMax ? kPaused
+                                                                              : kMorePaths;
         return keep;
     }
 

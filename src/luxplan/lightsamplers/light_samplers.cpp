@@ -77,7 +77,7 @@ uint64_t ItemEstimates::pathsInFold(int item, int fold) const {
 }
 
 std::vector<char> PlacedSampler::stillNeeded(const ItemEstimates& items, double, double, double) const {
-    return std::vector<char>(size_t(items.items()), 1);
+    return std::vector<char>(size_t(items.items()), kMorePaths);
 }
 
 Estimate PlacedSampler::combine(const ItemEstimates& items) const {
@@ -247,31 +247,44 @@ MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& op
 
     // Rounds of paths per point up to the next look (one round of all when not
     // adaptive: MeasureOptions); a sampler stops once its value is settled, and an item
-    // once its sampler no longer needs it. A sampler's stop reads only its own items, so
-    // each runs its own rounds, all at once: none waits for the others' rounds.
+    // once its sampler no longer needs it (ItemNeed). A sampler's stop reads only its own
+    // items, so each runs its own rounds, all at once: none waits for the others' rounds.
     std::vector<int> traced(work.size(), 0);
-    std::vector<char> needed(work.size(), 1);
+    std::vector<char> needed(work.size(), 1), paused(work.size(), 0);
     parallelFor(samplers, [&](size_t k) {
         const int batch = std::max(1, options.batchPaths);
-        int look = std::max(options.minPaths, batch);  // paths per point at the next look
-        for (int from = 0; from < paths;) {
-            const int to = !options.adaptive ? paths : std::min(paths, std::max(from + batch, look));
+        int to = !options.adaptive ? paths : std::min(paths, std::max(options.minPaths, batch));
+        for (;;) {
+            // Each item from where it stopped: a paused one that resumes catches up.
             std::vector<size_t> round;
             for (size_t index = firstWork[k]; index < firstWork[k + 1]; ++index)
-                if (needed[index]) round.push_back(index);
+                if (needed[index] && traced[index] < to) round.push_back(index);
             if (round.empty()) break;
-            parallelFor(round.size(), [&](size_t i) { trace(round[i], from, to); });
+            parallelFor(round.size(), [&](size_t i) { trace(round[i], traced[round[i]], to); });
             for (size_t index : round) traced[index] = to;
             if (!options.adaptive || to == paths) break;
             const ItemEstimates e = estimates(k);
             const Estimate value = placed[k]->combine(e);
             const double zValue = confidenceMultiplier(options.confidenceZ, value.degreesOfFreedom);
             const LightSamplerSpec& spec = scene.samplers[k];
-            if (settled(spec, *placed[k], value, e, zValue, options.confidenceZ)) break;
-            const std::vector<char> keep = placed[k]->stillNeeded(e, options.confidenceZ, spec.targetMin, spec.targetMax);
-            for (size_t i = 0; i < keep.size(); ++i) needed[firstWork[k] + i] = needed[firstWork[k] + i] && keep[i];
-            look = nextLook(spec, value, to, batch, zValue);
-            from = to;
+            if (settled(spec, *placed[k], value, e, zValue, options.confidenceZ)) {
+                // At or below the band's top, only with every paused item's paths too.
+                const double hi = std::max(value.value + zValue * value.standardError,
+                                           placed[k]->upperEnd(e, options.confidenceZ));
+                bool resumed = false;
+                for (size_t index = firstWork[k]; index < firstWork[k + 1] && hi <= spec.targetMax; ++index)
+                    if (paused[index]) paused[index] = 0, needed[index] = 1, resumed = true;
+                if (!resumed) break;
+                continue;  // the same look again, once they have caught up
+            }
+            const std::vector<char> need = placed[k]->stillNeeded(e, options.confidenceZ, spec.targetMin, spec.targetMax);
+            for (size_t i = 0; i < need.size(); ++i) {
+                const size_t index = firstWork[k] + i;
+                if (!needed[index] && !paused[index]) continue;  // no more paths, for good
+                needed[index] = need[i] == kMorePaths;
+                paused[index] = need[i] == kPaused;
+            }
+            to = std::min(paths, std::max(to + batch, nextLook(spec, value, to, batch, zValue)));
         }
     });
 

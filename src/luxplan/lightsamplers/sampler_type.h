@@ -112,6 +112,16 @@ struct SamplerDrawing {
 };
 
 // One sampler where the layout puts it, ready to be traced (world frame).
+// What an item needs at a look of adaptive measurement (PlacedSampler::stillNeeded).
+enum ItemNeed : char {
+    kNoMorePaths = 0,  // it can no longer change the value
+    kMorePaths = 1,
+    // None while the value is unsettled, but before the value settles at or below its
+    // band's top the item's paths catch up with the others': its estimate from fewer
+    // paths may read low (heavy-tailed light that its paths have not met yet).
+    kPaused = 2,
+};
+
 class PlacedSampler {
 public:
     virtual ~PlacedSampler() = default;
@@ -133,9 +143,9 @@ public:
     // The sampler's value from its items' estimates. Default: the mean of the items,
     // whose error is the root sum of squares over their count.
     virtual Estimate combine(const ItemEstimates& items) const;
-    // In adaptive measurement, at a look that left the value unsettled: which
-    // items still need paths, z being the confidence multiplier and [targetMin,
-    // targetMax] the sampler's band. Default: all (a mean needs every item).
+    // In adaptive measurement, at a look that left the value unsettled: what each
+    // item needs (ItemNeed), z being the confidence multiplier and [targetMin,
+    // targetMax] the sampler's band. Default: all more (a mean needs every item).
     virtual std::vector<char> stillNeeded(const ItemEstimates& items, double z, double targetMin, double targetMax) const;
     // In adaptive measurement: how high the value may be, at z errors, where its own
     // interval can fall short of that (a stop needs both below a bound). Default: no
