@@ -53,7 +53,7 @@ def sampler_specs(scene):
     return specs
 
 
-def check(a, scene, truth, refs):
+def check(a, scene, truth):
     runs = [measure(a.binary, scene, a.layout, 1000, s, a.sun_patches, True) for s in range(1, a.seeds + 1)]
     wrong_total = beyond_total = early_total = 0
     paths = [0] * len(runs)
@@ -94,7 +94,7 @@ def main():
     refs = [measure(a.binary, a.scene, a.layout, 16000, 1000 + s, "on", False) for s in range(4)]
     truth = [statistics.mean(r[i]["value"] for r in refs) for i in range(len(refs[0]))]
     if not a.near_bound:
-        check(a, a.scene, truth, refs)
+        check(a, a.scene, truth)
         return
     with open(a.scene) as f:
         original = json.load(f)
@@ -109,12 +109,12 @@ def main():
             if target[0] is not None and target[0] > target[1]:
                 target[0] = 0  # a band that started above the new top
         # Beside the original, so that its relative paths (meshes, photometry) still resolve.
-        fd, path = tempfile.mkstemp(suffix=".json", dir=os.path.dirname(os.path.abspath(a.scene)))
+        fd, path = tempfile.mkstemp(prefix=".adaptive-stops-", suffix=".json", dir=os.path.dirname(os.path.abspath(a.scene)))
         try:
             with os.fdopen(fd, "w") as f:
                 json.dump(scene, f)
             print(f"band tops at the truth x {1 + delta:g}:")
-            check(a, path, truth, refs)
+            check(a, path, truth)
         finally:
             os.remove(path)
 

@@ -199,12 +199,6 @@ TEST(AdaptivePaths, AStopBelowABoundNeedsEveryStratumBelowIt) {
     EXPECT_LE(stops.atOrBelow, 4) << "of " << seeds << " runs stopped inside the band (" << stops.early << " early)";
 }
 
-// Where the band starts at 0, the strata whose upper end is below its top pause while
-// another's is above it; but one of them may be the true max, read low from its few
-// paths, so before the max settles below the top they catch up with the others (the
-// office near a glare bound: 100 +- 17 cd/m2 after 736 paths per stratum against a
-// truth of 193, with a top of 187). The rare tile's 16 strata with the top just below
-// the truth.
 // A paused item (kPaused: a directional stratum whose upper end is below the band's top
 // while another's is above it) traces no paths while the value is unsettled, but its
 // estimate from fewer paths may read low (in the office, a glare sampler near its bound

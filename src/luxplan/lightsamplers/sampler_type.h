@@ -111,7 +111,6 @@ struct SamplerDrawing {
     std::optional<Vec3> labelAt;   // where its label goes; default: the outline's centroid
 };
 
-// One sampler where the layout puts it, ready to be traced (world frame).
 // What an item needs at a look of adaptive measurement (PlacedSampler::stillNeeded).
 enum ItemNeed : char {
     kNoMorePaths = 0,  // it can no longer change the value
@@ -122,6 +121,7 @@ enum ItemNeed : char {
     kPaused = 2,
 };
 
+// One sampler where the layout puts it, ready to be traced (world frame).
 class PlacedSampler {
 public:
     virtual ~PlacedSampler() = default;
@@ -145,7 +145,7 @@ public:
     virtual Estimate combine(const ItemEstimates& items) const;
     // In adaptive measurement, at a look that left the value unsettled: what each
     // item needs (ItemNeed), z being the confidence multiplier and [targetMin,
-    // targetMax] the sampler's band. Default: all more (a mean needs every item).
+    // targetMax] the sampler's band. Default: more for every item (a mean needs them all).
     virtual std::vector<char> stillNeeded(const ItemEstimates& items, double z, double targetMin, double targetMax) const;
     // In adaptive measurement: how high the value may be, at z errors, where its own
     // interval can fall short of that (a stop needs both below a bound). Default: no
