@@ -202,7 +202,7 @@ TEST(AdaptivePaths, AStopBelowABoundNeedsEveryStratumBelowIt) {
 // A paused item (kPaused: a directional stratum whose upper end is below the band's top
 // while another's is above it) traces no paths while the value is unsettled, but its
 // estimate from fewer paths may read low (in the office, a glare sampler near its bound
-// read 100 +- 17 cd/m2 against a truth of 193 once its brightest stratum had paused on a
+// read 100 +- 17 cd/m2 against a truth of 193 when its brightest stratum stopped on a
 // low early reading), so it catches up with the others before the value may settle at
 // or below the top. Two items of 1 each; the value is 50 with an error of 200 / sqrt(n),
 // n item 0's paths, in a band [0, 100]: unsettled at the first look (64 paths), where
