@@ -155,11 +155,11 @@ public:
             bestLower = std::max(bestLower, x.value - z * x.standardError);
             mostUpper = std::max(mostUpper, upper[size_t(i)]);
         }
-        const bool belowTopIdle = targetMin <= 0 && mostUpper >= targetMax;
+        const bool pauseBelowTop = targetMin <= 0 && mostUpper >= targetMax;
         std::vector<char> keep(static_cast<size_t>(n));
         for (int i = 0; i < n; ++i)
             keep[size_t(i)] = upper[size_t(i)] < bestLower                          ? kNoMorePaths
-                              : belowTopIdle && upper[size_t(i)] < targetMax ? kPaused
+                              : pauseBelowTop && upper[size_t(i)] < targetMax ? kPaused
                                                                               : kMorePaths;
         return keep;
     }

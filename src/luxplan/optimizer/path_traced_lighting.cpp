@@ -1,5 +1,7 @@
 #include <luxplan/optimizer/path_traced_lighting.h>
 
+#include <string_view>
+
 #include <luxplan/constraints/penalty.h>
 #include <luxplan/core/rng.h>
 
@@ -13,15 +15,21 @@ constexpr uint64_t kFreshTag = 0x6672657368ULL;  // "fresh"
 PathTracedLighting::PathTracedLighting(const Scene& scene, const DaylightEnvironment* daylight, const MeasureOptions& options,
                                        const PathTracerOptions& searchTracing, const PathTracerOptions& reportTracing)
     : scene_(scene), rt_(scene, initialLayout(scene)), tracer_(rt_, daylight, searchTracing),
-      reportTracer_(rt_, daylight, reportTracing), options_(options), cache_(scene) {}
+      reportTracer_(rt_, daylight, reportTracing), options_(options), cache_(scene) {
+    for (const LightSamplerSpec& s : scene.samplers) {
+        const std::string_view type = s.type->name();
+        hasGlareSurveys_ = hasGlareSurveys_ || type == "ugr" || type == "dgp";
+    }
+}
 
 double PathTracedLighting::evaluate(const Layout& /*layout*/, const std::vector<Transform>& world, LightingBreakdown* out) {
     if (fresh_) {
         MeasureOptions fresh = options_;
         fresh.seed = hashValues({options_.seed, kFreshTag, ++freshDraws_});
-        return measure(tracer_, world, fresh, nullptr, out, &reportTracer_);
+        return measure(tracer_, world, fresh, nullptr, out, hasGlareSurveys_ ? &reportTracer_ : nullptr);
     }
-    return measure(tracer_, world, options_, incremental_ ? &cache_ : nullptr, out, &reportTracer_);
+    return measure(tracer_, world, options_, incremental_ ? &cache_ : nullptr, out,
+                   hasGlareSurveys_ ? &reportTracer_ : nullptr);
 }
 
 double PathTracedLighting::measureIndependently(const Layout& /*layout*/, const std::vector<Transform>& world,

@@ -52,6 +52,7 @@ private:
     const Scene& scene_;
     EmbreeScene rt_;
     PathTracer tracer_, reportTracer_;
+    bool hasGlareSurveys_ = false;  // a ugr or dgp sampler: the search traces it with reportTracer_
     MeasureOptions options_;
     int reportPaths_ = 0;  // 0: options_.pathsPerPoint
     PathCache cache_;
