@@ -339,6 +339,31 @@ TEST(EmitterShadows, ALuminaireBlocksTheLightOfAnotherBehindIt) {
     expectWithin(aside, rectIlluminance(L, -side / 2, side / 2, -side / 2, side / 2, 0, 0, h), 2e-3, "unblocked");
 }
 
+// A panel never shadows its own light, however near the point is to its plane (the
+// shadow ray then steps past the panel's own hit instead of stopping short of it in
+// one query), and a bulb hidden behind a larger one sends nothing past it.
+TEST(EmitterShadows, ALuminaireNeverShadowsItselfNearOrFar) {
+    const double flux = 3000, side = 0.6, L = flux / (kPi * side * side);
+    for (double h : {1e-3, 0.05, 1.0}) {
+        SceneLab lab(SceneBuilder()
+                         .emitter("above", rectEmitter({0, 0, 2.5}, {0, 0, -1}, {0, 1, 0}, {side, side}), flux)
+                         .emitter("aside", rectEmitter({10, 0, 2.5}, {0, 0, -1}, {0, 1, 0}, {side, side}), flux)
+                         .sampler("p", point({0, 0, 2.5 - h}), 0)
+                         .build());
+        const double s = side / 2;
+        expectWithin(lab.measure(2000).samplers[0],
+                     rectIlluminance(L, -s, s, -s, s, 0, 0, h) + rectIlluminance(L, 10 - s, 10 + s, -s, s, 0, 0, h), 2e-3,
+                     "h = " + std::to_string(h));
+    }
+    // Spheres: 0.3 m across at 1 m hides one of 0.05 m at 2 m (E = flux / 4 pi d^2).
+    SceneLab bulbs(SceneBuilder()
+                       .emitter("near", sphereEmitter({0, 0, 1}, 0.3), flux)
+                       .emitter("hidden", sphereEmitter({0, 0, 2}, 0.05), flux)
+                       .sampler("p", point({0, 0, 0}), 0)
+                       .build());
+    expectWithin(bulbs.measure(4000).samplers[0], flux / (4 * kPi), 2e-3, "bulbs");
+}
+
 // A sampler point lying on a surface (a work plane at a desk's top, carried by a
 // rotated entity: a micron off either way) must see the light above it, not the
 // surface it lies on: rays from a sensor skip their first 0.1 mm.

@@ -185,6 +185,9 @@ void DaylightEnvironment::forEachSunDiskAt(const Vec3& w, F&& f) const {
 
 Vec3 DaylightEnvironment::Le(const Vec3& w) const {
     if (map_.width() == 0) return {};
+    // The rows from the horizon down all hold the ground (pixelOf puts z <= 0 there):
+    // no pixel to find, no cache line to miss.
+    if (w.z <= 0) return ground_;
     int ix, iy;
     map_.pixelOf(w, ix, iy);
     return map_.at(ix, iy);

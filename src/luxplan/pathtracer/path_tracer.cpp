@@ -77,17 +77,28 @@ void PathTracer::updateLayout() {
 double PathTracer::transmittance(const Vec3& origin, const Vec3& w, double tMax, int target, RayStats& stats) const {
     // Opaque surfaces first, by an any-hit query. Luminaires block as a path sees
     // them (they absorb what reaches them): towards the sky and sun all of them do,
-    // towards an emitter every other one, found by closest-hit queries that step past
-    // the target itself (float error in Embree's hit of the target, a grazing ray to
-    // a small sphere, must not shadow it).
+    // towards an emitter every other one. A ray to a flat emitter crosses its plane
+    // once, at the sampled point (tMax); when float error moves that by far less than
+    // the 1e-4 cut below, the others join the same query. Otherwise (a sphere, a point
+    // near the plane) they are found by closest-hit queries that step past the target
+    // itself: float error in Embree's hit of the target must not shadow it.
     ++stats.shadow;
-    unsigned blockers = kOpaqueMask | (target < 0 ? kEmitterMask : 0u);
+    bool frontOnFlat = false;
+    if (target >= 0 && emitters_[size_t(target)].normal) {
+        // The cut across the plane, 1e-4 of the distance to it, against Embree's float
+        // copy of the plane: at least 8 float ulps of the coordinates' magnitude.
+        const double across = tMax * std::abs(dot(w, *emitters_[size_t(target)].normal));
+        const double magnitude = std::max({1.0, std::abs(origin.x), std::abs(origin.y), std::abs(origin.z)});
+        frontOnFlat = across > 1e-2 * magnitude;
+    }
+    const bool stepPastTarget = target >= 0 && emitters_.size() > 1 && !frontOnFlat;
+    const unsigned blockers = kOpaqueMask | (target < 0 || frontOnFlat ? kEmitterMask : 0u);
     double opaqueEnd = target < 0 ? tMax : tMax * (1 - 1e-4);
     // The emitter steps below run along this segment; the pane crossings add their own.
     const bool blocked = rt_.occluded({origin, w, 0, opaqueEnd, blockers});
     if (stats.footprint) stats.footprint->addOcclusion(origin, w, 0, opaqueEnd, blockers, blocked);
     if (blocked) return 0;
-    if (target >= 0 && emitters_.size() > 1) {
+    if (stepPastTarget) {
         double tStart = 0;
         for (int steps = 0; steps < 4; ++steps) {
             ++stats.shadow;

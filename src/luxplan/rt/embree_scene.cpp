@@ -133,8 +133,10 @@ unsigned EmbreeScene::attachTriangles(SubScene& sub, const TriangleMesh& mesh, H
     rtcCommitGeometry(g);
     unsigned id = rtcAttachGeometry(sub.scene, g);
     rtcReleaseGeometry(g);
+    std::vector<TriangleFace>& faces = faces_.emplace_back(mesh.triangles.size());
+    for (size_t t = 0; t < faces.size(); ++t) faces[t] = {mesh.geometricNormal(t), mesh.materials[t]};
     if (sub.geometries.size() <= id) sub.geometries.resize(id + 1);
-    sub.geometries[id] = {kind, index, &mesh};
+    sub.geometries[id] = {kind, index, &mesh, &faces};
     return id;
 }
 
@@ -262,8 +264,9 @@ std::optional<Hit> EmbreeScene::intersect(const Ray& r) const {
     const Transform* world = sub.entity >= 0 ? &worldFromEntity_[sub.entity] : nullptr;
     Vec3 ng(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z);
     if (info.mesh) {
-        ng = info.mesh->geometricNormal(rh.hit.primID);  // exact, in double
-        hit.material = info.mesh->materials[rh.hit.primID];
+        const TriangleFace& face = (*info.faces)[rh.hit.primID];
+        ng = face.normal;  // exact, in double
+        hit.material = face.material;
         Vec3 ns = ng;
         if (info.mesh->normals.size() == info.mesh->positions.size()) {
             const auto& tri = info.mesh->triangles[rh.hit.primID];

@@ -97,10 +97,17 @@ public:
     bool hasGlass() const { return hasGlass_; }
 
 private:
+    struct TriangleFace {
+        Vec3 normal;  // unit, from the winding, in double (TriangleMesh::geometricNormal)
+        uint32_t material = 0;
+    };
     struct GeometryInfo {
         HitKind kind = HitKind::Static;
         int index = -1;
         const TriangleMesh* mesh = nullptr;  // for triangle geometry
+        // Per triangle, what every hit reads, side by side: one cache line, not the
+        // three vertices and the material of a mesh spread over memory.
+        const std::vector<TriangleFace>* faces = nullptr;
     };
     struct SubScene {
         RTCScene scene = nullptr;
@@ -124,6 +131,7 @@ private:
     std::vector<Transform> worldFromEntity_;
     std::vector<TriangleMesh> emitterMeshes_;  // emitters Embree sees as triangles (rects)
     std::deque<TriangleMesh> splitMeshes_;     // meshes split into opaque and glass parts
+    std::deque<std::vector<TriangleFace>> faces_;  // GeometryInfo::faces of every triangle geometry
     bool hasGlass_ = false;
     RayLog* log_ = nullptr;
 };
