@@ -13,6 +13,21 @@
 namespace luxplan {
 namespace {
 
+// sobolPair leaves out the bit reversals that undo one another: it must give exactly
+// the composition it stands for, and the paths' 1D numbers its first coordinate.
+TEST(LowDiscrepancy, TheShortcutPairIsTheScrambledSobolPair) {
+    for (uint32_t i : {0u, 1u, 5u, 255u, 1000u, 65537u, 0x89abcdefu, 0xffffffffu})
+        for (uint32_t pair : {0u, 3u, 17u}) {
+            const PairScramble s(0x5eed, pair);
+            const uint32_t shuffled = owenScramble(i, s.shuffle);
+            const Vec2 p = sobolPair(s, i);
+            EXPECT_EQ(p.x, toUnit(owenScramble(sobol0(shuffled), s.x))) << i;
+            EXPECT_EQ(p.y, toUnit(owenScramble(sobol1(shuffled), s.y))) << i;
+            EXPECT_EQ(sobolPairX(s, shuffledIndex(s, reverseBits(i))), p.x) << i;
+            EXPECT_EQ(sobol1Reversed(i), reverseBits(sobol1(i))) << i;
+        }
+}
+
 TEST(LowDiscrepancy, OwenScrambleIsAPermutation) {
     // On the top 16 bits (the scramble keeps the order of the lower bits' influence):
     // 2^16 distinct inputs give 2^16 distinct outputs.

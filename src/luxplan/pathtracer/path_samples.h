@@ -36,12 +36,17 @@ public:
     // Pseudo-random only.
     explicit PathSamples(Rng& rng) : rng_(rng) {}
     // Point `index` of `sequence` for the first vertices.
-    PathSamples(Rng& rng, const Sequence& sequence, uint32_t index) : rng_(rng), sequence_(&sequence), index_(index) {}
+    PathSamples(Rng& rng, const Sequence& sequence, uint32_t index)
+        : rng_(rng), sequence_(&sequence), reversedIndex_(reverseBits(index)) {}
 
     void setDepth(int depth) { depth_ = depth; }
-    double get1D(Slot slot) { return fromSequence() ? sobolPair(sequence_->pairs[pair(slot)], index_).x : rng_.uniform(); }
+    double get1D(Slot slot) {
+        if (!fromSequence()) return rng_.uniform();
+        const PairScramble& s = sequence_->pairs[pair(slot)];
+        return sobolPairX(s, shuffledIndex(s, reversedIndex_));
+    }
     Vec2 get2D(Slot slot) {
-        if (fromSequence()) return sobolPair(sequence_->pairs[pair(slot)], index_);
+        if (fromSequence()) return sobolPairReversed(sequence_->pairs[pair(slot)], reversedIndex_);
         double u = rng_.uniform();
         return {u, rng_.uniform()};
     }
@@ -54,7 +59,7 @@ private:
 
     Rng& rng_;
     const Sequence* sequence_ = nullptr;
-    uint32_t index_ = 0;
+    uint32_t reversedIndex_ = 0;  // the point's index, bits reversed (low_discrepancy.h)
     int depth_ = 0;
 };
 
