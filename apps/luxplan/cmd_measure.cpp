@@ -31,6 +31,7 @@ struct MeasureArgs {
     bool json = false, flat = false, adaptive = false;
     std::string sampling = "sobol";
     std::string sunPatches = "on";
+    std::string exteriorSun = "on";
     std::string at;  // ISO 8601: one instant of daylight instead of the period
 };
 
@@ -59,6 +60,7 @@ void runMeasure(const MeasureArgs& args) {
     EmbreeScene rt(scene, layout);
     PathTracerOptions tracing;
     tracing.sunPatches = args.sunPatches == "on";
+    tracing.exteriorSun = args.exteriorSun == "on";
     PathTracer tracer(rt, daylight ? &*daylight : nullptr, tracing);
     MeasureOptions options;
     options.pathsPerPoint = args.paths > 0 ? args.paths : scene.optimizer.pathsPerPoint;
@@ -96,6 +98,7 @@ void runMeasure(const MeasureArgs& args) {
         nlohmann::json out = {{"samplers", samplers},
                               {"paths_per_point", options.pathsPerPoint},
                               {"adaptive", options.adaptive}, {"sampling", args.sampling}, {"sun_patches", tracer.samplesSunPatches()},
+                              {"exterior_sun", tracer.samplesExteriorSun()},
                               {"seed", options.seed},
                               {"L", lighting}, {"L_std_error", lightingError},
                               {"G", geometry.cost}, {"C", cost}, {"C_std_error", w * lightingError},
@@ -179,6 +182,12 @@ void registerMeasureCommand(CLI::App& app, int& threads) {
     cmd->add_option("--sun-patches", args->sunPatches,
                     "Sample the room's sunlit patches at every surface a path meets (on, default) or find them by BSDF "
                     "sampling alone (off); the same values either way, with less noise where sunlight bounces")
+        ->check(CLI::IsMember({"on", "off"}));
+    cmd->add_option("--exterior-sun", args->exteriorSun,
+                    "Follow the sky's samples through the openings to sunlit surfaces outside (a facade across the "
+                    "street) and take the sun's light there (on, default: where the sun can light a side of something "
+                    "outside that an opening sees) or find that light by BSDF sampling alone (off); the same values "
+                    "either way")
         ->check(CLI::IsMember({"on", "off"}));
     cmd->add_flag("--flat", args->flat, "Measure in the flattened scene (read the layout_flat.json of optimize --flat)");
     cmd->callback([args] { namingScene(args->scene, [&] { runMeasure(*args); }); });

@@ -20,9 +20,13 @@ const Vec3 kZ(0, 0, 1);
 
 // A glazed, sunlit 6 x 4 m room with a ceiling panel: a desk carrying a task plane and
 // a lamp (its own entity, with a shade emitter), a chair, a cabinet; a fixed plane on
-// the floor, a fixed directional sampler looking at the window, a volume.
-Scene studio() {
-    return SceneBuilder()
+// the floor, a fixed directional sampler looking at the window, a volume. With
+// `terrace`, a sunlit terrace outside the window that paths see through it (the
+// sun's light off it is then taken where the sky's portal samples meet it).
+Scene studio(bool terrace = false) {
+    SceneBuilder b;
+    if (terrace) b.material("stone", test::diffuse(0.5)).box("terrace", {-4, -8, -0.3}, {10, -0.5, 0}, "stone");
+    return b
         .material("wall", test::diffuse(0.6))
         .material("wood", test::diffuse(0.4))
         .material("glass", test::glass(0.8))
@@ -88,8 +92,9 @@ void randomMove(const Scene& scene, Layout& layout, Rng& rng) {
     if (rng.uniform() < 0.3) p.rotationDeg = rng.uniform() < 0.5 ? 90.0 * int(rng.uniform() * 4) : 360 * rng.uniform();
 }
 
-void runSequence(bool adaptive, int paths, int moves, uint64_t moveSeed) {
-    SceneLab lab(studio());
+void runSequence(bool adaptive, int paths, int moves, uint64_t moveSeed, bool terrace = false) {
+    SceneLab lab(studio(terrace));
+    ASSERT_EQ(lab.tracer->samplesExteriorSun(), terrace);
     const Scene& scene = lab.scene;
     const DaylightEnvironment* daylight = lab.daylight ? &*lab.daylight : nullptr;
     MeasureOptions o;
@@ -128,6 +133,8 @@ void runSequence(bool adaptive, int paths, int moves, uint64_t moveSeed) {
 TEST(PathCache, MovesEqualFromScratchFixedPaths) { runSequence(false, 24, 24, 11); }
 
 TEST(PathCache, MovesEqualFromScratchAdaptive) { runSequence(true, 48, 24, 12); }
+
+TEST(PathCache, MovesEqualFromScratchWithASunlitTerraceOutside) { runSequence(true, 48, 24, 13, true); }
 
 TEST(PathCache, AnUnmovedLayoutReusesEveryPath) {
     SceneLab lab(studio());

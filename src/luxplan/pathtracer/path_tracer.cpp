@@ -4,6 +4,8 @@
 #include <optional>
 
 #include <luxplan/core/warp.h>
+#include <luxplan/daylight/preetham.h>
+#include <luxplan/scene/room.h>
 
 namespace luxplan {
 namespace {
@@ -29,6 +31,7 @@ struct Vertex {
 struct PatchOrigin {
     Vec3 p, ng;
     bool translucent = false;
+    bool valid = false;  // the path arrived from a vertex where the patches were sampled
     bool faces(const Vec3& beamEnd) const { return translucent || dot(ng, beamEnd - p) > 0; }
 };
 
@@ -56,6 +59,50 @@ double sunWeight(double ownFirst, double ownSecond, double a, double b, double p
     return sum > 0 ? own * own / sum : 0;
 }
 
+// Whether the sun may light a visible static surface outside the room's box (a
+// millimetre of slack) on a side that an opening sees: for some triangle outside,
+// some corner of an opening the sky is sampled through and some sun disk on the
+// same side of its plane (either side for a translucent surface, the outer side for a
+// box). Without one the outside strategy finds nothing (the morning sun on the far
+// side of a facade).
+bool sunlitOutside(const Scene& scene, const DaylightEnvironment& daylight, const std::vector<Bsdf>& bsdfs) {
+    const RoomShell* room = scene.room();
+    if (!room) return false;
+    std::vector<Vec3> corners;
+    for (const Opening& o : room->openings) {
+        if (o.material && !bsdfs[*o.material].passesStraight()) continue;
+        const Rect3 r = openingQuad(room->box, o);
+        for (const Vec3& c : {r.corner, r.corner + r.edgeU, r.corner + r.edgeV, r.corner + r.edgeU + r.edgeV}) corners.push_back(c);
+    }
+    const Bounds3 box(room->box.lo - Vec3(1e-3, 1e-3, 1e-3), room->box.hi + Vec3(1e-3, 1e-3, 1e-3));
+    for (const StaticItem& item : scene.geometry) {
+        if (item.room || item.invisible) continue;
+        const TriangleMesh& mesh = item.mesh;
+        const bool closed = item.kind == StaticKind::Box;  // wound outwards: its inner side is never seen
+        for (size_t t = 0; t < mesh.triangles.size(); ++t) {
+            const auto& tri = mesh.triangles[t];
+            const Vec3 &a = mesh.positions[tri[0]], &b = mesh.positions[tri[1]], &c = mesh.positions[tri[2]];
+            if (box.contains(a) && box.contains(b) && box.contains(c)) continue;
+            const Vec3 n = cross(b - a, c - a);
+            bool seen[2] = {false, false}, lit[2] = {false, false};  // [front, back]
+            for (const Vec3& corner : corners) {
+                const double side = dot(n, corner - a);
+                if (side != 0) seen[side > 0 ? 0 : 1] = true;
+            }
+            const double rim = length(n) * std::sin(kSunHalfAngle);  // a disk's edge reaches past its centre
+            for (const SunDisk& disk : daylight.sunDisks()) {
+                const double side = dot(n, disk.direction);
+                lit[0] = lit[0] || side > -rim;
+                lit[1] = lit[1] || side < rim;
+            }
+            const bool translucent = bsdfs[mesh.materials[t]].hasDiffuseTransmission();
+            if (translucent ? (seen[0] || seen[1]) && (lit[0] || lit[1]) : (seen[0] && lit[0]) || (!closed && seen[1] && lit[1]))
+                return true;
+        }
+    }
+    return false;
+}
+
 }  // namespace
 
 PathTracer::PathTracer(const EmbreeScene& rt, const DaylightEnvironment* daylight, const PathTracerOptions& options)
@@ -65,6 +112,8 @@ PathTracer::PathTracer(const EmbreeScene& rt, const DaylightEnvironment* dayligh
       patches_(rt.scene(), options.sunPatches && daylight && daylight->hasSun() && !rt.hasGlass()),
       panes_(rt.scene()) {
     for (const Material& m : rt.scene().materials) bsdfs_.push_back(makeBsdf(m));
+    exteriorSun_ = options.exteriorSun && options.portals && daylight && daylight->hasSun() && daylight->hasSky() &&
+                   !rt.hasGlass() && sunlitOutside(rt.scene(), *daylight, bsdfs_);
     updateLayout();
 }
 
@@ -180,6 +229,17 @@ double PathTracer::sample(const Sensor& sensor, PathSamples& samples, RayStats& 
     auto patchDensity = [&](const PatchOrigin& from, const Vec3& y, const Vec3& ng, const Vec3& ws) {
         return from.faces(patches_.beamEnd(y, -ws)) ? patches_.density(y, ng, ws) : 0.0;
     };
+    // The same for the sunlit surfaces outside: at a vertex outside the room reached
+    // through an opening, the area density with which the last vertex's portal sample
+    // could have reached it (0 otherwise; never non-zero where a patch's is, which
+    // lies in the room). lastOutside: the last non-delta vertex took that strategy.
+    double outsideDensity = 0;
+    bool lastOutside = false;
+    // The density at this vertex of the other way to its sun light, a sunlit patch or a
+    // surface outside (0: BSDF sampling and the sun's own sampling only).
+    auto otherSunDensity = [&](const Vec3& ws) {
+        return outsideDensity + (arrivalFrom.valid ? patchDensity(arrivalFrom, v.p, v.ng, ws) : 0.0);
+    };
 
     // The sunlit patches (sun_patches.h): one patch point y per path, drawn at the first
     // surface vertex (a sun direction, a point of an opening, the sunbeam through it to
@@ -269,7 +329,7 @@ double PathTracer::sample(const Sensor& sensor, PathSamples& samples, RayStats& 
                 const double bsdfPdf = pdfOf(v, wi);
                 double w = powerHeuristic(1, lightPdf, 1, bsdfPdf);
                 if (source == LightBudget::kSun && arrivalDensity > 0) {
-                    const double b = patchDensity(arrivalFrom, v.p, v.ng, wi);
+                    const double b = otherSunDensity(wi);
                     if (b > 0) w = sunWeight(arrivalDensity, lightPdf, arrivalDensity, b, lightPdf, bsdfPdf);
                 }
                 Vec3 contribution = throughput * f * Le * (T * w / lightPdf);
@@ -281,23 +341,70 @@ double PathTracer::sample(const Sensor& sensor, PathSamples& samples, RayStats& 
                     L += contribution;
                 }
             };
+            // The sky's portal sample, followed to what it meets (exteriorSun_): open sky,
+            // as addLight would take it, or a surface outside the room, whose light from
+            // the sun (this vertex's sun sample, drawn independently) it takes. That
+            // path (here -> z -> sun) BSDF sampling here also makes, then the sun's
+            // sampling or BSDF sampling at z: the power heuristic over the three.
+            auto addSkyOrOutside = [&](const EnvironmentSample& s, const EnvironmentSample& sunAtZ) {
+                if (!(s.pdf > 0)) return;
+                const Vec3 f = evalCos(v, s.wi);
+                if (maxComponent(f) <= 0) return;
+                const Vec3 from = spawn(v, s.wi);
+                ++stats.closest;
+                const unsigned blockers = kOpaqueMask | kEmitterMask;
+                const std::optional<Hit> z = rt_.intersect({from, s.wi, 0, kInf, blockers});
+                if (stats.footprint) {
+                    if (z) stats.footprint->add(from, s.wi, 0, z->t);
+                    else stats.footprint->addOcclusion(from, s.wi, 0, kInf, blockers, false);
+                }
+                Vec3 contribution;
+                int source = LightBudget::kSky, creditDepth = depth;
+                if (!z) {
+                    if (maxComponent(s.Le) <= 0) return;
+                    const double T = panes_.transmittance(from, s.wi, kInf);
+                    if (T <= 0) return;
+                    contribution = throughput * f * s.Le * (T * powerHeuristic(1, s.pdf, 1, pdfOf(v, s.wi)) / s.pdf);
+                } else {
+                    if (z->kind == HitKind::Emitter || sky_.inRoom(z->point) || !(sunAtZ.pdf > 0)) return;
+                    const Vertex outside = surfaceVertex(*z, bsdfs_[z->material], -s.wi);
+                    const Vec3 fz = evalCos(outside, sunAtZ.wi);
+                    if (maxComponent(fz) <= 0) return;
+                    const double T = panes_.transmittance(from, s.wi, z->t);
+                    if (T <= 0) return;
+                    const double toSun = transmittance(spawn(outside, sunAtZ.wi), sunAtZ.wi, kInf, -1, stats);
+                    if (toSun <= 0) return;
+                    const double w = sunWeight(s.pdf, sunAtZ.pdf, pdfOf(v, s.wi), s.pdf, sunAtZ.pdf, pdfOf(outside, sunAtZ.wi));
+                    contribution = throughput * f * fz * sunAtZ.Le * (T * toSun * w / (s.pdf * sunAtZ.pdf));
+                    source = LightBudget::kSun, creditDepth = depth + 1;  // reflected, not direct
+                }
+                if (stats.budget) stats.budget->credit(source, creditDepth, luminance(contribution));
+                if (depth == 0 && sensorLight) {
+                    sensorLight->wi[sensorLight->count] = s.wi;
+                    sensorLight->value[sensorLight->count++] = luminance(contribution);
+                } else {
+                    L += contribution;
+                }
+            };
             if (!emitters_.empty()) {
                 if (stats.footprint) stats.footprint->usedEmitterChoice = true;
                 const double uChoice = samples.get1D(PathSamples::EmitterChoice);
                 EmitterSample s = emitters_.sample(v.p, uChoice, samples.get2D(PathSamples::EmitterPoint));
                 if (s.pdf > 0 && s.Lv > 0) addLight(s.wi, Vec3(s.Lv, s.Lv, s.Lv), s.pdf, s.distance, s.emitter, s.emitter);
             }
+            EnvironmentSample sun;
             if (daylight_ && daylight_->hasSun()) {
                 const double uDisk = samples.get1D(PathSamples::SunDisk);
-                EnvironmentSample s = daylight_->sampleSun(uDisk, samples.get2D(PathSamples::SunPoint));
-                if (!patches_.shadedByShell(spawn(v, s.wi), s.wi)) addLight(s.wi, s.Le, s.pdf, kInf, -1, LightBudget::kSun);
+                sun = daylight_->sampleSun(uDisk, samples.get2D(PathSamples::SunPoint));
+                if (!patches_.shadedByShell(spawn(v, sun.wi), sun.wi)) addLight(sun.wi, sun.Le, sun.pdf, kInf, -1, LightBudget::kSun);
             }
             if (sky) {
                 SkyLight::View& view = views[current];
                 if (depth == 0) sky_.viewFromSensor(v.p, view);
                 else sky_.view(v.p, view);
                 EnvironmentSample s = sky_.sample(view, v.p, samples.get2D(PathSamples::SkyPoint));
-                addLight(s.wi, s.Le, s.pdf, kInf, -1, LightBudget::kSky);
+                if (exteriorSun_ && view.active) addSkyOrOutside(s, sun);
+                else addLight(s.wi, s.Le, s.pdf, kInf, -1, LightBudget::kSky);
             }
             if (patchesHere()) addSunPatch();
         }
@@ -327,7 +434,8 @@ double PathTracer::sample(const Sensor& sensor, PathSamples& samples, RayStats& 
             lastPdf = pdf;
             lastPoint = v.p;
             lastPatched = patchesHere();
-            if (lastPatched) lastOrigin = {v.p, v.ng, v.bsdf->hasDiffuseTransmission()};
+            if (lastPatched) lastOrigin = {v.p, v.ng, v.bsdf->hasDiffuseTransmission(), true};
+            lastOutside = exteriorSun_ && views[current].active;
             if (sky) current ^= 1;  // views[current ^ 1] is now the last non-delta vertex's
         }
         lastDelta = delta;
@@ -355,7 +463,7 @@ double PathTracer::sample(const Sensor& sensor, PathSamples& samples, RayStats& 
                     double wSun = 1;
                     if (!lastDelta && maxComponent(sun) > 0) {
                         const double pSun = daylight_->sunPdf(d);
-                        const double b = arrivalDensity > 0 ? patchDensity(arrivalFrom, lastPoint, v.ng, d) : 0;
+                        const double b = arrivalDensity > 0 ? otherSunDensity(d) : 0;
                         wSun = b > 0 ? sunWeight(arrivalDensity, lastPdf, arrivalDensity, b, pSun, lastPdf)
                                      : powerHeuristic(1, lastPdf, 1, pSun);
                     }
@@ -397,12 +505,17 @@ double PathTracer::sample(const Sensor& sensor, PathSamples& samples, RayStats& 
             }
             // A scattering surface: the next vertex. Surfaces are two-sided.
             v = surfaceVertex(*hit, bsdf, -d);
-            arrivalDensity = 0;
-            if (!lastDelta && lastPatched) {
+            arrivalDensity = outsideDensity = 0;
+            arrivalFrom.valid = false;
+            if (!lastDelta && (lastPatched || lastOutside)) {
                 const Vec3 e = v.p - lastPoint;
                 const double d2 = dot(e, e);
-                if (d2 > 0) arrivalDensity = lastPdf * std::abs(dot(v.ng, d)) / d2;
-                arrivalFrom = lastOrigin;
+                if (d2 > 0) {
+                    const double toArea = std::abs(dot(v.ng, d)) / d2;
+                    arrivalDensity = lastPdf * toArea;
+                    if (lastPatched) arrivalFrom = lastOrigin;
+                    if (lastOutside && !sky_.inRoom(v.p)) outsideDensity = sky_.pdf(views[current ^ 1], lastPoint, d) * toArea;
+                }
             }
             scattered = true;
         }

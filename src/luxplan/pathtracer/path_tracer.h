@@ -1,7 +1,8 @@
 // The photometric path tracer: paths start at a sensor (sensor.h: what a light
 // sampler or a camera pixel responds to) and take next-event estimation to every
 // light (area emitters of emitters.h, the sun disks, the sky through window portals
-// of sky_light.h, and at surfaces the sunlit patches of sun_patches.h) combined with
+// of sky_light.h, the sun's light off surfaces outside seen through those portals,
+// and at surfaces the sunlit patches of sun_patches.h) combined with
 // BSDF sampling by multiple importance sampling (power heuristic), Russian roulette instead of a depth cap, and thin glass panes that
 // shadow rays and paths pass through, attenuated by the pane's transmittance (the
 // windows' panes analytically for shadow rays, panes.h). Translucent surfaces are
@@ -31,6 +32,9 @@ struct PathTracerOptions {
     EmitterSelection emitterSelection = EmitterSelection::PowerDistance;
     bool portals = true;       // sample the sky through the room's openings from inside it
     bool sunPatches = true;    // sample the room's sunlit patches at surface vertices
+    // Follow the sky's portal samples that meet a surface outside the room (a facade
+    // across the street) and take the sun's light there.
+    bool exteriorSun = true;
     int rouletteDepth = 3;     // bounces before Russian roulette starts
     int maxDepth = 256;        // a safety net only: roulette ends paths long before
 };
@@ -75,7 +79,8 @@ struct RayStats {
 // from the path's value with its direction: a sensor made of cells (the directional
 // sampler's strata) counts each sample in the cell its direction falls in.
 struct SensorLight {
-    static constexpr int kCapacity = 3;  // one sample per light kind: emitters, sun, sky
+    // One sample per light kind: emitters, sun, sky (or the sun off a surface outside).
+    static constexpr int kCapacity = 3;
     int count = 0;
     Vec3 wi[kCapacity];
     double value[kCapacity] = {};  // response * Le * T * MIS weight / pdf, luminance
@@ -118,6 +123,10 @@ public:
     // Whether paths sample the sunlit patches (asked for, and the scene has a sun, a room
     // with an opening it shines through, and no glass furniture).
     bool samplesSunPatches() const { return patches_.active(); }
+    // Whether the sky's portal samples that meet a surface outside the room take the
+    // sun's light there (asked for, and the scene has a sun, a sky, a room, visible
+    // static surfaces outside it and no glass furniture).
+    bool samplesExteriorSun() const { return exteriorSun_; }
 
     // Transmittance along p + t w up to tMax (the distance to the sampled point on
     // emitter `target`, or infinity for sun and sky): products of pane transmittances, 0
@@ -135,6 +144,7 @@ private:
     SkyLight sky_;
     SunPatches patches_;
     OpeningPanes panes_;
+    bool exteriorSun_ = false;
 };
 
 }  // namespace luxplan

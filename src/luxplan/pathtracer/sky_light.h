@@ -44,6 +44,9 @@ public:
     SkyLight(const Scene& scene, const DaylightEnvironment* daylight, bool portals);
 
     bool active() const { return daylight_ && daylight_->hasSky(); }
+    // Whether p is in the room, a millimetre of slack around its box (where a view is
+    // active); false without a room.
+    bool inRoom(const Vec3& p) const { return hasRoom_ && room_.contains(p); }
     // The openings as seen from a path's first vertex: cached per thread, since every
     // path of a sampler point starts at the same place.
     void viewFromSensor(const Vec3& p, View& view) const;
