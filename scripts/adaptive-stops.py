@@ -1,12 +1,14 @@
 #!/usr/bin/env python3
 """How often adaptive stopping stops in the wrong linear piece of a sampler's penalty.
 
-usage: scripts/adaptive-stops.py BINARY SCENE LAYOUT [SEEDS] [--sun-patches on|off] [--near-bound DELTA]
+usage: scripts/adaptive-stops.py BINARY SCENE LAYOUT [SEEDS] [--sun-patches on|off] [--exterior-sun on|off]
+                                 [--near-bound DELTA]
 
 The truth of every sampler is the mean of four fixed runs at 16000 paths per point
 (with the sunlit patches: the lowest noise). Then SEEDS adaptive runs at the search's
 most, 1000 paths per point (`measure --adaptive`, the patches as the search traces
-them: off unless asked), are compared with it: an early stop (fewer than 1000 paths)
+them: off unless asked; the sun off surfaces outside as measure takes it: on unless
+asked), are compared with it: an early stop (fewer than 1000 paths)
 whose value lies in another piece than the truth's (below, inside or above the target
 band) is a wrong stop. Also reported: values beyond 3 of their standard errors from
 the truth (4.53 for an error from eight fold values, Student's t with 7 degrees of
@@ -25,9 +27,9 @@ import sys
 import tempfile
 
 
-def measure(binary, scene, layout, paths, seed, patches, adaptive):
-    cmd = [binary, "measure", scene, "--paths", str(paths), "--threads", "2", "--json",
-           "--sun-patches", patches, "--seed", str(seed)] + ([] if layout == "-" else ["--layout", layout])
+def measure(binary, scene, layout, paths, seed, patches, adaptive, exterior="on"):
+    cmd = [binary, "measure", scene, "--paths", str(paths), "--threads", "2", "--json", "--sun-patches", patches,
+           "--exterior-sun", exterior, "--seed", str(seed)] + ([] if layout == "-" else ["--layout", layout])
     if adaptive:
         cmd.append("--adaptive")
     return json.loads(subprocess.run(cmd, capture_output=True, text=True, check=True).stdout)["samplers"]
@@ -54,7 +56,7 @@ def sampler_specs(scene):
 
 
 def check(a, scene, truth):
-    runs = [measure(a.binary, scene, a.layout, 1000, s, a.sun_patches, True) for s in range(1, a.seeds + 1)]
+    runs = [measure(a.binary, scene, a.layout, 1000, s, a.sun_patches, True, a.exterior_sun) for s in range(1, a.seeds + 1)]
     wrong_total = beyond_total = early_total = 0
     paths = [0] * len(runs)
     print(f"{'sampler':24s} {'truth':>9s} {'mean':>9s} {'paths/pt':>9s} {'beyond':>7s} {'early':>6s} {'wrong':>6s}")
@@ -89,6 +91,7 @@ def main():
     parser.add_argument("layout")
     parser.add_argument("seeds", nargs="?", type=int, default=16)
     parser.add_argument("--sun-patches", choices=["on", "off"], default="off")
+    parser.add_argument("--exterior-sun", choices=["on", "off"], default="on")
     parser.add_argument("--near-bound", type=float, action="append", default=[])
     a = parser.parse_args()
     refs = [measure(a.binary, a.scene, a.layout, 16000, 1000 + s, "on", False) for s in range(4)]

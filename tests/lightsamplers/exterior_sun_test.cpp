@@ -36,11 +36,11 @@ constexpr double kSunNormalLx = 60000;
 // facade facing it, lit over the room by the sun in the west at an altitude of atan(2),
 // so the room's shadow falls below the part of the facade the window shows. A sky of
 // a micro-nit keeps the portals.
-SceneBuilder facadeScene(double sunAzimuthDeg) {
+SceneBuilder facadeScene(double sunAzimuthDeg, double skyNits = 1e-6) {
     SceneBuilder b;
     b.material("black", test::diffuse(0))
         .material("white", test::diffuse(0.8))
-        .sunAndUniformSky({std::atan(2.0) * 180 / kPi, sunAzimuthDeg, kSunNormalLx}, 1e-6, 0)
+        .sunAndUniformSky({std::atan(2.0) * 180 / kPi, sunAzimuthDeg, kSunNormalLx}, skyNits, 0)
         .room({0, 0, 0}, {4, 4, 3}, "black", "black", "black")
         .window(Wall::East, 1.5, 1, 1, 1)
         .box("facade", {10, -50, -20}, {12, 50, 40}, "white");
@@ -64,6 +64,21 @@ TEST(ExteriorSun, AgreesWithTheLightASunlitFacadeSendsThroughAWindow) {
     const SamplerResult a = with.measure(4000).samplers[0], b = without.measure(4000).samplers[0];
     EXPECT_NEAR(a.value, expected, 4 * a.standardError + 2e-3 * expected) << a.standardError;
     EXPECT_NEAR(b.value, expected, 4 * b.standardError + 2e-3 * expected) << b.standardError;
+    EXPECT_LT(a.standardError, 0.3 * b.standardError);
+}
+
+// The same with a bright sky, which lights the facade about as much as the sun (the
+// window shows the facade alone): the sky's light off it is taken at z too, so the
+// value is the one BSDF sampling finds, with far less noise.
+TEST(ExteriorSun, TakesTheSkysLightOffTheFacadeToo) {
+    const Scene scene =
+        facadeScene(270, 20000).sampler("p", planarSampler({2, 2, 1.5}, {1, 0, 0}, {0, 0, 1}, {0.01, 0.01}, {1, 1}), 0).build();
+    PathTracerOptions off;
+    off.exteriorSun = false;
+    SceneLab with(scene), without(scene, off);
+    const SamplerResult a = with.measure(8000).samplers[0], b = without.measure(8000).samplers[0];
+    EXPECT_NEAR(a.value, b.value, 4 * std::hypot(a.standardError, b.standardError))
+        << a.standardError << " " << b.standardError;
     EXPECT_LT(a.standardError, 0.3 * b.standardError);
 }
 

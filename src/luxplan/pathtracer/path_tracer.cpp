@@ -331,6 +331,8 @@ double PathTracer::sample(const Sensor& sensor, PathSamples& samples, RayStats& 
                 if (source == LightBudget::kSun && arrivalDensity > 0) {
                     const double b = otherSunDensity(wi);
                     if (b > 0) w = sunWeight(arrivalDensity, lightPdf, arrivalDensity, b, lightPdf, bsdfPdf);
+                } else if (source == LightBudget::kSky && outsideDensity > 0) {
+                    w = sunWeight(arrivalDensity, lightPdf, arrivalDensity, outsideDensity, lightPdf, bsdfPdf);
                 }
                 Vec3 contribution = throughput * f * Le * (T * w / lightPdf);
                 if (stats.budget) stats.budget->credit(source, depth, luminance(contribution));
@@ -342,10 +344,10 @@ double PathTracer::sample(const Sensor& sensor, PathSamples& samples, RayStats& 
                 }
             };
             // The sky's portal sample, followed to what it meets (exteriorSun_): open sky,
-            // as addLight would take it, or a surface outside the room, whose light from
-            // the sun (this vertex's sun sample, drawn independently) it takes. That
-            // path (here -> z -> sun) BSDF sampling here also makes, then the sun's
-            // sampling or BSDF sampling at z: the power heuristic over the three.
+            // as addLight would take it, or a surface z outside the room, whose light
+            // from the sun and the sky it takes (samples drawn independently of the
+            // portal's). A path here -> z -> light BSDF sampling here also makes, then
+            // the light's sampling or BSDF sampling at z: the power heuristic over the three.
             auto addSkyOrOutside = [&](const EnvironmentSample& s, const EnvironmentSample& sunAtZ) {
                 if (!(s.pdf > 0)) return;
                 const Vec3 f = evalCos(v, s.wi);
@@ -359,26 +361,40 @@ double PathTracer::sample(const Sensor& sensor, PathSamples& samples, RayStats& 
                     else stats.footprint->addOcclusion(from, s.wi, 0, kInf, blockers, false);
                 }
                 Vec3 contribution;
-                int source = LightBudget::kSky, creditDepth = depth;
+                int creditDepth = depth;
                 if (!z) {
                     if (maxComponent(s.Le) <= 0) return;
                     const double T = panes_.transmittance(from, s.wi, kInf);
                     if (T <= 0) return;
                     contribution = throughput * f * s.Le * (T * powerHeuristic(1, s.pdf, 1, pdfOf(v, s.wi)) / s.pdf);
                 } else {
-                    if (z->kind == HitKind::Emitter || sky_.inRoom(z->point) || !(sunAtZ.pdf > 0)) return;
-                    const Vertex outside = surfaceVertex(*z, bsdfs_[z->material], -s.wi);
-                    const Vec3 fz = evalCos(outside, sunAtZ.wi);
-                    if (maxComponent(fz) <= 0) return;
+                    if (z->kind == HitKind::Emitter || sky_.inRoom(z->point)) return;
                     const double T = panes_.transmittance(from, s.wi, z->t);
                     if (T <= 0) return;
-                    const double toSun = transmittance(spawn(outside, sunAtZ.wi), sunAtZ.wi, kInf, -1, stats);
-                    if (toSun <= 0) return;
-                    const double w = sunWeight(s.pdf, sunAtZ.pdf, pdfOf(v, s.wi), s.pdf, sunAtZ.pdf, pdfOf(outside, sunAtZ.wi));
-                    contribution = throughput * f * fz * sunAtZ.Le * (T * toSun * w / (s.pdf * sunAtZ.pdf));
-                    source = LightBudget::kSun, creditDepth = depth + 1;  // reflected, not direct
+                    const Vertex outside = surfaceVertex(*z, bsdfs_[z->material], -s.wi);
+                    const double a = pdfOf(v, s.wi);
+                    // Light arriving at z from direction wl (sampled with density pl),
+                    // weighed against the two BSDF ways to the same path.
+                    auto lightAtZ = [&](const Vec3& wl, const Vec3& Le, double pl) {
+                        if (!(pl > 0) || maxComponent(Le) <= 0) return;
+                        const Vec3 fz = evalCos(outside, wl);
+                        if (maxComponent(fz) <= 0) return;
+                        const double V = transmittance(spawn(outside, wl), wl, kInf, -1, stats);
+                        if (V <= 0) return;
+                        const double w = sunWeight(s.pdf, pl, a, s.pdf, pl, pdfOf(outside, wl));
+                        contribution += throughput * f * fz * Le * (T * V * w / (s.pdf * pl));
+                    };
+                    // The sun (this vertex's sun sample), then the sky and the ground, which
+                    // light a facade too (a sample of the map, as a vertex outside samples
+                    // it, from the path's own stream).
+                    lightAtZ(sunAtZ.wi, sunAtZ.Le, sunAtZ.pdf);
+                    const double u0 = samples.rng().uniform();
+                    const EnvironmentSample skyAtZ = daylight_->sampleSky({u0, samples.rng().uniform()});
+                    lightAtZ(skyAtZ.wi, skyAtZ.Le, skyAtZ.pdf);
+                    if (maxComponent(contribution) <= 0) return;
+                    creditDepth = depth + 1;  // reflected off z, not direct
                 }
-                if (stats.budget) stats.budget->credit(source, creditDepth, luminance(contribution));
+                if (stats.budget) stats.budget->credit(LightBudget::kSky, creditDepth, luminance(contribution));
                 if (depth == 0 && sensorLight) {
                     sensorLight->wi[sensorLight->count] = s.wi;
                     sensorLight->value[sensorLight->count++] = luminance(contribution);
@@ -459,7 +475,12 @@ double PathTracer::sample(const Sensor& sensor, PathSamples& samples, RayStats& 
                     // Depth 0 is the sensor's own ray, through panes and off mirrors.
                     const bool hidden = depth == 0 && sensor.hidesSources();
                     Vec3 sky = daylight_->Le(d), sun = hidden ? Vec3() : daylight_->sunLe(d);
-                    double wSky = lastDelta ? 1 : powerHeuristic(1, lastPdf, 1, sky_.pdf(views[current ^ 1], lastPoint, d));
+                    double wSky = 1;
+                    if (!lastDelta) {
+                        const double pSky = sky_.pdf(views[current ^ 1], lastPoint, d);
+                        wSky = outsideDensity > 0 ? sunWeight(arrivalDensity, lastPdf, arrivalDensity, outsideDensity, pSky, lastPdf)
+                                                  : powerHeuristic(1, lastPdf, 1, pSky);
+                    }
                     double wSun = 1;
                     if (!lastDelta && maxComponent(sun) > 0) {
                         const double pSun = daylight_->sunPdf(d);
