@@ -28,7 +28,8 @@ std::vector<std::string> paperScenes() {
     std::vector<std::string> names;
     for (const auto& entry : fs::directory_iterator(kPaperScenes)) {
         std::string name = entry.path().filename().string();
-        if (entry.path().extension() == ".json" && name.find("-layout") == std::string::npos)
+        // Hidden files are scratch (scripts/adaptive-stops.py writes its scenes there).
+        if (entry.path().extension() == ".json" && name.find("-layout") == std::string::npos && name[0] != '.')
             names.push_back(entry.path().stem().string());
     }
     std::sort(names.begin(), names.end());
