@@ -185,9 +185,9 @@ void registerMeasureCommand(CLI::App& app, int& threads) {
         ->check(CLI::IsMember({"on", "off"}));
     cmd->add_option("--exterior-sun", args->exteriorSun,
                     "Follow the sky's samples through the openings to sunlit surfaces outside (a facade across the "
-                    "street) and take the sun's light there (on, default: where the sun can light a side of something "
-                    "outside that an opening sees) or find that light by BSDF sampling alone (off); the same values "
-                    "either way")
+                    "street) and take the light of the sun and the sky there (on, default: where the sun can light a "
+                    "side of something outside that an opening sees) or find that light by BSDF sampling alone (off); "
+                    "the same values either way")
         ->check(CLI::IsMember({"on", "off"}));
     cmd->add_flag("--flat", args->flat, "Measure in the flattened scene (read the layout_flat.json of optimize --flat)");
     cmd->callback([args] { namingScene(args->scene, [&] { runMeasure(*args); }); });

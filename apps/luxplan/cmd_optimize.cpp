@@ -69,6 +69,7 @@ struct OptimizeArgs {
          freshNoise = false, noiseBlind = false, nested = false, cycle = false, singleTest = false;
     std::string sampling = "sobol";
     std::string sunPatches = "report";
+    std::string exteriorSun = "on";
 };
 
 // One status line, redrawn in place on a terminal, printed every few seconds
@@ -160,6 +161,7 @@ int runOptimize(const OptimizeArgs& args) {
         PathTracerOptions search, report;
         search.sunPatches = args.sunPatches == "on";
         report.sunPatches = args.sunPatches != "off";
+        search.exteriorSun = report.exteriorSun = args.exteriorSun == "on";
         lighting = std::make_unique<PathTracedLighting>(scene, daylight ? &*daylight : nullptr, measure, search, report);
         lighting->setReportPaths(reportPaths);  // confirmations, the final choice and the report
         lighting->setIncremental(!args.fullEvaluation);
@@ -221,6 +223,7 @@ int runOptimize(const OptimizeArgs& args) {
         OutputOptions pictures;
         pictures.seed = options.seed;
         pictures.tracing.sunPatches = args.sunPatches != "off";
+        pictures.tracing.exteriorSun = args.exteriorSun == "on";
         pictures.initialLabel = "start";
         // A (second) stop signal from now on skips the pictures still to make.
         interrupted.store(false);
@@ -272,6 +275,12 @@ void registerOptimizeCommand(CLI::App& app, int& threads) {
                     "lower noise saves), everywhere (on) or nowhere (off). The values are the same, with less noise "
                     "where sunlight bounces")
         ->check(CLI::IsMember({"on", "off", "report"}));
+    cmd->add_option("--exterior-sun", args->exteriorSun,
+                    "Follow the sky's samples through the openings to sunlit surfaces outside and take the light of "
+                    "the sun and the sky there (on, default: where the sun can light a side of something outside "
+                    "that an opening sees) or find that light by BSDF sampling alone (off), in the search, the "
+                    "report and the pictures; the same values either way")
+        ->check(CLI::IsMember({"on", "off"}));
     cmd->add_flag("--full-evaluation", args->fullEvaluation,
                   "Trace every path of every evaluated layout (default: only the paths a move can change are "
                   "traced again; the numbers are the same)");
