@@ -125,6 +125,27 @@ TEST(Directional, AdaptiveMeasurementDropsStrataThatCannotLiftTheMaxAboveTheBand
         EXPECT_EQ(placed->stillNeeded(e, z, lo, hi), (std::vector<char>{1, 1, 0, 1})) << lo << " " << hi;
 }
 
+// The max is at least every stratum's own lower end: the brightest stratum's bounds it
+// from below, and the other strata's upper ends from above.
+TEST(Directional, EveryStratumBoundsTheMaxFromBelow) {
+    auto placed = directionalSampler({0, 0, 0}, {0, 1, 0}, kZ, 60, 2)->place(Transform());
+    ItemEstimates e(4, 1);
+    const double paths[4][2] = {{140, 160}, {0, 300}, {10, 12}, {70, 90}};
+    for (int i = 0; i < 4; ++i)
+        for (int g = 0; g < ItemEstimates::kFolds; ++g)
+            for (double v : paths[i]) e.cell(i, 0, g).add(v);
+    const double z = 3;
+    double lowest = -kInf, highest = -kInf;
+    for (int i = 0; i < 4; ++i) {
+        lowest = std::max(lowest, e.of(i).value - z * e.of(i).standardError);
+        highest = std::max(highest, e.of(i).value + z * e.of(i).standardError);
+    }
+    EXPECT_EQ(placed->lowerEnd(e, z), lowest);
+    EXPECT_EQ(placed->upperEnd(e, z), highest);
+    EXPECT_EQ(lowest, e.of(0).value - z * e.of(0).standardError);  // the precise bright one, not the noisy one
+    EXPECT_GT(lowest, 100);
+}
+
 TEST(Directional, UniformSkyThroughAnOpeningReadsItsLuminanceInEveryStratum) {
     const double L = 3000;
     SceneLab lab(SceneBuilder()

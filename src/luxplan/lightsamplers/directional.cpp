@@ -178,6 +178,18 @@ public:
         return most;
     }
 
+    // The other way round, a stratum's own interval bounds the max from below without
+    // any choice in it: once one stratum's lower end is above a bound, so is the max,
+    // where the cross-fitted value's interval (a few fold values, Student's) is wider.
+    double lowerEnd(const ItemEstimates& e, double z) const override {
+        double most = -kInf;
+        for (int i = 0; i < e.items(); ++i) {
+            const Estimate x = e.of(i);
+            most = std::max(most, x.value - z * x.standardError);
+        }
+        return most;
+    }
+
     Estimate combine(const ItemEstimates& e) const override {
         const int n = e.items();
         std::vector<double> value, weight;  // per fold with paths

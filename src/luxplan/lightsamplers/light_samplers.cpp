@@ -109,12 +109,14 @@ bool settled(double value, double standardError, double targetMin, double target
 }
 
 // ... for the sampler's value, at zValue errors (as many as its error's degrees of
-// freedom ask: core/confidence.h) and up to the sampler's upper end at z
-// (PlacedSampler::upperEnd), and each of its statistics goals, at z.
+// freedom ask: core/confidence.h), from the sampler's lower end up to its upper end
+// at z where they say more (PlacedSampler::lowerEnd, upperEnd), and each of its
+// statistics goals, at z.
 bool settled(const LightSamplerSpec& spec, const PlacedSampler& sampler, const Estimate& e, const ItemEstimates& items,
              double zValue, double z) {
     const double hi = std::max(e.value + zValue * e.standardError, sampler.upperEnd(items, z));
-    if (!settled(e.value - zValue * e.standardError, hi, spec.targetMin, spec.targetMax)) return false;
+    const double lo = std::max(e.value - zValue * e.standardError, sampler.lowerEnd(items, z));
+    if (!settled(lo, hi, spec.targetMin, spec.targetMax)) return false;
     if (spec.statistics.empty()) return true;
     std::vector<double> values, errors;
     for (int i = 0; i < items.items(); ++i) {

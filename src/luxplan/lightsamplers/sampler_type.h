@@ -151,6 +151,10 @@ public:
     // interval can fall short of that (a stop needs both below a bound). Default: no
     // more than the value's interval says.
     virtual double upperEnd(const ItemEstimates& /*items*/, double /*z*/) const { return -kInf; }
+    // ... and how low it may be, at z errors, where its items alone bound it from below
+    // more tightly than its own interval does (a stop above a bound needs either).
+    // Default: no more than the value's interval says.
+    virtual double lowerEnd(const ItemEstimates& /*items*/, double /*z*/) const { return -kInf; }
     virtual SamplerDrawing drawing() const = 0;
 };
 
