@@ -5,6 +5,7 @@
 #include <luxplan/emitters/emitter_shape.h>
 #include <luxplan/materials/thin_glass.h>
 #include "support/scene_builder.h"
+#include "support/rect_illuminance.h"
 #include "support/scene_lab.h"
 #include "support/threads.h"
 
@@ -13,6 +14,8 @@ namespace {
 
 using test::SceneBuilder;
 using test::SceneLab;
+using test::cornerIlluminance;
+using test::rectIlluminance;
 
 SceneBuilder withMaterials(double rho) {
     SceneBuilder b;
@@ -28,21 +31,6 @@ std::shared_ptr<const SamplerType> plane(Vec3 center, Vec3 normal, Vec3 up, Vec2
     return planarSampler(center, normal, up, size, grid);
 }
 const Vec3 kUp(0, 1, 0), kZ(0, 0, 1);
-
-// Illuminance at a point at height h below one corner of an a x b Lambertian rectangle
-// of luminance L, parallel to the receiver: E = L/2 [X/sqrt(1+X^2) atan(Y/sqrt(1+X^2)) +
-// Y/sqrt(1+Y^2) atan(X/sqrt(1+Y^2))] with X = a/h, Y = b/h (the classic configuration factor).
-double cornerIlluminance(double L, double a, double b, double h) {
-    double X = a / h, Y = b / h;
-    return L / 2 *
-           (X / std::sqrt(1 + X * X) * std::atan(Y / std::sqrt(1 + X * X)) +
-            Y / std::sqrt(1 + Y * Y) * std::atan(X / std::sqrt(1 + Y * Y)));
-}
-// Any point whose projection falls inside the rectangle [x0,x1] x [y0,y1]: four corners.
-double rectIlluminance(double L, double x0, double x1, double y0, double y1, double px, double py, double h) {
-    return cornerIlluminance(L, px - x0, py - y0, h) + cornerIlluminance(L, x1 - px, py - y0, h) +
-           cornerIlluminance(L, px - x0, y1 - py, h) + cornerIlluminance(L, x1 - px, y1 - py, h);
-}
 
 void expectWithin(const SamplerResult& r, double expected, double relativeSystematic, const std::string& what) {
     double tolerance = 4 * r.standardError + relativeSystematic * std::abs(expected);

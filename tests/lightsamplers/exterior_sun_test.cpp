@@ -9,6 +9,7 @@
 #include <luxplan/lightsamplers/light_samplers.h>
 #include <luxplan/scene/room.h>
 #include "support/scene_builder.h"
+#include "support/rect_illuminance.h"
 #include "support/scene_lab.h"
 
 namespace luxplan {
@@ -16,19 +17,6 @@ namespace {
 
 using test::SceneBuilder;
 using test::SceneLab;
-
-// The projected solid angle of a rectangle [x0, x1] x [y0, y1] in a plane at distance h,
-// parallel to the receiving plane, from a point whose projection falls inside it:
-// four corners of the classic configuration factor (as lightsamplers/analytic_test.cpp).
-double cornerProjectedSolidAngle(double a, double b, double h) {
-    const double X = a / h, Y = b / h;
-    return 0.5 * (X / std::sqrt(1 + X * X) * std::atan(Y / std::sqrt(1 + X * X)) +
-                  Y / std::sqrt(1 + Y * Y) * std::atan(X / std::sqrt(1 + Y * Y)));
-}
-double rectProjectedSolidAngle(double x0, double x1, double y0, double y1, double px, double py, double h) {
-    return cornerProjectedSolidAngle(px - x0, py - y0, h) + cornerProjectedSolidAngle(x1 - px, py - y0, h) +
-           cornerProjectedSolidAngle(px - x0, y1 - py, h) + cornerProjectedSolidAngle(x1 - px, y1 - py, h);
-}
 
 constexpr double kSunNormalLx = 60000;
 
@@ -54,8 +42,8 @@ TEST(ExteriorSun, AgreesWithTheLightASunlitFacadeSendsThroughAWindow) {
     ASSERT_NEAR(lo.x, 4, 1e-12);
     // E = rho / pi * (E_sun cos) * projected solid angle of the window.
     const double facadeLuminance = 0.8 / kPi * kSunNormalLx / std::sqrt(5.0);
-    const double expected = facadeLuminance * rectProjectedSolidAngle(std::min(lo.y, hi.y), std::max(lo.y, hi.y), std::min(lo.z, hi.z),
-                                                                      std::max(lo.z, hi.z), 2, 1.5, 2);
+    const double expected = test::rectIlluminance(facadeLuminance, std::min(lo.y, hi.y), std::max(lo.y, hi.y),
+                                                  std::min(lo.z, hi.z), std::max(lo.z, hi.z), 2, 1.5, 2);
     PathTracerOptions off;
     off.exteriorSun = false;
     SceneLab with(scene), without(scene, off);
