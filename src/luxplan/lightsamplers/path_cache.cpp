@@ -1,6 +1,7 @@
 #include <luxplan/lightsamplers/path_cache.h>
 
 #include <algorithm>
+#include <limits>
 
 #include <luxplan/core/parallel.h>
 #include <luxplan/emitters/emitter_shape.h>
@@ -14,6 +15,28 @@ bool same(const Transform& a, const Transform& b) { return a.m == b.m && a.t.x =
 // Embree traces in float and pane crossings step 0.1 mm off the line: a margin well
 // above both, growing with the coordinates.
 constexpr double kMargin = 1e-3, kRelativeMargin = 1e-6;
+constexpr float kInfF = std::numeric_limits<float>::infinity();
+constexpr double kBoxPad = 1e-4;
+constexpr double kReachMargin = 0.5;  // m around the room's box  // over the clipping's rounding (moved boxes carry kMargin)
+
+// `box` extended by the part of segment s inside `clip` (slabs, in double).
+void extendByPartInside(Bounds3& box, const Segment& s, const Bounds3& clip) {
+    const Vec3 from(s.from[0], s.from[1], s.from[2]), to(s.to[0], s.to[1], s.to[2]);
+    const Vec3 d = to - from;
+    double t0 = 0, t1 = 1;
+    for (int axis = 0; axis < 3; ++axis) {
+        if (d[axis] == 0) {
+            if (from[axis] < clip.lo[axis] || from[axis] > clip.hi[axis]) return;
+            continue;
+        }
+        double a = (clip.lo[axis] - from[axis]) / d[axis], b = (clip.hi[axis] - from[axis]) / d[axis];
+        if (a > b) std::swap(a, b);
+        t0 = std::max(t0, a), t1 = std::min(t1, b);
+        if (t0 > t1) return;
+    }
+    box.extend(t0 == 0 ? from : from + d * t0);
+    box.extend(t1 == 1 ? to : from + d * t1);
+}
 
 // Boxes around clusters of triangles: median splits of the centroids along the widest
 // axis, down to a dozen triangles (a box part's six faces become thin slabs).
@@ -44,6 +67,11 @@ void clusterBounds(const TriangleMesh& mesh, std::vector<uint32_t>& triangles, s
 }  // namespace
 
 PathCache::PathCache(const Scene& scene, size_t maxSegments) : scene_(scene), maxSegments_(maxSegments) {
+    reach_ = Bounds3(Vec3(-kInf, -kInf, -kInf), Vec3(kInf, kInf, kInf));
+    if (const RoomShell* room = scene.room()) {
+        const Vec3 pad(kReachMargin, kReachMargin, kReachMargin);
+        reach_ = Bounds3(room->box.lo - pad, room->box.hi + pad);
+    }
     localClusters_.resize(scene.entities.size());
     for (size_t i = 0; i < scene.entities.size(); ++i) {
         const Entity& e = scene.entities[i];
@@ -88,6 +116,7 @@ void PathCache::begin(const EmbreeScene& rt, const std::vector<int>& workSampler
             }
             if (!scene_.entities[i].emitters.empty()) emittersMoved_ = true;
         }
+    movedInReach_ = movedUnion_.empty() || (reach_.contains(movedUnion_.lo) && reach_.contains(movedUnion_.hi));
     workMoved_.assign(workSampler.size(), 0);
     for (size_t w = 0; w < workSampler.size(); ++w) {
         const int entity = scene_.samplers[size_t(workSampler[w])].entity;
@@ -106,6 +135,9 @@ PathCache::Verdict PathCache::check(size_t work, const Record& r, const Paths& i
     if (emittersMoved_ && r.usedEmitterChoice) return Verdict::Changed;
     if (moved_.empty()) return Verdict::Missed;
     const Bounds3& u = movedUnion_;
+    if (movedInReach_ && (r.hi[0] < u.lo.x || r.lo[0] > u.hi.x || r.hi[1] < u.lo.y || r.lo[1] > u.hi.y ||
+                          r.hi[2] < u.lo.z || r.lo[2] > u.hi.z))
+        return Verdict::Missed;
     const Segment* segments = in.segments.data() + r.firstSegment;
     const OcclusionTest* tests = in.tests.data() + r.firstTest;
     uint32_t test = 0;  // the first test whose segment is at or after the current one
@@ -173,6 +205,12 @@ void PathCache::keep(size_t work, int path, const PathContributions& contributio
         r.firstSegment = uint32_t(p.traced.segments.size()), r.segmentCount = uint32_t(n);
         r.firstTest = uint32_t(p.traced.tests.size()), r.testCount = uint32_t(footprint.tests.size());
         p.traced.segments.insert(p.traced.segments.end(), footprint.segments.begin(), footprint.segments.end());
+        Bounds3 box;
+        for (const Segment& s : footprint.segments) extendByPartInside(box, s, reach_);
+        for (int a = 0; a < 3; ++a) {  // rounded outwards to float, a margin beyond Embree's
+            r.lo[a] = box.empty() ? kInfF : std::nextafter(float(box.lo[a] - kBoxPad), -kInfF);
+            r.hi[a] = box.empty() ? -kInfF : std::nextafter(float(box.hi[a] + kBoxPad), kInfF);
+        }
         p.traced.tests.insert(p.traced.tests.end(), footprint.tests.begin(), footprint.tests.end());
     }
     p.tracedPaths.push_back(path);

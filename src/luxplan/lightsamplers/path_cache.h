@@ -19,6 +19,7 @@
 // makes it the committed state (the optimizer accepted the layout), discard() drops it.
 #pragma once
 
+#include <array>
 #include <atomic>
 #include <cstdint>
 #include <vector>
@@ -70,6 +71,10 @@ private:
     struct Record {
         PathContributions contributions{0};
         uint32_t firstSegment = 0, segmentCount = 0, firstTest = 0, testCount = 0;
+        // The box of its segments' parts inside reach_: a move inside reach_ that misses
+        // it misses the path, and the check reads no segment (most paths of a
+        // measurement pass far from the move).
+        std::array<float, 3> lo{}, hi{};
         bool usedEmitterChoice = false;
         bool kept = false;  // false: no record (never traced, or over the memory bound)
     };
@@ -102,6 +107,9 @@ private:
     const Scene& scene_;
     size_t maxSegments_;
     std::vector<std::vector<Bounds3>> localClusters_;  // per entity: its triangles' and luminaires', entity frame
+    // Where moves happen: the room's box with a margin (rays to the sky leave it, and
+    // their parts outside never meet a move inside), or everywhere without a room.
+    Bounds3 reach_;
 
     // Committed state.
     bool hasCommitted_ = false;
@@ -116,6 +124,7 @@ private:
     std::vector<Transform> newWorld_;
     std::vector<PlacedBoxes> moved_;  // old and new, of every moved entity with geometry
     Bounds3 movedUnion_;
+    bool movedInReach_ = false;  // movedUnion_ lies inside reach_: a path's box decides a miss
     std::vector<char> workMoved_;    // per work item: its sampler moved
     bool emittersMoved_ = false;
     std::vector<Pending> pending_;
