@@ -83,5 +83,34 @@ TEST(IncrementalLighting, TheSearchIsTheSameWithAndWithoutThePathCache) {
     EXPECT_GT(accepted, 10);  // commits and reverts both happened
 }
 
+// Each move type counts the paths its proposals' light traced afresh: together, all
+// the evaluator traced for the chain's proposals; none for proposals never lit; and the
+// path cache shows there, fewer for the same chain.
+TEST(IncrementalLighting, EachMoveCountsThePathsItsLightTraced) {
+    const Scene scene = litStudy();
+    const DaylightEnvironment daylight = buildDaylight(*scene.daylight, scene.site);
+    MeasureOptions measure;
+    measure.pathsPerPoint = 48, measure.seed = 5, measure.adaptive = true, measure.minPaths = 16;
+    uint64_t traced[2] = {};
+    for (int incremental = 0; incremental < 2; ++incremental) {
+        PathTracedLighting lighting(scene, &daylight, measure);
+        lighting.setIncremental(incremental == 1);
+        Optimizer optimizer(scene, optimizerOptions(scene), &lighting);
+        optimizer.initialize();
+        const uint64_t start = lighting.tracedPaths();
+        for (int i = 0; i < 150; ++i) optimizer.step();
+        for (const LevelStats& level : optimizer.levels())
+            for (const MoveStats& m : level.moves) {
+                traced[incremental] += m.pathsTraced;
+                if (m.proposed - m.outside - m.rejectedGeometry - m.screened == 0) {
+                    EXPECT_EQ(m.pathsTraced, 0u);
+                }
+            }
+        EXPECT_EQ(traced[incremental], lighting.tracedPaths() - start);
+    }
+    EXPECT_GT(traced[1], 0u);
+    EXPECT_LT(traced[1], traced[0]);
+}
+
 }  // namespace
 }  // namespace luxplan

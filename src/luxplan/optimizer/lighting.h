@@ -43,6 +43,9 @@ public:
     // estimates are a fixed function of the layout). If they do, the chain measures
     // its current layout again before each test, as the penalty method needs.
     virtual bool drawsAnew() const { return false; }
+    // Paths traced so far over every evaluation and measurement (not those a cache
+    // reused); 0 for an evaluator that traces none.
+    virtual uint64_t tracedPaths() const { return 0; }
     // The chain accepted (commit) or refused (revert) the layout last evaluated: an
     // evaluator that keeps work between layouts (the path cache) keeps it for the
     // accepted layout only. Evaluations measure against the last committed layout.

@@ -355,6 +355,7 @@ void Optimizer::step() {
         ++stats.outside;
     } else {
         const std::vector<Transform> world = worldTransforms(*scene_, proposed);
+        const uint64_t tracedBefore = lighting_ ? lighting_->tracedPaths() : 0;
         if (options_.delayedAcceptance && !currentEval_.rejected) {
             // Delayed acceptance: the rules' change first, the light only if it passes.
             e = evaluateGeometry(world);
@@ -376,6 +377,7 @@ void Optimizer::step() {
                 accept = metropolis(e, p.logHastings, t, rng);
             }
         }
+        if (lighting_) stats.pathsTraced += lighting_->tracedPaths() - tracedBefore;
         noteNoise(e);
         if (e.rejected && !accept) ++stats.rejectedGeometry;
         if (accept) geometry_.commit();

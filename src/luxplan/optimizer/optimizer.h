@@ -105,6 +105,9 @@ struct MoveStats {
     int64_t rejectedGeometry = 0;  // a geometric term rejected the proposal (no lighting evaluated)
     int64_t screened = 0;          // rejected on its geometric change alone (delayed acceptance; no lighting evaluated)
     int64_t accepted = 0;
+    // Paths the light of these proposals traced afresh (LightingEvaluator::tracedPaths):
+    // where the search's time goes.
+    uint64_t pathsTraced = 0;
     double acceptance() const { return proposed ? double(accepted) / double(proposed) : 0.0; }
 };
 

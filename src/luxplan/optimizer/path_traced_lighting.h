@@ -41,7 +41,7 @@ public:
     const MeasureResult& lastMeasurement() const { return last_; }
     uint64_t evaluations() const { return evaluations_; }
     // Paths over all evaluations: traced, and read from the path cache.
-    uint64_t tracedPaths() const { return tracedPaths_; }
+    uint64_t tracedPaths() const override { return tracedPaths_; }
     uint64_t reusedPaths() const { return reusedPaths_; }
     RayStats rays() const { return rays_; }
 

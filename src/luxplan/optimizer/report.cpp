@@ -34,7 +34,8 @@ const char* targetName(OverlapTarget t) {
 
 Json moveJson(const MoveStats& s) {
     return {{"proposed", s.proposed}, {"accepted", s.accepted}, {"outside", s.outside},
-            {"rejected_geometry", s.rejectedGeometry}, {"screened", s.screened}, {"acceptance", s.acceptance()}};
+            {"rejected_geometry", s.rejectedGeometry}, {"screened", s.screened}, {"acceptance", s.acceptance()},
+            {"paths_traced", s.pathsTraced}};
 }
 
 Json termJson(const Scene& scene, const PenaltyTerm& t) {
@@ -145,6 +146,7 @@ std::string reportJson(const Scene& scene, const OptimizerResult& r) {
             const MoveStats& s = level.moves[int(t)];
             total.proposed += s.proposed, total.accepted += s.accepted;
             total.outside += s.outside, total.rejectedGeometry += s.rejectedGeometry, total.screened += s.screened;
+            total.pathsTraced += s.pathsTraced;
         }
         moves[moveName(t)] = moveJson(total);
     }

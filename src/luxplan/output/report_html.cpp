@@ -374,7 +374,8 @@ void constraintTables(std::ostringstream& out, const Scene& scene, const Geometr
 void moveTable(std::ostringstream& out, const OptimizerResult& r) {
     if (r.levels.empty()) return;
     out << "<h2>Moves</h2>\n<table>\n<tr><th>level</th><th>move</th><th>proposed</th><th>accepted</th><th>outside</th>"
-           "<th>rejected (geometry)</th><th>screened (rules' change, no light traced)</th><th>acceptance</th></tr>\n";
+           "<th>rejected (geometry)</th><th>screened (rules' change, no light traced)</th><th>acceptance</th>"
+           "<th>paths traced (light)</th></tr>\n";
     for (const LevelStats& level : r.levels) {
         for (MoveType t : kMoveTypes) {
             const MoveStats& s = level.moves[int(t)];
@@ -383,7 +384,7 @@ void moveTable(std::ostringstream& out, const OptimizerResult& r) {
                 << cell(escapeHtml(moveName(t))) << "<td class=\"num\">" << s.proposed << "</td><td class=\"num\">"
                 << s.accepted << "</td><td class=\"num\">" << s.outside << "</td><td class=\"num\">" << s.rejectedGeometry
                 << "</td><td class=\"num\">" << s.screened << "</td><td class=\"num\">" << number(100 * s.acceptance(), 1)
-                << "%</td></tr>\n";
+                << "%</td><td class=\"num\">" << s.pathsTraced << "</td></tr>\n";
         }
     }
     out << "</table>\n";
