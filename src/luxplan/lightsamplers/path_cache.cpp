@@ -16,8 +16,8 @@ bool same(const Transform& a, const Transform& b) { return a.m == b.m && a.t.x =
 // above both, growing with the coordinates.
 constexpr double kMargin = 1e-3, kRelativeMargin = 1e-6;
 constexpr float kInfF = std::numeric_limits<float>::infinity();
-constexpr double kBoxPad = 1e-4;
-constexpr double kReachMargin = 0.5;  // m around the room's box  // over the clipping's rounding (moved boxes carry kMargin)
+constexpr double kBoxPad = 1e-4;      // over the clipping's rounding (moved boxes carry kMargin)
+constexpr double kReachMargin = 0.5;  // m around the room's box: where moves happen (reach_)
 
 // `box` extended by the part of segment s inside `clip` (slabs, in double).
 void extendByPartInside(Bounds3& box, const Segment& s, const Bounds3& clip) {
@@ -207,7 +207,7 @@ void PathCache::keep(size_t work, int path, const PathContributions& contributio
         p.traced.segments.insert(p.traced.segments.end(), footprint.segments.begin(), footprint.segments.end());
         Bounds3 box;
         for (const Segment& s : footprint.segments) extendByPartInside(box, s, reach_);
-        for (int a = 0; a < 3; ++a) {  // rounded outwards to float, a margin beyond Embree's
+        for (int a = 0; a < 3; ++a) {  // padded, and rounded outwards to float
             r.lo[a] = box.empty() ? kInfF : std::nextafter(float(box.lo[a] - kBoxPad), -kInfF);
             r.hi[a] = box.empty() ? -kInfF : std::nextafter(float(box.hi[a] + kBoxPad), kInfF);
         }
