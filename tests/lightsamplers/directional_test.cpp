@@ -98,6 +98,15 @@ TEST(Directional, AdaptiveMeasurementDropsStrataThatCannotHoldTheMax) {
     EXPECT_NEAR(r.value, expected, 4 * r.standardError + 0.01 * expected);
 }
 
+// Four strata's estimates, each fold holding the same two paths of its stratum.
+ItemEstimates fourStrata(const double (&paths)[4][2]) {
+    ItemEstimates e(4, 1);
+    for (int i = 0; i < 4; ++i)
+        for (int g = 0; g < ItemEstimates::kFolds; ++g)
+            for (double v : paths[i]) e.cell(i, 0, g).add(v);
+    return e;
+}
+
 // Which strata a look leaves with paths to trace: those that may hold the max
 // (successive elimination) and, where the band starts at 0, may decide which side of
 // its top the max is on; the others below the top pause (they catch up before the max
@@ -105,13 +114,9 @@ TEST(Directional, AdaptiveMeasurementDropsStrataThatCannotHoldTheMax) {
 TEST(Directional, AdaptiveMeasurementDropsStrataThatCannotLiftTheMaxAboveTheBand) {
     auto placed = directionalSampler({0, 0, 0}, {0, 1, 0}, kZ, 60, 2)->place(Transform());
     ASSERT_EQ(placed->items(), 4);
-    ItemEstimates e(4, 1);
     // Two paths a fold: a noisy bright stratum (150, its upper end far above 100), two
     // precise ones near 80 and a dark one.
-    const double paths[4][2] = {{0, 300}, {75, 85}, {10, 12}, {70, 90}};
-    for (int i = 0; i < 4; ++i)
-        for (int g = 0; g < ItemEstimates::kFolds; ++g)
-            for (double v : paths[i]) e.cell(i, 0, g).add(v);
+    const ItemEstimates e = fourStrata({{0, 300}, {75, 85}, {10, 12}, {70, 90}});
     const double z = 3;
     auto upper = [&](int i) { return e.of(i).value + z * e.of(i).standardError; };
     ASSERT_GT(upper(0), 100);
@@ -129,11 +134,7 @@ TEST(Directional, AdaptiveMeasurementDropsStrataThatCannotLiftTheMaxAboveTheBand
 // from below, and the other strata's upper ends from above.
 TEST(Directional, EveryStratumBoundsTheMaxFromBelow) {
     auto placed = directionalSampler({0, 0, 0}, {0, 1, 0}, kZ, 60, 2)->place(Transform());
-    ItemEstimates e(4, 1);
-    const double paths[4][2] = {{140, 160}, {0, 300}, {10, 12}, {70, 90}};
-    for (int i = 0; i < 4; ++i)
-        for (int g = 0; g < ItemEstimates::kFolds; ++g)
-            for (double v : paths[i]) e.cell(i, 0, g).add(v);
+    const ItemEstimates e = fourStrata({{140, 160}, {0, 300}, {10, 12}, {70, 90}});
     const double z = 3;
     double lowest = -kInf, highest = -kInf;
     for (int i = 0; i < 4; ++i) {
