@@ -22,6 +22,10 @@ constexpr double kReachMargin = 0.5;  // m around the room's box: where moves ha
 // `box` extended by the part of segment s inside `clip` (slabs, in double).
 void extendByPartInside(Bounds3& box, const Segment& s, const Bounds3& clip) {
     const Vec3 from(s.from[0], s.from[1], s.from[2]), to(s.to[0], s.to[1], s.to[2]);
+    if (clip.contains(from) && clip.contains(to)) {  // most segments: no clipping
+        box.extend(from), box.extend(to);
+        return;
+    }
     const Vec3 d = to - from;
     double t0 = 0, t1 = 1;
     for (int axis = 0; axis < 3; ++axis) {
@@ -125,8 +129,7 @@ void PathCache::begin(const EmbreeScene& rt, const std::vector<int>& workSampler
     pending_.resize(workSampler.size());
     for (Pending& p : pending_) p.clear();
     pendingSegments_ = 0;
-    reusedNow_ = 0;
-    askedAgainNow_ = 0;
+    reusedLast_ = askedAgainLast_ = 0;
     measuring_ = true;
 }
 
@@ -188,15 +191,15 @@ const PathContributions* PathCache::reuse(size_t work, int path) {
     const Record& r = committed.records[size_t(path)];
     const Verdict v = check(work, r, committed, true);
     if (v == Verdict::Changed) return nullptr;
-    if (v == Verdict::SameAnswers) ++askedAgainNow_;
-    ++reusedNow_;
+    if (v == Verdict::SameAnswers) ++p.askedAgain;
+    ++p.reused;
     return &r.contributions;
 }
 
 void PathCache::keep(size_t work, int path, const PathContributions& contributions, const PathFootprint& footprint) {
     const size_t n = footprint.segments.size();
-    const bool fits = committedSegments_ + pendingSegments_.fetch_add(n) + n <= maxSegments_;
     Pending& p = pending_[work];
+    const bool fits = reserve(p, n);
     Record r;
     r.contributions = contributions;
     if (fits) {
@@ -215,6 +218,39 @@ void PathCache::keep(size_t work, int path, const PathContributions& contributio
     }
     p.tracedPaths.push_back(path);
     p.traced.records.push_back(r);
+}
+
+bool PathCache::reserve(Pending& p, size_t n) {
+    constexpr size_t kGrant = 4096;  // segments: a few hundred paths
+    if (p.granted < n) {
+        size_t total = pendingSegments_.load(std::memory_order_relaxed);
+        for (;;) {
+            // A whole grant where it fits, else just n (a small bound is filled exactly).
+            size_t want = std::max(n, kGrant);
+            if (committedSegments_ + total + want > maxSegments_) want = n;
+            if (committedSegments_ + total + want > maxSegments_) return false;
+            if (pendingSegments_.compare_exchange_weak(total, total + want, std::memory_order_relaxed)) {
+                p.granted += want;
+                break;
+            }
+        }
+    }
+    p.granted -= n;
+    return true;
+}
+
+uint64_t PathCache::reused() const {
+    if (!measuring_) return reusedLast_;
+    uint64_t sum = 0;
+    for (const Pending& p : pending_) sum += p.reused;
+    return sum;
+}
+
+uint64_t PathCache::askedAgain() const {
+    if (!measuring_) return askedAgainLast_;
+    uint64_t sum = 0;
+    for (const Pending& p : pending_) sum += p.askedAgain;
+    return sum;
 }
 
 void PathCache::commit() {
@@ -285,6 +321,7 @@ void PathCache::discard() {
 }
 
 void PathCache::endMeasurement() {
+    reusedLast_ = reused(), askedAgainLast_ = askedAgain();
     measuring_ = false;
     for (Pending& p : pending_) p.clear();
     pendingSegments_ = 0;

@@ -58,10 +58,10 @@ public:
     // beyond them that the move missed.
     void discard();
 
-    // Paths the last measurement reused.
-    uint64_t reused() const { return reusedNow_; }
+    // Paths the measurement in progress, or else the last one, reused.
+    uint64_t reused() const;
     // ... of which met the move only along shadow queries that answered as before.
-    uint64_t askedAgain() const { return askedAgainNow_; }
+    uint64_t askedAgain() const;
     size_t segments() const { return committedSegments_; }
 
 private:
@@ -86,16 +86,25 @@ private:
         // `r` (a record of `from`) with its footprint copied to the end of these arrays.
         Record append(const Record& r, const Paths& from);
     };
+    // A work item's part of the measurement, written by one thread at a time: counters
+    // shared by the threads would bounce their cache line between the cores at every path.
     struct Pending {
         int visited = 0;  // paths [0, visited) were asked for
         std::vector<int> tracedPaths;  // path index of each of traced.records
         Paths traced;
+        uint64_t reused = 0, askedAgain = 0;
+        size_t granted = 0;  // segments reserved under the memory bound and not yet used
         void clear() {  // keeping the arrays' memory for the next measurement
             visited = 0;
             tracedPaths.clear();
             traced.records.clear(), traced.segments.clear(), traced.tests.clear(), traced.garbage = 0;
+            reused = askedAgain = 0;
+            granted = 0;
         }
     };
+    // Reserves n more segments for `p` under maxSegments_, in grants of many paths'
+    // worth, so that threads seldom meet on the shared count; false when they do not fit.
+    bool reserve(Pending& p, size_t n);
     // Whether a record holds for the layout being measured: changed, missed by the move,
     // or met by it only along shadow queries that answer as they did. `requery`: those
     // may be asked again of the scene (false when the record is to hold for the
@@ -128,9 +137,8 @@ private:
     std::vector<char> workMoved_;    // per work item: its sampler moved
     bool emittersMoved_ = false;
     std::vector<Pending> pending_;
-    std::atomic<size_t> pendingSegments_{0};
-    std::atomic<uint64_t> reusedNow_{0};
-    std::atomic<uint64_t> askedAgainNow_{0};
+    std::atomic<size_t> pendingSegments_{0};  // granted to the work items so far
+    uint64_t reusedLast_ = 0, askedAgainLast_ = 0;  // of the last measurement, once it ended
 };
 
 }  // namespace luxplan
