@@ -211,14 +211,14 @@ TEST(PathCache, MovingTheLampRetracesEveryPathThatChoseAnEmitter) {
     EXPECT_EQ(afterMoving("lamp", 0.1, 8).reusedPaths, 0u);
 }
 
-TEST(PathCache, AMemoryBoundOnlyCostsTime) {
+static void memoryBoundOnlyCostsTime(size_t bound) {
     SceneLab lab(studio());
     MeasureOptions o;
     o.pathsPerPoint = 16;
-    PathCache cache(lab.scene, /* maxSegments = */ 2000);
+    PathCache cache(lab.scene, /* maxSegments = */ bound);
     MeasureResult first = measureSamplers(*lab.tracer, o, &cache);
     cache.commit();
-    EXPECT_LE(cache.segments(), 2000u);
+    EXPECT_LE(cache.segments(), bound);
     MeasureResult again = measureSamplers(*lab.tracer, o, &cache);
     EXPECT_GT(again.reusedPaths, 0u);
     EXPECT_LT(again.reusedPaths, again.paths);
@@ -242,7 +242,18 @@ TEST(PathCache, AMemoryBoundOnlyCostsTime) {
             lab.rt->setLayout(layout);
             lab.tracer->updateLayout();
         }
-        EXPECT_LE(cache.segments(), 2000u);
+        EXPECT_LE(cache.segments(), bound);
+    }
+}
+
+
+// The bound is filled in grants of many paths' segments per work item where they fit
+// (5000: grants of about ten paths, then exact reservations) and path by path where they do
+// not (2000).
+TEST(PathCache, AMemoryBoundOnlyCostsTime) {
+    for (const size_t bound : {size_t(2000), size_t(5000)}) {
+        SCOPED_TRACE("bound " + std::to_string(bound));
+        memoryBoundOnlyCostsTime(bound);
     }
 }
 

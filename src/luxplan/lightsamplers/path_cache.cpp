@@ -221,12 +221,14 @@ void PathCache::keep(size_t work, int path, const PathContributions& contributio
 }
 
 bool PathCache::reserve(Pending& p, size_t n) {
-    constexpr size_t kGrant = 4096;  // segments: a few hundred paths
+    // Segments: a few hundred paths, but grants left unused at the end of a measurement
+    // (at most one per work item) never hold back more than half of the bound.
+    const size_t grant = std::min(size_t(4096), maxSegments_ / (2 * std::max(size_t(1), pending_.size())));
     if (p.granted < n) {
         size_t total = pendingSegments_.load(std::memory_order_relaxed);
         for (;;) {
             // A whole grant where it fits, else just n (a small bound is filled exactly).
-            size_t want = std::max(n, kGrant);
+            size_t want = std::max(n, grant);
             if (committedSegments_ + total + want > maxSegments_) want = n;
             if (committedSegments_ + total + want > maxSegments_) return false;
             if (pendingSegments_.compare_exchange_weak(total, total + want, std::memory_order_relaxed)) {
