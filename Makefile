@@ -52,7 +52,7 @@ fuzz: configure
 
 bench: deps
 	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release -DLUXPLAN_BUILD_BENCH=ON
-	cmake --build $(BUILD) -j $(JOBS) --target luxplan_bench
+	cmake --build $(BUILD) -j $(JOBS) --target luxplan_bench luxplan_path_anatomy
 	./$(BUILD)/bench/luxplan_bench
 
 clean:
