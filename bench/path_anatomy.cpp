@@ -11,7 +11,9 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <cstdlib>
 #include <exception>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -63,6 +65,16 @@ Row trace(const Scene& scene, const EmbreeScene& rt, const DaylightEnvironment* 
     return r;
 }
 
+// A whole number from the command line, or an error that names the argument.
+int wholeNumber(const char* text, const char* what, int least) {
+    char* end = nullptr;
+    const long n = std::strtol(text, &end, 10);
+    if (end == text || *end != '\0' || n < least || n > 100000000)
+        throw std::runtime_error(std::string(what) + " must be a whole number from " + std::to_string(least) + ", not \"" +
+                                 text + "\"");
+    return int(n);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) try {
@@ -76,14 +88,19 @@ int main(int argc, char** argv) try {
     for (size_t k = 0; k < scene.samplers.size(); ++k)
         if (scene.samplers[k].name == argv[3]) samplerIndex = int(k);
     if (samplerIndex < 0) throw std::runtime_error(std::string("no sampler named ") + argv[3]);
-    const int item = std::stoi(argv[4]);
-    const int paths = argc > 5 && argv[5][0] != '-' ? std::stoi(argv[5]) : 20000;
-    const bool sunPatches = argc > 5 && std::strcmp(argv[argc - 1], "--sun-patches") == 0;
+    const int item = wholeNumber(argv[4], "ITEM", 0);
+    int paths = 20000;
+    bool sunPatches = false;
+    for (int a = 5; a < argc; ++a) {
+        if (std::strcmp(argv[a], "--sun-patches") == 0) sunPatches = true;
+        else if (a == 5 && argv[a][0] != '-') paths = wholeNumber(argv[a], "PATHS", 100);
+        else throw std::runtime_error(std::string("unknown argument \"") + argv[a] + "\"");
+    }
     std::optional<DaylightEnvironment> daylight;
     if (scene.daylight) daylight = buildDaylight(*scene.daylight, scene.site);
     const EmbreeScene rt(scene, layout);
     const auto sampler = placeSampler(scene.samplers[size_t(samplerIndex)], rt);
-    if (item < 0 || item >= sampler->items()) throw std::runtime_error("ITEM out of range");
+    if (item < 0 || item >= sampler->items()) throw std::runtime_error("ITEM " + std::to_string(item) + " is past the sampler's " + std::to_string(sampler->items()) + " items");
     std::printf("%s, item %d, %d paths, sunlit patches %s (%s)\n", argv[3], item, paths, sunPatches ? "on" : "off",
                 scene.samplers[size_t(samplerIndex)].type->unit());
     std::printf("%-16s %9s %11s %9s %7s %8s %9s %12s %10s\n", "surface vertices", "mean", "sd per path", "sd / mean",
