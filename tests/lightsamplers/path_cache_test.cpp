@@ -246,10 +246,9 @@ static void memoryBoundOnlyCostsTime(size_t bound) {
     }
 }
 
-
-// The bound is filled in grants of many paths' segments per work item where they fit
-// (5000: grants of about ten paths, then exact reservations) and path by path where they do
-// not (2000).
+// Work items reserve the bound's segments in grants of at most the bound over twice
+// their number (about ten paths' at 5000, four at 2000), and exactly what a path needs
+// once a grant no longer fits; a grant counting wrong fails here (segments() > bound).
 TEST(PathCache, AMemoryBoundOnlyCostsTime) {
     for (const size_t bound : {size_t(2000), size_t(5000)}) {
         SCOPED_TRACE("bound " + std::to_string(bound));
