@@ -64,6 +64,12 @@ Estimate ItemEstimates::stratified(int item, int heldOut) const {
     return {mean / sources_, std::sqrt(variance) / sources_};
 }
 
+Estimate ItemEstimates::of(int item) const {
+    if (all_.empty()) all_.resize(size_t(items_)), allSet_.assign(size_t(items_), 0);
+    if (!allSet_[size_t(item)]) all_[size_t(item)] = stratified(item, -1), allSet_[size_t(item)] = 1;
+    return all_[size_t(item)];
+}
+
 Estimate ItemEstimates::ofFold(int item, int fold) const {
     double mean = 0, variance = 0;
     for (int source = 0; source < sources_; ++source) addStratum(cells_[index(item, source, fold)], mean, variance);
@@ -198,10 +204,8 @@ MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& op
         PathFootprint scratch;  // a path's footprint as it is traced
         for (int path = from; path < to; ++path) {
             const PathContributions* cached = cache ? cache->reuse(index, path) : nullptr;
-            PathContributions c(w.item);
-            if (cached) {
-                c = *cached;
-            } else {
+            PathContributions traced(w.item);
+            if (!cached) {
                 Rng rng(hashValues({options.seed, uint64_t(w.sampler), uint64_t(w.item), uint64_t(path)}));
                 PathSamples samples = options.lowDiscrepancy
                                           ? PathSamples(rng, sequences[folds ? size_t(path % kFolds) : 0],
@@ -211,10 +215,11 @@ MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& op
                     scratch.clear();
                     r.stats.footprint = &scratch;
                 }
-                sampler.sample(*tracerOf[size_t(w.sampler)], w.item, samples, r.stats, c);
+                sampler.sample(*tracerOf[size_t(w.sampler)], w.item, samples, r.stats, traced);
                 r.stats.footprint = nullptr;
-                if (cache) cache->keep(index, path, c, scratch);
+                if (cache) cache->keep(index, path, traced, scratch);
             }
+            const PathContributions& c = cached ? *cached : traced;
             if (!c.finite()) {  // the path is dropped whole (core/estimator.h's policy)
                 ++r.dropped;
                 continue;

@@ -84,7 +84,7 @@ public:
     // What the paths traced for item `source` added to `item` in fold `fold`.
     MeanEstimator& cell(int item, int source, int fold) { return cells_[index(item, source, fold)]; }
     // Item `item` estimated from all folds, or from every fold but `heldOut`.
-    Estimate of(int item) const { return stratified(item, -1); }
+    Estimate of(int item) const;
     Estimate ofAllBut(int item, int heldOut) const { return stratified(item, heldOut); }
     // ... or from fold `fold` alone.
     Estimate ofFold(int item, int fold) const;
@@ -99,6 +99,10 @@ private:
     // Per (item, source), all folds merged: set up on first use, after the cells are
     // filled, so that a held-out fold costs one subtraction, not seven merges.
     mutable std::vector<MeanEstimator> totals_;
+    // of() per item, computed on first use (after the cells are filled, as totals_): a
+    // look asks for each several times.
+    mutable std::vector<Estimate> all_;
+    mutable std::vector<char> allSet_;
 };
 
 // How the floor plan shows a sampler (output/plan.cpp), in world space.
