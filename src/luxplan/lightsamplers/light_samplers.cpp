@@ -202,10 +202,11 @@ MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& op
                 sequences.emplace_back(hashValues({options.seed, kSequenceTag, uint64_t(w.sampler), uint64_t(w.item),
                                                    folds ? uint64_t(g) : uint64_t(kFolds)}));
         PathFootprint scratch;  // a path's footprint as it is traced
+        PathContributions traced(w.item);  // ... and what it added
         for (int path = from; path < to; ++path) {
             const PathContributions* cached = cache ? cache->reuse(index, path) : nullptr;
-            PathContributions traced(w.item);
             if (!cached) {
+                traced = PathContributions(w.item);
                 Rng rng(hashValues({options.seed, uint64_t(w.sampler), uint64_t(w.item), uint64_t(path)}));
                 PathSamples samples = options.lowDiscrepancy
                                           ? PathSamples(rng, sequences[folds ? size_t(path % kFolds) : 0],
