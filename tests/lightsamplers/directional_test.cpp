@@ -205,7 +205,7 @@ TEST(ItemEstimates, StratifiedErrorIgnoresTheSpreadBetweenSources) {
 }
 
 // A held-out fold is taken from cached totals by subtraction: it must equal the
-// estimate merged from scratch out of the other folds.
+// estimate merged from scratch out of the other folds; so must the kept estimate of all.
 TEST(ItemEstimates, HeldOutFoldMatchesTheOtherFoldsMergedFromScratch) {
     const int items = 3, sources = 3;
     ItemEstimates e(items, sources);
@@ -226,6 +226,19 @@ TEST(ItemEstimates, HeldOutFoldMatchesTheOtherFoldsMergedFromScratch) {
             Estimate x = e.ofAllBut(i, g);
             EXPECT_NEAR(x.value, mean, 1e-12 * mean);
             EXPECT_NEAR(x.standardError, std::sqrt(variance), 1e-9 * std::sqrt(variance));
+        }
+    // All folds, each item's estimate kept once computed: asked in any order, again and
+    // again, it is the one merged from scratch.
+    for (int pass = 0; pass < 2; ++pass)
+        for (int i = items - 1; i >= 0; --i) {
+            double mean = 0, variance = 0;
+            for (int s = 0; s < sources; ++s) {
+                MeanEstimator m;
+                for (int h = 0; h < ItemEstimates::kFolds; ++h) m.merge(e.cell(i, s, h));
+                mean += m.mean() / sources, variance += m.variance() / double(m.count()) / (sources * sources);
+            }
+            EXPECT_NEAR(e.of(i).value, mean, 1e-12 * mean) << "item " << i << ", pass " << pass;
+            EXPECT_NEAR(e.of(i).standardError, std::sqrt(variance), 1e-9 * std::sqrt(variance));
         }
 }
 
