@@ -423,5 +423,26 @@ TEST(SunDiskIndex, SamplesCarryTheRadianceAndDensityOfTheirDirection) {
     }
 }
 
+// The tracer draws no sun sample where a sensor cannot see the cone round the disks
+// (Sensor::maySee): every sample must lie inside it, the disks' rims included.
+TEST(SunDiskIndex, EverySunSampleLiesInTheConeAroundTheDisks) {
+    DaylightEnvironment sky = blackSkyWithoutSun();
+    std::vector<SunDisk> disks;
+    for (int k = 0; k < 13; ++k) disks.push_back(sunDisk(15 + 40.0 * k / 12, 95 + 45.0 * k / 12, 1.0 / 13, 60000));
+    DaylightEnvironment env(sky.skyMap(), disks, 0.0);
+    ASSERT_GT(env.sunConeCos(), 0.5);  // a cone of a few tens of degrees, not everything
+    Rng rng(3);
+    double closest = 1;
+    for (int i = 0; i < 200000; ++i) {
+        const EnvironmentSample s = env.sampleSun(rng.uniform(), {rng.uniform(), rng.uniform()});
+        ASSERT_GT(s.pdf, 0);
+        closest = std::min(closest, dot(s.wi, env.sunConeAxis()));
+    }
+    EXPECT_GE(closest, env.sunConeCos());
+    // Not a cone far wider than the disks: the farthest samples come within a disk of its rim.
+    EXPECT_LT(std::acos(closest), std::acos(env.sunConeCos()));
+    EXPECT_GT(std::acos(closest), std::acos(env.sunConeCos()) - radians(2 * kSunAngularDiameterDeg));
+}
+
 }  // namespace
 }  // namespace luxplan

@@ -115,6 +115,10 @@ public:
     void sunAt(const Vec3& w, Vec3& Le, double& pdf) const;
     // Sum of disk luminance x disk solid angle (cd sr / m^2).
     double sunIntegral() const { return sunIntegral_; }
+    // A cone holding every disk and its rim (cos <= 0 when no cone narrower than a
+    // hemisphere does): sampleSun's directions all lie in it.
+    const Vec3& sunConeAxis() const { return sunConeAxis_; }
+    double sunConeCos() const { return sunConeCos_; }
 
     // ---- Illuminance (lx) ----
     double groundReflectance() const { return groundReflectance_; }

@@ -66,6 +66,9 @@ public:
     bool isDelta() const override { return false; }
     double response(const Vec3& wi) const override { return f_.density(wi); }
     double pdf(const Vec3& wi) const override { return f_.density(wi); }
+    bool maySee(const Vec3& axis, double cosHalfAngle) const override {
+        return pyramidMaySee(f_.forward, f_.right, f_.up, f_.tanHalfFov, axis, cosHalfAngle);
+    }
     SensorSample sample(Vec2 u) const override {
         double a = (-1 + 2 * (i_ + u.x) / f_.strata) * f_.tanHalfFov;
         double b = (-1 + 2 * (j_ + u.y) / f_.strata) * f_.tanHalfFov;

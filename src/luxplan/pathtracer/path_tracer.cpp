@@ -12,6 +12,8 @@ namespace {
 
 constexpr double kRayEpsilon = 1e-4;  // metres; scenes are rooms, not microns
 
+const SkyLight::View kNoView;  // before a vertex has sampled the sky
+
 Vec3 offsetAlong(const Vec3& p, const Vec3& n, const Vec3& w) { return p + n * (dot(w, n) >= 0 ? kRayEpsilon : -kRayEpsilon); }
 
 // Where the path currently scatters: the sensor itself or a surface.
@@ -211,11 +213,18 @@ double PathTracer::sample(const Sensor& sensor, PathSamples& samples, RayStats& 
         return x.isSurface() ? offsetAlong(x.p, x.ng, wi) : x.p + wi * kRayEpsilon;
     };
 
+    // A light sample the sensor cannot see adds nothing: none is drawn (a glare
+    // frustum facing away from the sun and the windows).
+    const bool sensorSeesSun = daylight_ && daylight_->hasSun() && sensor.maySee(daylight_->sunConeAxis(), daylight_->sunConeCos());
     bool lastDelta = false;
     double lastPdf = 0;
     Vec3 lastPoint = origin;
     const bool sky = sky_.active();
-    SkyLight::View views[2];  // this vertex's, and the last non-delta vertex's
+    // This vertex's view of the sky's portals and the last non-delta vertex's. A View
+    // is large (16 spherical rectangles): a path neither zeroes nor copies one. The
+    // sensor's is its thread's cached view, a surface's is set up in this thread's scratch.
+    thread_local SkyLight::View scratch[2];
+    const SkyLight::View* views[2] = {&kNoView, &kNoView};
     int current = 0;
     double firstWeight = 0;
     // The area density at the current vertex of the BSDF sample that reached it from a
@@ -408,18 +417,31 @@ double PathTracer::sample(const Sensor& sensor, PathSamples& samples, RayStats& 
                 EmitterSample s = emitters_.sample(v.p, uChoice, samples.get2D(PathSamples::EmitterPoint));
                 if (s.pdf > 0 && s.Lv > 0) addLight(s.wi, Vec3(s.Lv, s.Lv, s.Lv), s.pdf, s.distance, s.emitter, s.emitter);
             }
+            // The portals' view first: whether the sky's sample goes outside decides
+            // whether it needs this vertex's sun sample.
+            const SkyLight::View* view = nullptr;
+            if (sky) {
+                if (depth == 0) {
+                    views[current] = &sky_.viewFromSensor(v.p);
+                } else {
+                    sky_.view(v.p, scratch[current]);
+                    views[current] = &scratch[current];
+                }
+                view = views[current];
+            }
+            // A sensor draws no light sample it cannot see (the estimate is unchanged).
+            const bool skyHere = sky && (v.isSurface() || sky_.seenBy(*view, sensor));
+            const bool outside = skyHere && exteriorSun_ && view->active;  // the sky's sample lights z with the sun's
+            const bool sunHere = v.isSurface() || sensorSeesSun;
             EnvironmentSample sun;
-            if (daylight_ && daylight_->hasSun()) {
+            if (daylight_ && daylight_->hasSun() && (sunHere || outside)) {
                 const double uDisk = samples.get1D(PathSamples::SunDisk);
                 sun = daylight_->sampleSun(uDisk, samples.get2D(PathSamples::SunPoint));
-                if (!patches_.shadedByShell(spawn(v, sun.wi), sun.wi)) addLight(sun.wi, sun.Le, sun.pdf, kInf, -1, LightBudget::kSun);
+                if (sunHere && !patches_.shadedByShell(spawn(v, sun.wi), sun.wi)) addLight(sun.wi, sun.Le, sun.pdf, kInf, -1, LightBudget::kSun);
             }
-            if (sky) {
-                SkyLight::View& view = views[current];
-                if (depth == 0) sky_.viewFromSensor(v.p, view);
-                else sky_.view(v.p, view);
-                EnvironmentSample s = sky_.sample(view, v.p, samples.get2D(PathSamples::SkyPoint));
-                if (exteriorSun_ && view.active) addSkyOrOutside(s, sun);
+            if (skyHere) {
+                EnvironmentSample s = sky_.sample(*view, v.p, samples.get2D(PathSamples::SkyPoint));
+                if (outside) addSkyOrOutside(s, sun);
                 else addLight(s.wi, s.Le, s.pdf, kInf, -1, LightBudget::kSky);
             }
             if (patchesHere()) addSunPatch();
@@ -451,7 +473,7 @@ double PathTracer::sample(const Sensor& sensor, PathSamples& samples, RayStats& 
             lastPoint = v.p;
             lastPatched = patchesHere();
             if (lastPatched) lastOrigin = {v.p, v.ng, v.bsdf->hasDiffuseTransmission(), true};
-            lastOutside = exteriorSun_ && views[current].active;
+            lastOutside = exteriorSun_ && views[current]->active;
             if (sky) current ^= 1;  // views[current ^ 1] is now the last non-delta vertex's
         }
         lastDelta = delta;
@@ -477,7 +499,7 @@ double PathTracer::sample(const Sensor& sensor, PathSamples& samples, RayStats& 
                     Vec3 sky = daylight_->Le(d), sun = hidden ? Vec3() : daylight_->sunLe(d);
                     double wSky = 1;
                     if (!lastDelta) {
-                        const double pSky = sky_.pdf(views[current ^ 1], lastPoint, d);
+                        const double pSky = sky_.pdf(*views[current ^ 1], lastPoint, d);
                         wSky = outsideDensity > 0 ? sunWeight(arrivalDensity, lastPdf, arrivalDensity, outsideDensity, pSky, lastPdf)
                                                   : powerHeuristic(1, lastPdf, 1, pSky);
                     }
@@ -535,7 +557,7 @@ double PathTracer::sample(const Sensor& sensor, PathSamples& samples, RayStats& 
                     const double toArea = std::abs(dot(v.ng, d)) / d2;
                     arrivalDensity = lastPdf * toArea;
                     if (lastPatched) arrivalFrom = lastOrigin;
-                    if (lastOutside && !sky_.inRoom(v.p)) outsideDensity = sky_.pdf(views[current ^ 1], lastPoint, d) * toArea;
+                    if (lastOutside && !sky_.inRoom(v.p)) outsideDensity = sky_.pdf(*views[current ^ 1], lastPoint, d) * toArea;
                 }
             }
             scattered = true;

@@ -30,11 +30,21 @@ public:
     virtual double response(const Vec3& wi) const = 0;
     virtual double pdf(const Vec3& wi) const = 0;
     virtual SensorSample sample(Vec2 u) const = 0;
+    // False only when the response is zero for every direction within the cone of
+    // half-angle acos(cosHalfAngle) around unit `axis`: the tracer then draws no light
+    // sample there (a glare frustum that faces away from every window). True when unsure.
+    virtual bool maySee(const Vec3& /*axis*/, double /*cosHalfAngle*/) const { return true; }
     // Whether the light a luminaire or a sun disk sends straight to the sensor is left
     // out (the sky, the ground outside and everything scattered still count): the DGP
     // sampler's direction cells, whose sources are surveyed apart.
     virtual bool hidesSources() const { return false; }
 };
+
+// Sensor::maySee for a sensor that responds inside the pyramid of directions w with
+// |dot(w, right)| and |dot(w, up)| at most tanHalfFov dot(w, forward) (an orthonormal
+// frame): false only when the cone lies wholly outside one of its four side planes.
+bool pyramidMaySee(const Vec3& forward, const Vec3& right, const Vec3& up, double tanHalfFov, const Vec3& axis,
+                   double cosHalfAngle);
 
 // Illuminance (lx) at a point over the hemisphere around unit `normal`: response cos,
 // directions cosine-weighted.

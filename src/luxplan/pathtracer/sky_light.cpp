@@ -30,7 +30,7 @@ SkyLight::SkyLight(const Scene& scene, const DaylightEnvironment* daylight, bool
     }
 }
 
-void SkyLight::viewFromSensor(const Vec3& p, View& view) const {
+const SkyLight::View& SkyLight::viewFromSensor(const Vec3& p) const {
     // Every path of a sampler point starts at the same place: keep the last view of
     // each thread (measureSamplers runs a point's paths on one thread in a row).
     thread_local uint64_t cachedLight = 0;
@@ -39,7 +39,7 @@ void SkyLight::viewFromSensor(const Vec3& p, View& view) const {
         compute(p, cachedView, true);
         cachedLight = id_;
     }
-    view = cachedView;
+    return cachedView;
 }
 
 void SkyLight::compute(const Vec3& p, View& view, bool buildAll) const {
@@ -61,7 +61,32 @@ void SkyLight::compute(const Vec3& p, View& view, bool buildAll) const {
         view.spherical[i] = w > kSphericalAbove;
         view.built[i] = false;
         if (buildAll && view.spherical[i]) rect(view, i);
+        if (buildAll) {
+            // The directions to a convex rectangle lie in the spherical cap around its
+            // centre's direction that holds its corners (a cap under a hemisphere is
+            // convex, and the edges are great-circle arcs).
+            view.coneCos[i] = -1;
+            const Vec3 toCentre = r.corner + (r.edgeU + r.edgeV) * 0.5 - p;
+            if (dot(toCentre, toCentre) > 0) {
+                const Vec3 axis = normalize(toCentre);
+                double cosine = 1;
+                for (const Vec3& c : {r.corner, r.corner + r.edgeU, r.corner + r.edgeV, r.corner + r.edgeU + r.edgeV}) {
+                    const Vec3 toCorner = c - p;
+                    const double l = length(toCorner);
+                    cosine = l > 0 ? std::min(cosine, dot(axis, toCorner) / l) : -1;
+                }
+                view.coneAxis[i] = axis;
+                view.coneCos[i] = cosine > 0 ? cosine : -1;  // a wider cap is not convex
+            }
+        }
     }
+}
+
+bool SkyLight::seenBy(const View& view, const Sensor& sensor) const {
+    if (!view.active) return true;  // the sky map over the whole sphere
+    for (int i = 0; i < view.count; ++i)
+        if (view.weight[i] > 0 && sensor.maySee(view.coneAxis[i], view.coneCos[i])) return true;
+    return false;
 }
 
 const SphericalRect& SkyLight::rect(const View& view, int i) const {

@@ -9,6 +9,7 @@
 
 #include <luxplan/core/spherical_rect.h>
 #include <luxplan/daylight/environment.h>
+#include <luxplan/pathtracer/sensor.h>
 #include <luxplan/scene/scene.h>
 
 namespace luxplan {
@@ -37,6 +38,10 @@ public:
         double weightTotal = 0;
         mutable SphericalRect rects[kMaxPortals];
         mutable bool built[kMaxPortals] = {};
+        // A sensor's view only: a cone around the directions through each portal
+        // (coneCos <= 0: none narrower than a hemisphere).
+        Vec3 coneAxis[kMaxPortals];
+        double coneCos[kMaxPortals] = {};
     };
 
     SkyLight() = default;
@@ -48,12 +53,15 @@ public:
     // active); false without a room.
     bool inRoom(const Vec3& p) const { return hasRoom_ && room_.contains(p); }
     // The openings as seen from a path's first vertex: cached per thread, since every
-    // path of a sampler point starts at the same place.
-    void viewFromSensor(const Vec3& p, View& view) const;
+    // path of a sampler point starts at the same place. The view stays valid until the
+    // thread's next call.
+    const View& viewFromSensor(const Vec3& p) const;
     // The openings as seen from a later vertex: rectangles set up on demand.
     void view(const Vec3& p, View& view) const { compute(p, view, false); }
     // Density (per solid angle) of sample() for direction w from the view's point p.
     double pdf(const View& view, const Vec3& p, const Vec3& w) const;
+    // Whether sample() from a sensor's view may draw a direction the sensor sees.
+    bool seenBy(const View& view, const Sensor& sensor) const;
     EnvironmentSample sample(const View& view, const Vec3& p, Vec2 u) const;
 
 private:
