@@ -258,7 +258,7 @@ uint64_t PathCache::askedAgain() const {
 void PathCache::commit() {
     if (!measuring_) return;
     parallelFor(committed_.size(), [&](size_t w) {
-        const Pending& p = pending_[w];
+        Pending& p = pending_[w];
         Paths& committed = committed_[w];
         auto drop = [&](Record& r) {
             if (r.kept) committed.garbage += r.segmentCount, r = Record();
@@ -275,6 +275,18 @@ void PathCache::commit() {
             if (records[path].kept && (path >= checked || check(w, records[path], committed, false) == Verdict::Changed))
                 drop(records[path]);
         records.resize(std::max(checked, visited));
+        // Every path asked for traced afresh, in order, and none kept beyond them (a
+        // moved sampler's work item): the traced arrays become the committed ones as
+        // they are, and the old ones go to the next measurement to fill (endMeasurement
+        // clears them, keeping their memory). No copy, no allocation.
+        bool tracedAll = p.tracedPaths.size() == visited;
+        for (size_t i = 0; tracedAll && i < visited; ++i) tracedAll = size_t(p.tracedPaths[i]) == i;
+        for (size_t path = visited; tracedAll && path < records.size(); ++path) tracedAll = !records[path].kept;
+        if (tracedAll) {
+            std::swap(committed, p.traced);
+            committed.garbage = 0;
+            return;
+        }
         // The paths traced go to the end of the arrays; what they replace stays there
         // as garbage until it outweighs the rest.
         for (size_t i = 0; i < p.tracedPaths.size(); ++i) {
@@ -283,12 +295,14 @@ void PathCache::commit() {
             if (p.traced.records[i].kept) r = committed.append(p.traced.records[i], p.traced);
         }
         if (2 * committed.garbage > committed.segments.size()) {
-            Paths packed;
-            packed.records.resize(records.size());
+            // Packed into the pending arrays, free now, whose memory the old ones then take.
+            Paths& packed = p.traced;
+            packed.records.assign(records.size(), Record());
+            packed.segments.clear(), packed.tests.clear(), packed.garbage = 0;
             packed.segments.reserve(committed.segments.size() - committed.garbage);
             for (size_t path = 0; path < records.size(); ++path)
                 if (records[path].kept) packed.records[path] = packed.append(records[path], committed);
-            committed = std::move(packed);
+            std::swap(committed, packed);
         }
     });
     committedSegments_ = 0;
