@@ -104,6 +104,7 @@ DaylightEnvironment::DaylightEnvironment(SkyMap sky, std::vector<SunDisk> suns, 
         std::vector<double> weights;
         for (const SunDisk& s : suns_) weights.push_back(std::max(0.0, s.luminance));
         sunDistribution_ = Distribution1D(weights);
+        for (const SunDisk& s : suns_) sunFrames_.push_back(Frame::fromNormal(s.direction));
         sunIntegral_ = sunDistribution_.integral() * double(suns_.size()) * kSunSolidAngle;
         indexSunDisks();
     }
@@ -242,7 +243,7 @@ EnvironmentSample DaylightEnvironment::sampleSun(double uDisk, Vec2 u) const {
     EnvironmentSample s;
     if (suns_.empty()) return s;
     const size_t k = sunDistribution_.sampleDiscrete(uDisk);
-    s.wi = normalize(Frame::fromNormal(suns_[k].direction).toWorld(sampleUniformCone(u, kSunCosHalfAngle)));
+    s.wi = normalize(sunFrames_[k].toWorld(sampleUniformCone(u, kSunCosHalfAngle)));
     if (sunDisksApart_) {
         // What sunAt would sum: disk k alone (the same rim test).
         if (dot(s.wi, suns_[k].direction) >= kSunCosHalfAngle - kDiskRimTolerance) {

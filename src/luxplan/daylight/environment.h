@@ -137,6 +137,7 @@ public:
 private:
     SkyMap map_;
     std::vector<SunDisk> suns_;
+    std::vector<Frame> sunFrames_;  // around each disk's centre, for its samples
     double groundReflectance_ = 0;
     Vec3 ground_;
     Distribution2D skyDistribution_;  // over (phi, -cos theta): area there = solid angle

@@ -329,10 +329,15 @@ double PathTracer::sample(const Sensor& sensor, PathSamples& samples, RayStats& 
 
         // ---- next-event estimation (skipped at delta vertices) ----
         if (!deltaVertex) {
-            auto addLight = [&](const Vec3& wi, const Vec3& Le, double lightPdf, double maxT, int target, int source) {
+            // `throughShell`: the direction must leave through an opening (the sun's: a
+            // direction that leaves the box through an opaque wall is blocked whatever the
+            // layout), tested once the surface is known to face it.
+            auto addLight = [&](const Vec3& wi, const Vec3& Le, double lightPdf, double maxT, int target, int source,
+                                bool throughShell = false) {
                 if (!(lightPdf > 0) || maxComponent(Le) <= 0) return;
                 Vec3 f = evalCos(v, wi);
                 if (maxComponent(f) <= 0) return;
+                if (throughShell && patches_.shadedByShell(spawn(v, wi), wi)) return;
                 double T = transmittance(spawn(v, wi), wi, v.isSurface() ? maxT : maxT - kRayEpsilon, target, stats);
                 if (T <= 0) return;
                 const double bsdfPdf = pdfOf(v, wi);
@@ -437,7 +442,7 @@ double PathTracer::sample(const Sensor& sensor, PathSamples& samples, RayStats& 
             if (daylight_ && daylight_->hasSun() && (sunHere || outside)) {
                 const double uDisk = samples.get1D(PathSamples::SunDisk);
                 sun = daylight_->sampleSun(uDisk, samples.get2D(PathSamples::SunPoint));
-                if (sunHere && !patches_.shadedByShell(spawn(v, sun.wi), sun.wi)) addLight(sun.wi, sun.Le, sun.pdf, kInf, -1, LightBudget::kSun);
+                if (sunHere) addLight(sun.wi, sun.Le, sun.pdf, kInf, -1, LightBudget::kSun, true);
             }
             if (skyHere) {
                 EnvironmentSample s = sky_.sample(*view, v.p, samples.get2D(PathSamples::SkyPoint));
