@@ -295,14 +295,13 @@ void PathCache::commit() {
             if (p.traced.records[i].kept) r = committed.append(p.traced.records[i], p.traced);
         }
         if (2 * committed.garbage > committed.segments.size()) {
-            // Packed into the pending arrays, free now, whose memory the old ones then take.
-            Paths& packed = p.traced;
-            packed.records.assign(records.size(), Record());
-            packed.segments.clear(), packed.tests.clear(), packed.garbage = 0;
+            // Into arrays of their own size: the old ones, garbage and all, are freed.
+            Paths packed;
+            packed.records.resize(records.size());
             packed.segments.reserve(committed.segments.size() - committed.garbage);
             for (size_t path = 0; path < records.size(); ++path)
                 if (records[path].kept) packed.records[path] = packed.append(records[path], committed);
-            std::swap(committed, packed);
+            committed = std::move(packed);
         }
     });
     committedSegments_ = 0;
