@@ -52,7 +52,15 @@ double Distribution1D::sampleContinuous(double u, double* pdfOut, size_t* binOut
 
 size_t Distribution1D::sampleDiscrete(double u, double* pmfOut, double* uRemapped) const {
     u = std::clamp(u, 0.0, 1.0);
-    size_t i = size_t(std::upper_bound(cdf_.begin(), cdf_.end(), u) - cdf_.begin());
+    // The index upper_bound finds: the number of cdf values <= u. For a few bins (a
+    // period's sun disks, drawn at every path vertex) counted without branches, which a
+    // random u would mispredict.
+    size_t i = 0;
+    if (cdf_.size() <= 32) {
+        for (double c : cdf_) i += c <= u;
+    } else {
+        i = size_t(std::upper_bound(cdf_.begin(), cdf_.end(), u) - cdf_.begin());
+    }
     i = std::clamp<size_t>(i, 1, values_.size()) - 1;
     // cdf[i] <= u < cdf[i+1] implies pmf(i) > 0, except at u = 1: step back to a non-empty bin.
     while (pmf(i) == 0 && i > 0) --i;
