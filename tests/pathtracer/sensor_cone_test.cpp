@@ -8,6 +8,7 @@
 #include <luxplan/core/rng.h>
 #include <luxplan/core/warp.h>
 #include <luxplan/daylight/daylight.h>
+#include <luxplan/emitters/emitter_shape.h>
 #include <luxplan/pathtracer/sensor.h>
 #include <luxplan/pathtracer/sky_light.h>
 #include <luxplan/scene/room.h>
@@ -106,6 +107,29 @@ TEST(SensorCone, TheSkyIsSkippedOnlyWhereNoPortalSampleWouldBeSeen) {
     }
     EXPECT_GT(skipped, 50);
     EXPECT_GT(drawn, 50);
+}
+
+// A sensor skips a luminaire whose sphere of radius reach() round center() it cannot
+// see: every point a shape's sampling draws, from anywhere, lies in that sphere.
+TEST(SensorCone, EveryLuminaireLiesInItsReachAroundItsCentre) {
+    Rng rng(29);
+    const Transform placed = Transform::placement({1, 2, 0.3}, 37);
+    for (const auto& shape : {rectEmitter({0, 0, 2.5}, {0, 0, -1}, {0, 1, 0}, {1.2, 0.3}),
+                              diskEmitter({1, 1, 2.5}, normalize(Vec3(0.3, 0, -1)), 0.25), sphereEmitter({2, 0, 2}, 0.1),
+                              rectEmitter({0, 0, 2.5}, {0, 0, -1}, {0, 1, 0}, {0.6, 0.6})->transformed(placed)}) {
+        int drawn = 0;
+        double farthest = 0;
+        for (int k = 0; k < 20000; ++k) {
+            const Vec3 p(-3 + 6 * rng.uniform(), -3 + 6 * rng.uniform(), 3 * rng.uniform());
+            const auto q = shape->sample(p, {rng.uniform(), rng.uniform()});
+            if (!q) continue;
+            ++drawn;
+            farthest = std::max(farthest, length(q->position - shape->center()));
+        }
+        EXPECT_GT(drawn, 5000) << shape->describe();
+        EXPECT_LE(farthest, shape->reach() + 1e-9) << shape->describe();  // rounding, within maySee's slack
+        EXPECT_GT(farthest, 0.9 * shape->reach()) << shape->describe();  // a tight sphere, not any
+    }
 }
 
 }  // namespace

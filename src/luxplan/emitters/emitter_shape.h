@@ -49,7 +49,9 @@ public:
     // The unit normal of a one-sided emitter, which lights only the half-space it
     // faces; none for one that emits all round.
     virtual std::optional<Vec3> normal() const = 0;
-    // The distance within which flux / distance^2 stops growing (emitter choice).
+    // The radius of a sphere round center() that holds the whole shape: the distance
+    // within which flux / distance^2 stops growing (emitter choice), and the cone a
+    // sensor must see for a sample of it to count (Sensor::maySee).
     virtual double reach() const = 0;
     // A rect's first side (unit, from its first corner along the side of length
     // size[0]): where a photometric luminaire's C = 0 points by default.

@@ -216,6 +216,14 @@ double PathTracer::sample(const Sensor& sensor, PathSamples& samples, RayStats& 
     // A light sample the sensor cannot see adds nothing: none is drawn (a glare
     // frustum facing away from the sun and the windows).
     const bool sensorSeesSun = daylight_ && daylight_->hasSun() && sensor.maySee(daylight_->sunConeAxis(), daylight_->sunConeCos());
+    bool sensorSeesEmitters = false;
+    for (size_t i = 0; i < emitters_.size() && !sensorSeesEmitters; ++i) {
+        // The cone round the sphere that holds the luminaire (all of it, from within).
+        const Vec3 toCentre = emitters_[i].center - origin;
+        const double distance = length(toCentre), reach = emitters_[i].reach;
+        sensorSeesEmitters = !(distance > reach) ||
+                             sensor.maySee(toCentre / distance, std::sqrt(1 - (reach / distance) * (reach / distance)));
+    }
     bool lastDelta = false;
     double lastPdf = 0;
     Vec3 lastPoint = origin;
@@ -417,10 +425,14 @@ double PathTracer::sample(const Sensor& sensor, PathSamples& samples, RayStats& 
                 }
             };
             if (!emitters_.empty()) {
+                // The choice reads every luminaire, and so does a sensor's test of them:
+                // a moved one changes the path either way.
                 if (stats.footprint) stats.footprint->usedEmitterChoice = true;
-                const double uChoice = samples.get1D(PathSamples::EmitterChoice);
-                EmitterSample s = emitters_.sample(v.p, uChoice, samples.get2D(PathSamples::EmitterPoint));
-                if (s.pdf > 0 && s.Lv > 0) addLight(s.wi, Vec3(s.Lv, s.Lv, s.Lv), s.pdf, s.distance, s.emitter, s.emitter);
+                if (v.isSurface() || sensorSeesEmitters) {
+                    const double uChoice = samples.get1D(PathSamples::EmitterChoice);
+                    EmitterSample s = emitters_.sample(v.p, uChoice, samples.get2D(PathSamples::EmitterPoint));
+                    if (s.pdf > 0 && s.Lv > 0) addLight(s.wi, Vec3(s.Lv, s.Lv, s.Lv), s.pdf, s.distance, s.emitter, s.emitter);
+                }
             }
             // The portals' view first: whether the sky's sample goes outside decides
             // whether it needs this vertex's sun sample.
