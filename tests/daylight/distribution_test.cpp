@@ -2,6 +2,9 @@
 // discrete pmfs, cdf inversion and the all-zero fallback.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+
 #include <luxplan/core/rng.h>
 #include <luxplan/daylight/distribution.h>
 #include "support/chi2.h"
@@ -75,6 +78,39 @@ TEST(Distribution1D, DiscreteSamplingFollowsPmf) {
     EXPECT_GT(r.pValue, 0.01) << r.table;
     // u = 1 (clamped) still returns a bin with mass.
     EXPECT_EQ(d.sampleDiscrete(1.0), 3u);
+}
+
+// sampleDiscrete counts a few bins and searches many within a guide's bucket: both
+// must find the bin std::upper_bound finds over the whole cdf, at random, on the
+// guide's bucket edges and beside them, on the cdf's own values, and through runs of
+// empty bins (an environment map's dark pixels).
+TEST(Distribution1D, EveryWayOfSearchingFindsTheBinUpperBoundFinds) {
+    Rng rng(41);
+    for (const size_t n : {size_t(5), size_t(31), size_t(32), size_t(33), size_t(256), size_t(1000)}) {
+        std::vector<double> values(n);
+        for (size_t i = 0; i < n; ++i) values[i] = (i / 7) % 3 == 0 ? 0.0 : rng.uniform() * rng.uniform();
+        values[n / 2] = 50;  // one bright bin spans many buckets
+        // The cdf as the class builds it: the same sums and the same division.
+        std::vector<double> cdf(n + 1, 0.0);
+        for (size_t i = 0; i < n; ++i) cdf[i + 1] = cdf[i] + values[i] * (double(i + 1) / double(n) - double(i) / double(n));
+        const double total = cdf[n];
+        for (double& c : cdf) c /= total;
+        cdf[n] = 1.0;
+        const Distribution1D d(values);
+        std::vector<double> us = {0.0, 1.0};
+        for (size_t k = 0; k <= n; ++k) {
+            const double edge = double(k) / double(n);
+            us.insert(us.end(), {edge, std::nextafter(edge, 0.0), std::nextafter(edge, 2.0)});
+        }
+        for (double c : cdf) us.insert(us.end(), {c, std::nextafter(c, 0.0), std::nextafter(c, 2.0)});
+        for (int k = 0; k < 20000; ++k) us.push_back(rng.uniform());
+        for (double u : us) {
+            u = std::clamp(u, 0.0, 1.0);
+            size_t expected = std::clamp<size_t>(size_t(std::upper_bound(cdf.begin(), cdf.end(), u) - cdf.begin()), 1, n) - 1;
+            while (cdf[expected + 1] - cdf[expected] == 0 && expected > 0) --expected;
+            ASSERT_EQ(d.sampleDiscrete(u), expected) << n << " bins, u = " << u;
+        }
+    }
 }
 
 TEST(Distribution1D, AllZeroFallsBackToUniform) {
