@@ -80,10 +80,10 @@ TEST(Distribution1D, DiscreteSamplingFollowsPmf) {
     EXPECT_EQ(d.sampleDiscrete(1.0), 3u);
 }
 
-// sampleDiscrete counts a few bins and searches many within a guide's bucket: both
-// must find the bin std::upper_bound finds over the whole cdf, at random, on the
-// guide's bucket edges and beside them, on the cdf's own values, and through runs of
-// empty bins (an environment map's dark pixels).
+// sampleDiscrete counts a few bins and searches many: both must find the bin
+// std::upper_bound finds over the whole cdf, at random, on the bins' edges and beside
+// them, on the cdf's own values, and through runs of empty bins (an environment map's
+// dark pixels).
 TEST(Distribution1D, EveryWayOfSearchingFindsTheBinUpperBoundFinds) {
     Rng rng(41);
     for (const size_t n : {size_t(5), size_t(31), size_t(32), size_t(33), size_t(256), size_t(1000)}) {

@@ -7,8 +7,6 @@
 namespace luxplan {
 namespace {
 
-constexpr size_t kFewBins = 32;  // cdf values searched by counting; more get a guide
-
 std::vector<double> uniformEdges(size_t n) {
     std::vector<double> e(n + 1);
     for (size_t i = 0; i <= n; ++i) e[i] = double(i) / double(n);
@@ -40,16 +38,6 @@ Distribution1D::Distribution1D(std::span<const double> values, std::span<const d
         for (size_t i = 1; i <= n; ++i) cdf_[i] = (edges_[i] - edges_[0]) / width;
     }
     cdf_[n] = 1.0;
-    if (cdf_.size() > kFewBins) {
-        const size_t buckets = n;
-        guide_.resize(buckets + 1);
-        size_t count = 0;
-        for (size_t k = 0; k <= buckets; ++k) {
-            const double edge = double(k) / double(buckets);
-            while (count < cdf_.size() && cdf_[count] <= edge) ++count;
-            guide_[k] = uint32_t(count);
-        }
-    }
 }
 
 double Distribution1D::sampleContinuous(double u, double* pdfOut, size_t* binOut) const {
@@ -66,18 +54,12 @@ size_t Distribution1D::sampleDiscrete(double u, double* pmfOut, double* uRemappe
     u = std::clamp(u, 0.0, 1.0);
     // The index upper_bound finds: the number of cdf values <= u. For a few bins (a
     // period's sun disks, drawn at every path vertex) counted without branches, which a
-    // random u would mispredict; for many, searched within the guide's bucket.
+    // random u would mispredict.
     size_t i = 0;
-    if (guide_.empty()) {
+    if (cdf_.size() <= 32) {
         for (double c : cdf_) i += c <= u;
     } else {
-        // The bucket with k / G <= u < (k + 1) / G, in the same arithmetic the guide was
-        // built with, then the search between its bounds.
-        const size_t buckets = guide_.size() - 1;
-        size_t k = std::min(buckets - 1, size_t(u * double(buckets)));
-        while (k > 0 && double(k) / double(buckets) > u) --k;
-        while (k + 1 < buckets && double(k + 1) / double(buckets) <= u) ++k;
-        i = size_t(std::upper_bound(cdf_.begin() + guide_[k], cdf_.begin() + guide_[k + 1], u) - cdf_.begin());
+        i = size_t(std::upper_bound(cdf_.begin(), cdf_.end(), u) - cdf_.begin());
     }
     i = std::clamp<size_t>(i, 1, values_.size()) - 1;
     // cdf[i] <= u < cdf[i+1] implies pmf(i) > 0, except at u = 1: step back to a non-empty bin.

@@ -5,7 +5,6 @@
 #pragma once
 
 #include <cstddef>
-#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -49,11 +48,6 @@ public:
 private:
     std::vector<double> values_, edges_, cdf_;
     double integral_ = 0;
-    // For many bins, a guide to the search: guide_[k] = the number of cdf values <= k / G
-    // (G = guide_.size() - 1 buckets), so the bin of a u in bucket k lies between
-    // guide_[k] and guide_[k + 1] (an environment map's rows and columns: a search over
-    // a few bins instead of all).
-    std::vector<uint32_t> guide_;
 };
 
 // Density proportional to a non-negative step function over a grid of nx * ny cells
