@@ -1,14 +1,18 @@
 // The sky sampled through the room's openings (pathtracer/sky_light.h): near an opening
 // by its spherical rectangle, farther away by its area. Both must draw directions with
 // the density pdf() reports (chi-square over cells of each opening), and a sample's own
-// pdf must be pdf()'s.
+// pdf must be pdf()'s. A sensor's view also bounds each opening by a cone, so that a
+// sensor that sees none of them draws no sky sample (SkyLight::seenBy).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
 #include <luxplan/core/rng.h>
 #include <luxplan/daylight/daylight.h>
+#include <luxplan/pathtracer/sensor.h>
+#include <luxplan/core/warp.h>
 #include <luxplan/pathtracer/sky_light.h>
 #include <luxplan/scene/room.h>
 #include "support/scene_builder.h"
@@ -78,15 +82,20 @@ Chi2 chiSquare(const SkyLight& sky, const SkyLight::View& view, const std::vecto
     return c;
 }
 
+// A 4 x 5 x 3 m room under a uniform sky, with a south and an east window and a skylight.
+Scene roomWithThreeOpenings() {
+    return SceneBuilder()
+        .material("grey", test::diffuse(0.5))
+        .uniformSky(1000)
+        .room({0, 0, 0}, {4, 5, 3}, "grey", "grey", "grey")
+        .window(Wall::South, 1, 2, 1, 1.5)
+        .window(Wall::East, 1, 1.2, 0.9, 1.2)
+        .skylight({2, 3}, {1, 0.8})
+        .build();
+}
+
 TEST(SkyLight, DirectionsFollowTheirDensityNearAndFarFromAnOpening) {
-    const Scene scene = SceneBuilder()
-                            .material("grey", test::diffuse(0.5))
-                            .uniformSky(1000)
-                            .room({0, 0, 0}, {4, 5, 3}, "grey", "grey", "grey")
-                            .window(Wall::South, 1, 2, 1, 1.5)
-                            .window(Wall::East, 1, 1.2, 0.9, 1.2)
-                            .skylight({2, 3}, {1, 0.8})
-                            .build();
+    const Scene scene = roomWithThreeOpenings();
     const DaylightEnvironment daylight = buildDaylight(*scene.daylight, scene.site);
     const SkyLight sky(scene, &daylight, true);
     std::vector<Rect3> openings;
@@ -111,6 +120,55 @@ TEST(SkyLight, DirectionsFollowTheirDensityNearAndFarFromAnOpening) {
     sky.view({0.5, 4.5, 0.3}, far);
     EXPECT_TRUE(near.spherical[0]);
     for (int i = 0; i < far.count; ++i) EXPECT_FALSE(far.spherical[i]) << i;
+}
+
+// A sensor that responds inside a cone (exactly: maySee tests the angle between cones).
+class ConeSensor final : public Sensor {
+public:
+    ConeSensor(const Vec3& p, const Vec3& axis, double halfAngle) : p_(p), axis_(axis), half_(halfAngle) {}
+    Vec3 position() const override { return p_; }
+    bool isDelta() const override { return false; }
+    double response(const Vec3& wi) const override { return dot(wi, axis_) >= std::cos(half_) ? 1 : 0; }
+    double pdf(const Vec3&) const override { return 0; }
+    SensorSample sample(Vec2) const override { return {}; }
+    bool maySee(const Vec3& axis, double cosHalfAngle) const override {
+        if (!(cosHalfAngle > 0)) return true;
+        return std::acos(std::clamp(dot(axis, axis_), -1.0, 1.0)) <= half_ + std::acos(cosHalfAngle) + 1e-9;
+    }
+
+private:
+    Vec3 p_, axis_;
+    double half_;
+};
+
+// A sensor's view of the portals holds a cone round each: every portal sample lies in
+// its portal's cone, and a sensor that sees none of the cones is never reached by one.
+TEST(SkyLight, ASensorSkipsTheSkyOnlyWhereNoPortalSampleWouldBeSeen) {
+    const Scene scene = roomWithThreeOpenings();
+    const DaylightEnvironment daylight = buildDaylight(*scene.daylight, scene.site);
+    const SkyLight sky(scene, &daylight, true);
+    Rng rng(23);
+    int skipped = 0, drawn = 0;
+    for (int trial = 0; trial < 300; ++trial) {
+        const Vec3 p(0.2 + 3.6 * rng.uniform(), 0.2 + 4.6 * rng.uniform(), 0.2 + 2.6 * rng.uniform());
+        const ConeSensor sensor(p, sampleUniformSphere({rng.uniform(), rng.uniform()}), radians(5 + 40 * rng.uniform()));
+        const SkyLight::View& view = sky.viewFromSensor(p);
+        ASSERT_TRUE(view.active);
+        const bool seen = sky.seenBy(view, sensor);
+        (seen ? drawn : skipped) += 1;
+        for (int k = 0; k < 2000; ++k) {
+            const EnvironmentSample s = sky.sample(view, p, {rng.uniform(), rng.uniform()});
+            if (!(s.pdf > 0)) continue;
+            bool inACone = false;
+            for (int i = 0; i < view.count; ++i) inACone = inACone || dot(s.wi, view.coneAxis[i]) >= view.coneCos[i] - 1e-12;
+            ASSERT_TRUE(inACone) << "trial " << trial;
+            if (!seen) {
+                ASSERT_EQ(sensor.response(s.wi), 0) << "trial " << trial << ": a skipped sample would be seen";
+            }
+        }
+    }
+    EXPECT_GT(skipped, 50);
+    EXPECT_GT(drawn, 50);
 }
 
 }  // namespace
