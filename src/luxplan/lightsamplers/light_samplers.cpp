@@ -25,7 +25,7 @@ constexpr uint64_t kSequenceTag = 0x5350'0bb1'5eedULL;  // keys the low-discrepa
 
 // What one work item's paths added: per fold an estimator for each item they reach
 // (the own item only, or all of a sampler that shares paths).
-struct WorkResult {
+struct alignas(64) WorkResult {  // a cache line of its own: two threads trace neighbouring items
     std::array<std::vector<MeanEstimator>, kFolds> folds;
     uint64_t finite[kFolds] = {};  // paths kept, per fold
     uint64_t dropped = 0;

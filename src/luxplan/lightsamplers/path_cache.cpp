@@ -162,8 +162,9 @@ PathCache::Verdict PathCache::check(size_t work, const Record& r, const Paths& i
                 break;
             }
         if (!meets) continue;
+        if (!requery) return Verdict::Changed;
         while (test < r.testCount && tests[test].segment < index) ++test;
-        if (!requery || test == r.testCount || tests[test].segment != index) return Verdict::Changed;
+        if (test == r.testCount || tests[test].segment != index) return Verdict::Changed;
         again.push_back(&tests[test]);
     }
     for (const OcclusionTest* t : again) {

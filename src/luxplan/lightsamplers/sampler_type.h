@@ -61,8 +61,9 @@ public:
 private:
     int item_;
     int count_ = 0;
-    std::array<int, kCapacity> items_{};
-    std::array<double, kCapacity> values_{};
+    // Entries [0, count_) only: not zeroed, since a path is traced for each (most add one).
+    std::array<int, kCapacity> items_;
+    std::array<double, kCapacity> values_;
 };
 
 // The estimates of a sampler's items, from all paths or from some folds: a path
