@@ -22,12 +22,13 @@ const Vec3 kZ(0, 0, 1);
 // a lamp (its own entity, with a shade emitter), a chair, a cabinet; a fixed plane on
 // the floor, a fixed directional sampler looking at the window, a volume. With
 // `terrace`, a sunlit terrace outside the window that paths see through it (the
-// sun's light off it is then taken where the sky's portal samples meet it).
-Scene studio(bool terrace = false) {
+// sun's light off it is then taken where the sky's portal samples meet it). `walls`:
+// their reflectance (at 0.95 many paths run past 64 segments).
+Scene studio(bool terrace = false, double walls = 0.6) {
     SceneBuilder b;
     if (terrace) b.material("stone", test::diffuse(0.5)).box("terrace", {-4, -8, -0.3}, {10, -0.5, 0}, "stone");
     return b
-        .material("wall", test::diffuse(0.6))
+        .material("wall", test::diffuse(walls))
         .material("wood", test::diffuse(0.4))
         .material("glass", test::glass(0.8))
         .sunAndUniformSky({35, 170, 50000}, 3000, 0.2)
@@ -92,8 +93,8 @@ void randomMove(const Scene& scene, Layout& layout, Rng& rng) {
     if (rng.uniform() < 0.3) p.rotationDeg = rng.uniform() < 0.5 ? 90.0 * int(rng.uniform() * 4) : 360 * rng.uniform();
 }
 
-void runSequence(bool adaptive, int paths, int moves, uint64_t moveSeed, bool terrace = false) {
-    SceneLab lab(studio(terrace));
+void runSequence(bool adaptive, int paths, int moves, uint64_t moveSeed, bool terrace = false, double walls = 0.6) {
+    SceneLab lab(studio(terrace, walls));
     ASSERT_EQ(lab.tracer->samplesExteriorSun(), terrace);
     const Scene& scene = lab.scene;
     const DaylightEnvironment* daylight = lab.daylight ? &*lab.daylight : nullptr;
@@ -128,6 +129,9 @@ void runSequence(bool adaptive, int paths, int moves, uint64_t moveSeed, bool te
     }
     // Half the moves carry the lamp (every path chose an emitter): the rest reuse.
     EXPECT_GT(double(reused), 0.1 * double(traced));
+    if (walls > 0.9) {
+        EXPECT_GT(cache.longestPath(), 64u);
+    }
 }
 
 TEST(PathCache, MovesEqualFromScratchFixedPaths) { runSequence(false, 24, 24, 11); }
@@ -135,6 +139,10 @@ TEST(PathCache, MovesEqualFromScratchFixedPaths) { runSequence(false, 24, 24, 11
 TEST(PathCache, MovesEqualFromScratchAdaptive) { runSequence(true, 48, 24, 12); }
 
 TEST(PathCache, MovesEqualFromScratchWithASunlitTerraceOutside) { runSequence(true, 48, 24, 13, true); }
+
+// Long paths (a bright room: many of more than 64 segments), whose shadow queries far
+// down the path are found and asked again.
+TEST(PathCache, MovesEqualFromScratchWithLongPaths) { runSequence(true, 64, 24, 14, false, 0.95); }
 
 TEST(PathCache, AnUnmovedLayoutReusesEveryPath) {
     SceneLab lab(studio());

@@ -256,6 +256,14 @@ uint64_t PathCache::askedAgain() const {
     return sum;
 }
 
+size_t PathCache::longestPath() const {
+    size_t most = 0;
+    for (const Paths& c : committed_)
+        for (const Record& r : c.records)
+            if (r.kept) most = std::max(most, size_t(r.segmentCount));
+    return most;
+}
+
 void PathCache::commit() {
     if (!measuring_) return;
     parallelFor(committed_.size(), [&](size_t w) {

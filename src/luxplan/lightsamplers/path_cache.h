@@ -63,6 +63,8 @@ public:
     // ... of which met the move only along shadow queries that answered as before.
     uint64_t askedAgain() const;
     size_t segments() const { return committedSegments_; }
+    // The most segments one committed path holds.
+    size_t longestPath() const;
 
 private:
     // A path's footprint lives in its work item's arrays (one allocation per work
