@@ -444,5 +444,35 @@ TEST(SunDiskIndex, EverySunSampleLiesInTheConeAroundTheDisks) {
     EXPECT_GT(std::acos(closest), std::acos(env.sunConeCos()) - radians(2 * kSunAngularDiameterDeg));
 }
 
+// sunBehind(n) lets a surface that only reflects skip its sun sample: it must hold
+// only where every sample lies behind the surface, and hold up to the cone's edge.
+TEST(SunDiskIndex, ASunBehindASurfaceLeavesEverySampleBehindIt) {
+    DaylightEnvironment sky = blackSkyWithoutSun();
+    std::vector<SunDisk> disks;
+    for (int k = 0; k < 13; ++k) disks.push_back(sunDisk(15 + 40.0 * k / 12, 95 + 45.0 * k / 12, 1.0 / 13, 60000));
+    DaylightEnvironment env(sky.skyMap(), disks, 0.0);
+    Rng rng(5);
+    std::vector<Vec3> suns;
+    for (int i = 0; i < 20000; ++i) suns.push_back(env.sampleSun(rng.uniform(), {rng.uniform(), rng.uniform()}).wi);
+    int behind = 0;
+    for (int i = 0; i < 3000; ++i) {
+        const Vec3 n = sampleUniformSphere({rng.uniform(), rng.uniform()});
+        if (!env.sunBehind(n)) continue;
+        ++behind;
+        for (const Vec3& w : suns) ASSERT_LE(dot(w, n), 0) << "normal " << i;
+    }
+    EXPECT_GT(behind, 300);
+    // Normals tilted from straight against the cone's axis towards it: behind until the
+    // cone's edge reaches the surface's plane, then not.
+    const double edge = kPi / 2 - std::acos(env.sunConeCos());
+    const Frame f = Frame::fromNormal(-env.sunConeAxis());
+    for (double tilt : {0.0, 0.5 * edge, edge - 1e-3, edge + 1e-3, kPi / 2}) {
+        const Vec3 n = f.toWorld({std::sin(tilt), 0, std::cos(tilt)});
+        EXPECT_EQ(env.sunBehind(n), tilt < edge) << "tilt " << tilt;
+    }
+    // No sun: never.
+    EXPECT_FALSE(sky.sunBehind(Vec3(0, 0, -1)));
+}
+
 }  // namespace
 }  // namespace luxplan

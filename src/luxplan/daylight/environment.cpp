@@ -132,7 +132,7 @@ void DaylightEnvironment::indexSunDisks() {
         double widest = 0;
         for (const SunDisk& s : suns_) widest = std::max(widest, std::acos(std::clamp(dot(s.direction, sunConeAxis_), -1.0, 1.0)));
         // Wider by the disk, its rim tolerance and rounding.
-        if (widest + 2 * reach < kPi / 2) sunConeCos_ = std::cos(widest + 2 * reach);
+        if (widest + 2 * reach < kPi / 2) sunConeCos_ = std::cos(widest + 2 * reach), sunConeSin_ = std::sin(widest + 2 * reach);
     }
     // Apart by more than two of the widened disks (checked pair by pair up to a few
     // thousand disks; beyond that, many steps overlap anyway).

@@ -119,6 +119,11 @@ public:
     // hemisphere does): sampleSun's directions all lie in it.
     const Vec3& sunConeAxis() const { return sunConeAxis_; }
     double sunConeCos() const { return sunConeCos_; }
+    // Whether every sampleSun direction w has dot(w, n) <= 0 (n unit): a surface of
+    // normal n that only reflects gets nothing from a sun sample.
+    bool sunBehind(const Vec3& n) const {
+        return sunConeCos_ > 0 && dot(n, sunConeAxis_) < -(sunConeSin_ + 1e-9);
+    }
 
     // ---- Illuminance (lx) ----
     double groundReflectance() const { return groundReflectance_; }
@@ -150,7 +155,7 @@ private:
     // A cone around every disk (a morning's suns span a few tens of degrees): a
     // direction outside it sees no sun, found with one dot product.
     Vec3 sunConeAxis_;
-    double sunConeCos_ = 1;
+    double sunConeCos_ = 1, sunConeSin_ = 0;
     // No two disks reach each other (steps apart by more than a disk): a direction drawn
     // in one disk lies in it alone, so sampleSun needs no lookup.
     bool sunDisksApart_ = false;

@@ -453,8 +453,13 @@ double PathTracer::sample(const Sensor& sensor, PathSamples& samples, RayStats& 
             EnvironmentSample sun;
             if (daylight_ && daylight_->hasSun() && (sunHere || outside)) {
                 const double uDisk = samples.get1D(PathSamples::SunDisk);
-                sun = daylight_->sampleSun(uDisk, samples.get2D(PathSamples::SunPoint));
-                if (sunHere) addLight(sun.wi, sun.Le, sun.pdf, kInf, -1, LightBudget::kSun, true);
+                const Vec2 uPoint = samples.get2D(PathSamples::SunPoint);
+                // A surface that only reflects, with every sun direction behind it, would
+                // find the sample unlit (evalCos): its numbers are drawn all the same, so
+                // that every later one stays, but the direction is not.
+                const bool behind = v.isSurface() && !v.bsdf->hasDiffuseTransmission() && daylight_->sunBehind(v.ng);
+                if (outside || !behind) sun = daylight_->sampleSun(uDisk, uPoint);
+                if (sunHere && !behind) addLight(sun.wi, sun.Le, sun.pdf, kInf, -1, LightBudget::kSun, true);
             }
             if (skyHere) {
                 EnvironmentSample s = sky_.sample(*view, v.p, samples.get2D(PathSamples::SkyPoint));
