@@ -19,6 +19,7 @@
 #include <luxplan/json/fields.h>
 #include <luxplan/json/parse.h>
 #include <luxplan/core/limits.h>
+#include <luxplan/core/parallel.h>
 #include <luxplan/lightsamplers/sampler_type.h>
 #include <luxplan/io/mesh_io.h>
 #include <luxplan/io/photometry_io.h>
@@ -1213,10 +1214,13 @@ private:
     }
 
     void buildVoxels() {
+        // Each solid on its own (a few tenths of a second in all for the paper's offices).
+        std::vector<std::pair<const TriangleMesh*, VoxelGrid*>> solids;
         for (auto& e : scene_.entities)
-            if (e.hasGeometry()) e.voxels = voxelizeSolid(e.mesh, options_.voxelSize);
+            if (e.hasGeometry()) solids.push_back({&e.mesh, &e.voxels});
         for (auto& g : scene_.geometry)
-            if (g.kind != StaticKind::Room) g.voxels = voxelizeSolid(g.mesh, options_.voxelSize);
+            if (g.kind != StaticKind::Room) solids.push_back({&g.mesh, &g.voxels});
+        parallelFor(solids.size(), [&](size_t i) { *solids[i].second = voxelizeSolid(*solids[i].first, options_.voxelSize); });
     }
 
     struct Template {
