@@ -259,17 +259,7 @@ MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& op
     // items, so each runs its own rounds, all at once: none waits for the others' rounds.
     std::vector<int> traced(work.size(), 0);
     std::vector<char> needed(work.size(), 1), paused(work.size(), 0);
-    // Moved samplers first: they trace every path afresh and run the longest chains of
-    // looks, so the other samplers' reused paths fill the second thread around them
-    // instead of after them (the numbers do not depend on the order).
-    std::vector<size_t> order;
-    for (int first = 1; first >= 0; --first)
-        for (size_t k = 0; k < samplers; ++k) {
-            const bool moved = cache && firstWork[k] < firstWork[k + 1] && cache->moved(firstWork[k]);
-            if (moved == bool(first)) order.push_back(k);
-        }
-    parallelFor(samplers, [&](size_t slot) {
-        const size_t k = order[slot];
+    parallelFor(samplers, [&](size_t k) {
         const int batch = std::max(1, options.batchPaths);
         int to = !options.adaptive ? paths : std::min(paths, std::max(options.minPaths, batch));
         for (;;) {

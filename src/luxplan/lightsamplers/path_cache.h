@@ -58,9 +58,6 @@ public:
     // beyond them that the move missed.
     void discard();
 
-    // Whether the measurement in progress traces every path of work item `work` afresh
-    // (its sampler moved).
-    bool moved(size_t work) const { return work < workMoved_.size() && workMoved_[work]; }
     // Paths the measurement in progress, or else the last one, reused.
     uint64_t reused() const;
     // ... of which met the move only along shadow queries that answered as before.
