@@ -81,6 +81,9 @@ private:
     int i_, j_;
 };
 
+// A path adds to its own stratum and to the strata of its eye's light samples.
+static_assert(PathContributions::kCapacity >= 1 + SensorLight::kCapacity);
+
 class PlacedDirectional final : public PlacedSampler {
 public:
     Frustum frustum;

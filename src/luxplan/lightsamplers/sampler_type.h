@@ -34,10 +34,12 @@ struct Estimate {
 
 // What one path adds to a sampler's items: to the item it was traced for and, for a
 // type whose paths reach other items too (sharesPaths()), to those. At most
-// kCapacity distinct items per path; adding to an item already there sums.
+// kCapacity distinct items per path (a directional path's own stratum and its eye's
+// light samples: directional.cpp); adding to an item already there sums. Small,
+// since the path cache keeps one per path and its checks stream through them.
 class PathContributions {
 public:
-    static constexpr int kCapacity = 8;
+    static constexpr int kCapacity = 4;
     explicit PathContributions(int item) : item_(item) {}
     void add(double value) { add(item_, value); }  // to the path's own item
     void add(int item, double value) {
