@@ -5,11 +5,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <stdexcept>
 #include <utility>
 #include <vector>
 
 #include <luxplan/core/rng.h>
 #include <luxplan/emitters/emitter_shape.h>
+#include <luxplan/lightsamplers/sampler_type.h>
+#include <luxplan/pathtracer/path_tracer.h>
 #include "support/scene_builder.h"
 #include "support/scene_lab.h"
 
@@ -191,6 +194,20 @@ TEST(Directional, FewPathsDoNotReadHighOnALitWall) {
 
 // Strata of a sampler that shares paths are strata of one stratified estimate: a
 // constant per stratum has no variance.
+// A directional path adds to its own stratum and to those of its eye's light samples
+// (the sun, the sky, a luminaire); a path cache record holds exactly that many.
+TEST(PathContributions, HoldADirectionalPathsStrataAndRefuseMore) {
+    PathContributions c(5);
+    c.add(1.0);  // its own stratum
+    for (int k = 0; k < SensorLight::kCapacity; ++k) c.add(k, 2.0 + k);
+    c.add(1, 0.5);  // a stratum already there sums
+    ASSERT_EQ(c.size(), PathContributions::kCapacity);
+    EXPECT_EQ(c.itemAt(0), 5);
+    EXPECT_EQ(c.valueAt(0), 1.0);
+    EXPECT_EQ(c.valueAt(2), 3.5);
+    EXPECT_THROW(c.add(7, 1.0), std::logic_error);
+}
+
 TEST(ItemEstimates, StratifiedErrorIgnoresTheSpreadBetweenSources) {
     ItemEstimates e(1, 2);
     for (int g = 0; g < ItemEstimates::kFolds; ++g)
