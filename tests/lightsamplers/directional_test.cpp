@@ -192,8 +192,6 @@ TEST(Directional, FewPathsDoNotReadHighOnALitWall) {
     EXPECT_GT(reported / seeds, 0.5 * sd) << "the error misses the spread over seeds";
 }
 
-// Strata of a sampler that shares paths are strata of one stratified estimate: a
-// constant per stratum has no variance.
 // A directional path adds to its own stratum and to those of its eye's light samples
 // (the sun, the sky, a luminaire); a path cache record holds exactly that many.
 TEST(PathContributions, HoldADirectionalPathsStrataAndRefuseMore) {
@@ -208,6 +206,8 @@ TEST(PathContributions, HoldADirectionalPathsStrataAndRefuseMore) {
     EXPECT_THROW(c.add(7, 1.0), std::logic_error);
 }
 
+// Strata of a sampler that shares paths are strata of one stratified estimate: a
+// constant per stratum has no variance.
 TEST(ItemEstimates, StratifiedErrorIgnoresTheSpreadBetweenSources) {
     ItemEstimates e(1, 2);
     for (int g = 0; g < ItemEstimates::kFolds; ++g)
