@@ -109,6 +109,28 @@ TEST(OutsideTheRoom, LuminairesAndSamplers) {
     EXPECT_TRUE(outsideTheRoom(open).empty());
 }
 
+TEST(SealedSamplers, PointsInAClosedOpaqueBox) {
+    // A desk's plane at 0.76 m, a monitor's foot (2 cm high, on the desk) over one of
+    // its four points, and a plane in a glass case, which light enters.
+    Scene s = room()
+                  .box("case", {4, 0.5, 0}, {5, 1.5, 1}, "glass")
+                  .sampler("shelf", planarSampler({4.5, 1, 0.5}, {0, 0, 1}, {0, 1, 0}, {0.4, 0.4}, {2, 2}), 100)
+                  .entity("desk", {2, 2, 0}).region({0, 0}, {6, 4})
+                  .part({1.2, 0.6, 0.75}, "wall")
+                  .sampler("task", planarSampler({0, 0, 0.76}, {0, 0, 1}, {0, 1, 0}, {1, 0.5}, {2, 2}), 300, 500)
+                  .entity("monitor", {0.25, 0.125, 0.75}).region({-0.5, -0.25}, {0.5, 0.25}).preset("monitor", "wall").end()
+                  .end()
+                  .build();
+    std::vector<Diagnostic> w = sealedSamplers(s);
+    ASSERT_EQ(w.size(), 1u) << messages(w);
+    EXPECT_EQ(w[0].jsonPath, "/entities/0/samplers/0");
+    EXPECT_EQ(w[0].message, "sampler \"desk.task\" measures inside a closed opaque box (where \"desk\" stands): 1 of its 4 "
+                            "points, e.g. (2.25, 2.12, 0.76), where no light reaches (they read 0)");
+    // The monitor moved off the points: no warning.
+    s.entities[1].position = {0, 0.2, 0.75};
+    EXPECT_TRUE(sealedSamplers(s).empty()) << messages(sealedSamplers(s));
+}
+
 DaylightParams preetham(const char* from, const char* to) {
     DaylightParams d;
     d.model = SkyModelType::Preetham;

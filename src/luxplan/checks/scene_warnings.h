@@ -27,6 +27,11 @@ inline constexpr int kEnclosureRays = 1024;
 // (outside_room.cpp). Scenes without a room are not judged.
 std::vector<Diagnostic> outsideTheRoom(const Scene& scene);
 
+// A sampler's measurement point (as outsideTheRoom takes them) inside a closed opaque
+// box without a luminaire, where no light reaches: it reads 0, and the path tracer
+// traces no path there (pathtracer/sealed_boxes.h; sealed_samplers.cpp).
+std::vector<Diagnostic> sealedSamplers(const Scene& scene);
+
 // A daylight interval at whose steps the sun is below the horizon (Preetham and CIE
 // general skies, which are dark then): all of them, or some (dark_daylight.cpp).
 std::vector<Diagnostic> darkDaylight(const Scene& scene);

@@ -1,6 +1,7 @@
 #include <luxplan/pathtracer/path_tracer.h>
 
 #include <algorithm>
+#include <atomic>
 #include <optional>
 
 #include <luxplan/core/warp.h>
@@ -123,6 +124,21 @@ void PathTracer::updateLayout() {
     std::vector<Transform> world(rt_.scene().entities.size());
     for (size_t i = 0; i < world.size(); ++i) world[i] = rt_.worldFromEntity(int(i));
     emitters_ = EmitterSet(rt_.scene(), world, options_.emitterSelection);
+    sealed_ = SealedBoxes(rt_.scene(), world, emitters_);
+    static std::atomic<uint64_t> stamps{0};
+    layoutStamp_ = ++stamps;
+}
+
+bool PathTracer::sealedAt(const Vec3& p, Vec3* exit) const {
+    if (sealed_.empty()) return false;
+    // A sampler's paths for one point come one after another on a thread: the answer
+    // is kept for the point until the layout or the point changes.
+    thread_local uint64_t stamp = 0;
+    thread_local Vec3 point, way;
+    thread_local bool answer = false;
+    if (stamp != layoutStamp_ || !(point == p)) stamp = layoutStamp_, point = p, answer = sealed_.contain(p, way);
+    if (exit) *exit = way;
+    return answer;
 }
 
 double PathTracer::transmittance(const Vec3& origin, const Vec3& w, double tMax, int target, RayStats& stats) const {
@@ -183,6 +199,16 @@ double PathTracer::sample(const Sensor& sensor, PathSamples& samples, RayStats& 
                           SensorLight* sensorLight) const {
     if (sensorLight) sensorLight->count = 0;
     const Vec3 origin = sensor.position();
+    if (Vec3 exit; sealedAt(origin, &exit)) {
+        // Its value depends on the box around it and on the luminaires (one might move
+        // into the box): the way out to the box's face meets the box's triangles, so
+        // the path cache traces it again when the box moves, and when a luminaire does.
+        if (stats.footprint) {
+            stats.footprint->add(origin, exit - origin, 0, 1);
+            stats.footprint->usedEmitterChoice = !emitters_.empty();
+        }
+        return 0;
+    }
     Vec3 L, throughput(1, 1, 1);
     Vertex v;
     v.p = origin;

@@ -19,6 +19,7 @@
 #include <luxplan/materials/bsdf.h>
 #include <luxplan/pathtracer/emitters.h>
 #include <luxplan/pathtracer/panes.h>
+#include <luxplan/pathtracer/sealed_boxes.h>
 #include <luxplan/pathtracer/path_footprint.h>
 #include <luxplan/pathtracer/path_samples.h>
 #include <luxplan/pathtracer/sensor.h>
@@ -119,6 +120,9 @@ public:
 
     const EmbreeScene& rayTracer() const { return rt_; }
     const EmitterSet& emitters() const { return emitters_; }
+    // Whether no light reaches p: inside a closed opaque box (sealed_boxes.h). A path
+    // from there is 0 and traces no ray. `exit`: where the way out leaves the box.
+    bool sealedAt(const Vec3& p, Vec3* exit = nullptr) const;
     const DaylightEnvironment* daylight() const { return daylight_; }  // null at night
     // Whether paths sample the sunlit patches (asked for, and the scene has a sun, a room
     // with an opening it shines through, and no glass furniture).
@@ -144,6 +148,8 @@ private:
     SkyLight sky_;
     SunPatches patches_;
     OpeningPanes panes_;
+    SealedBoxes sealed_;
+    uint64_t layoutStamp_ = 0;  // unique to each updateLayout() of any tracer
     bool exteriorSun_ = false;
 };
 

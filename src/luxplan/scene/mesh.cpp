@@ -1,5 +1,7 @@
 #include <luxplan/scene/mesh.h>
 
+#include <cmath>
+
 namespace luxplan {
 
 void TriangleMesh::append(const TriangleMesh& other, const Transform& t) {
@@ -16,6 +18,22 @@ void TriangleMesh::append(const TriangleMesh& other, const Transform& t) {
         auto tri = other.triangles[i];
         if (flip) std::swap(tri[1], tri[2]);
         addTriangle(base + tri[0], base + tri[1], base + tri[2], other.materials[i]);
+    }
+    // A box stays a box under a map that sends each axis to an axis (a rotation by a
+    // quarter turn, whose cosine is 6e-17 in double, a scale, a mirror); under any
+    // other it is no longer axis-aligned.
+    bool axisAligned = true;
+    for (int row = 0; row < 3; ++row) {
+        int nonzero = 0;
+        for (int col = 0; col < 3; ++col) nonzero += std::abs(t.m[size_t(3 * row + col)]) > 1e-12;
+        axisAligned = axisAligned && nonzero == 1;
+    }
+    if (!axisAligned) return;
+    for (const SolidBox& b : other.solidBoxes) {
+        Bounds3 placed;
+        placed.extend(t.applyPoint(b.box.lo));
+        placed.extend(t.applyPoint(b.box.hi));
+        solidBoxes.push_back({placed, b.material});
     }
 }
 
@@ -66,6 +84,7 @@ void addBox(TriangleMesh& mesh, const Bounds3& box, uint32_t material) {
     addQuad(mesh, {l.x, h.y, l.z}, {l.x, h.y, h.z}, {h.x, h.y, h.z}, {h.x, h.y, l.z}, material);  // +y
     addQuad(mesh, {l.x, l.y, l.z}, {l.x, l.y, h.z}, {l.x, h.y, h.z}, {l.x, h.y, l.z}, material);  // -x
     addQuad(mesh, {h.x, l.y, l.z}, {h.x, h.y, l.z}, {h.x, h.y, h.z}, {h.x, l.y, h.z}, material);  // +x
+    mesh.solidBoxes.push_back({box, material});
 }
 
 }  // namespace luxplan

@@ -10,11 +10,19 @@
 
 namespace luxplan {
 
+// A closed axis-aligned box among a mesh's triangles (addBox), of one material: a
+// point inside it sees only the box's inner faces.
+struct SolidBox {
+    Bounds3 box;
+    uint32_t material = 0;
+};
+
 struct TriangleMesh {
     std::vector<Vec3> positions;
     std::vector<std::array<uint32_t, 3>> triangles;  // counter-clockwise seen from outside
     std::vector<uint32_t> materials;                  // per triangle, index into Scene::materials
     std::vector<Vec3> normals;                        // optional per-vertex shading normals
+    std::vector<SolidBox> solidBoxes;                 // the boxes addBox made, still closed and axis-aligned
 
     size_t triangleCount() const { return triangles.size(); }
     bool empty() const { return triangles.empty(); }
@@ -22,7 +30,8 @@ struct TriangleMesh {
         triangles.push_back({a, b, c});
         materials.push_back(material);
     }
-    // Appends `other` transformed by `t` (normals too, if both meshes carry them).
+    // Appends `other` transformed by `t` (normals too, if both meshes carry them; its
+    // solid boxes where `t` keeps boxes axis-aligned).
     void append(const TriangleMesh& other, const Transform& t = Transform());
     Bounds3 bounds() const;
     double area() const;
