@@ -122,21 +122,24 @@ void EmbreeScene::attachMesh(SubScene& sub, const TriangleMesh& mesh, HitKind ki
 unsigned EmbreeScene::attachTriangles(SubScene& sub, const TriangleMesh& mesh, HitKind kind, int index, unsigned mask) {
     RTCGeometry g = rtcNewGeometry(device_->handle(), RTC_GEOMETRY_TYPE_TRIANGLE);
     rtcSetGeometryMask(g, mask);
-    auto* v = static_cast<float*>(
-        rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), mesh.positions.size()));
-    for (size_t i = 0; i < mesh.positions.size(); ++i) {
-        v[3 * i] = float(mesh.positions[i].x), v[3 * i + 1] = float(mesh.positions[i].y), v[3 * i + 2] = float(mesh.positions[i].z);
-    }
+    rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), mesh.positions.size());
     auto* idx = static_cast<unsigned*>(
         rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), mesh.triangles.size()));
     std::memcpy(idx, mesh.triangles.data(), mesh.triangles.size() * 3 * sizeof(unsigned));
+    std::vector<TriangleFace>& faces = faces_.emplace_back(mesh.triangles.size());
+    for (size_t t = 0; t < faces.size(); ++t) faces[t] = {mesh.geometricNormal(t), mesh.materials[t]};
+    GeometryInfo info;
+    info.kind = kind, info.index = index, info.mesh = &mesh, info.faces = &faces;
+    info.entity = sub.flat ? (kind == HitKind::Emitter ? scene_.emitters[size_t(index)].entity
+                              : kind == HitKind::Entity ? index : -1)
+                           : -1;
+    place(g, info);  // in its own frame where it is instanced (entity -1 there)
+    info.entity = sub.entity >= 0 ? sub.entity : info.entity;
     rtcCommitGeometry(g);
     unsigned id = rtcAttachGeometry(sub.scene, g);
     rtcReleaseGeometry(g);
-    std::vector<TriangleFace>& faces = faces_.emplace_back(mesh.triangles.size());
-    for (size_t t = 0; t < faces.size(); ++t) faces[t] = {mesh.geometricNormal(t), mesh.materials[t]};
     if (sub.geometries.size() <= id) sub.geometries.resize(id + 1);
-    sub.geometries[id] = {kind, index, &mesh, &faces};
+    sub.geometries[id] = info;
     return id;
 }
 
@@ -151,17 +154,39 @@ void EmbreeScene::attachEmitter(SubScene& sub, const Emitter& e, int index) {
     bool sphere = prim.kind == EmitterPrimitive::Kind::Sphere;
     RTCGeometry g = rtcNewGeometry(device_->handle(), sphere ? RTC_GEOMETRY_TYPE_SPHERE_POINT : RTC_GEOMETRY_TYPE_ORIENTED_DISC_POINT);
     rtcSetGeometryMask(g, kEmitterMask);
-    auto* p = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, 4 * sizeof(float), 1));
-    p[0] = float(prim.center.x), p[1] = float(prim.center.y), p[2] = float(prim.center.z), p[3] = float(prim.radius);
-    if (!sphere) {
-        auto* n = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_NORMAL, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), 1));
-        n[0] = float(prim.normal.x), n[1] = float(prim.normal.y), n[2] = float(prim.normal.z);
-    }
+    rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, 4 * sizeof(float), 1);
+    if (!sphere) rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_NORMAL, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), 1);
+    GeometryInfo info;
+    info.kind = HitKind::Emitter, info.index = index;
+    info.center = prim.center, info.normal = prim.normal, info.radius = float(prim.radius);
+    info.entity = sub.flat ? e.entity : -1;
+    place(g, info);
+    info.entity = e.entity;
     rtcCommitGeometry(g);
     unsigned id = rtcAttachGeometry(sub.scene, g);
     rtcReleaseGeometry(g);
     if (sub.geometries.size() <= id) sub.geometries.resize(id + 1);
-    sub.geometries[id] = {HitKind::Emitter, index, nullptr};
+    sub.geometries[id] = info;
+}
+
+void EmbreeScene::place(RTCGeometry g, const GeometryInfo& info) {
+    const Transform* t = info.entity >= 0 ? &worldFromEntity_[size_t(info.entity)] : nullptr;
+    auto* v = static_cast<float*>(rtcGetGeometryBufferData(g, RTC_BUFFER_TYPE_VERTEX, 0));
+    if (info.mesh) {
+        const std::vector<Vec3>& positions = info.mesh->positions;
+        for (size_t i = 0; i < positions.size(); ++i) {
+            const Vec3 p = t ? t->applyPoint(positions[i]) : positions[i];
+            v[3 * i] = float(p.x), v[3 * i + 1] = float(p.y), v[3 * i + 2] = float(p.z);
+        }
+        return;
+    }
+    const Vec3 c = t ? t->applyPoint(info.center) : info.center;
+    v[0] = float(c.x), v[1] = float(c.y), v[2] = float(c.z), v[3] = info.radius;
+    if (!(info.normal == Vec3())) {
+        const Vec3 n = t ? t->applyVector(info.normal) : info.normal;
+        auto* nb = static_cast<float*>(rtcGetGeometryBufferData(g, RTC_BUFFER_TYPE_NORMAL, 0));
+        nb[0] = float(n.x), nb[1] = float(n.y), nb[2] = float(n.z);
+    }
 }
 
 void EmbreeScene::finishSubScene(SubScene& sub) {
@@ -183,25 +208,44 @@ EmbreeScene::EmbreeScene(const Scene& scene, const Layout& layout, std::shared_p
     top_ = rtcNewScene(dev);
     rtcSetSceneFlags(top_, RTC_SCENE_FLAG_DYNAMIC);
     rtcSetSceneBuildQuality(top_, RTC_BUILD_QUALITY_LOW);
+    flat_.scene = top_;
+    flat_.flat = true;
 
-    // Static sub-scene: visible static items and fixed luminaires. Invisible blockers
-    // only collide (overlap constraint) and take no part in light transport.
-    subScenes_.emplace_back();
-    subScenes_[0].scene = rtcNewScene(dev);
-    for (size_t i = 0; i < scene.geometry.size(); ++i)
-        if (!scene.geometry[i].invisible && !scene.geometry[i].mesh.empty())
-            attachMesh(subScenes_[0], scene.geometry[i].mesh, HitKind::Static, int(i));
+    // Static geometry: visible static items and fixed luminaires. Invisible blockers
+    // only collide (overlap constraint) and take no part in light transport. A large
+    // item gets a sub-scene (instanced with the identity), built once.
+    for (size_t i = 0; i < scene.geometry.size(); ++i) {
+        const StaticItem& item = scene.geometry[i];
+        if (item.invisible || item.mesh.empty()) continue;
+        if (item.mesh.triangleCount() <= kFlatTriangles) {
+            attachMesh(flat_, item.mesh, HitKind::Static, int(i));
+            continue;
+        }
+        SubScene sub;
+        sub.scene = rtcNewScene(dev);
+        attachMesh(sub, item.mesh, HitKind::Static, int(i));
+        subScenes_.push_back(std::move(sub));
+    }
     for (size_t i = 0; i < scene.emitters.size(); ++i)
-        if (scene.emitters[i].entity < 0) attachEmitter(subScenes_[0], scene.emitters[i], int(i));
+        if (scene.emitters[i].entity < 0) attachEmitter(flat_, scene.emitters[i], int(i));
 
     subSceneOfEntity_.assign(scene.entities.size(), -1);
+    flatOfEntity_.assign(scene.entities.size(), {});
     for (size_t i = 0; i < scene.entities.size(); ++i) {
         const Entity& e = scene.entities[i];
         if (!e.hasGeometry() && e.emitters.empty()) continue;
+        ++entitiesMet_;
+        if (e.mesh.triangleCount() <= kFlatTriangles) {
+            const size_t before = flat_.geometries.size();
+            if (e.hasGeometry()) attachMesh(flat_, e.mesh, HitKind::Entity, int(i));
+            for (int em : e.emitters) attachEmitter(flat_, scene.emitters[em], em);
+            for (size_t id = before; id < flat_.geometries.size(); ++id) flatOfEntity_[i].push_back(unsigned(id));
+            continue;
+        }
         SubScene sub;
         sub.scene = rtcNewScene(dev);
         sub.entity = int(i);
-        if (e.hasGeometry()) attachMesh(sub, e.mesh, HitKind::Entity, int(i));
+        attachMesh(sub, e.mesh, HitKind::Entity, int(i));
         for (int em : e.emitters) attachEmitter(sub, scene.emitters[em], em);
         subSceneOfEntity_[i] = int(subScenes_.size());
         subScenes_.push_back(std::move(sub));
@@ -218,11 +262,21 @@ EmbreeScene::~EmbreeScene() {
     rtcReleaseScene(top_);
 }
 
-size_t EmbreeScene::instanceCount() const { return subScenes_.size() - 1; }
+size_t EmbreeScene::entityCount() const { return entitiesMet_; }
 
 void EmbreeScene::setEntityTransform(int entity, const Transform& worldFromEntity) {
-    worldFromEntity_[entity] = worldFromEntity;
-    int s = subSceneOfEntity_[entity];
+    const Transform& was = worldFromEntity_[size_t(entity)];
+    if (was.m == worldFromEntity.m && was.t == worldFromEntity.t) return;  // nothing to rebuild
+    worldFromEntity_[size_t(entity)] = worldFromEntity;
+    for (unsigned id : flatOfEntity_[size_t(entity)]) {
+        RTCGeometry g = rtcGetGeometry(top_, id);
+        place(g, flat_.geometries[id]);
+        rtcUpdateGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0);
+        if (flat_.geometries[id].mesh == nullptr && !(flat_.geometries[id].normal == Vec3()))
+            rtcUpdateGeometryBuffer(g, RTC_BUFFER_TYPE_NORMAL, 0);
+        rtcCommitGeometry(g);
+    }
+    int s = subSceneOfEntity_[size_t(entity)];
     if (s < 0) return;
     RTCGeometry inst = rtcGetGeometry(top_, subScenes_[s].instanceId);
     setRowMajor(inst, worldFromEntity);
@@ -251,7 +305,8 @@ std::optional<Hit> EmbreeScene::intersect(const Ray& r) const {
     rtcIntersect1(top_, &context, &rh);
     if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
 
-    const SubScene& sub = subScenes_[subSceneOfInstance_[rh.hit.instID[0]]];
+    const SubScene& sub =
+        rh.hit.instID[0] == RTC_INVALID_GEOMETRY_ID ? flat_ : subScenes_[size_t(subSceneOfInstance_[rh.hit.instID[0]])];
     const GeometryInfo& info = sub.geometries[rh.hit.geomID];
     Hit hit;
     hit.t = rh.ray.tfar;
@@ -259,10 +314,13 @@ std::optional<Hit> EmbreeScene::intersect(const Ray& r) const {
     hit.kind = info.kind;
     hit.index = info.index;
     hit.primitive = rh.hit.primID;
-    // Embree's Ng is in the instance's object space, unnormalized. Entity transforms
-    // are rigid, so normals transform like vectors.
-    const Transform* world = sub.entity >= 0 ? &worldFromEntity_[sub.entity] : nullptr;
+    // Normals are taken in the geometry's own frame, in double, and placed in the
+    // world: entity transforms are rigid, so normals transform like vectors.
+    const Transform* world = info.entity >= 0 ? &worldFromEntity_[size_t(info.entity)] : nullptr;
+    // Embree's own Ng (a sphere's, a disc's) is in the frame of what the ray met: the
+    // world for flat geometry.
     Vec3 ng(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z);
+    if (!info.mesh && &sub == &flat_) world = nullptr;
     if (info.mesh) {
         const TriangleFace& face = (*info.faces)[rh.hit.primID];
         ng = face.normal;  // exact, in double
