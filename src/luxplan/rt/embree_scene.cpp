@@ -158,7 +158,8 @@ void EmbreeScene::attachEmitter(SubScene& sub, const Emitter& e, int index) {
     if (!sphere) rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_NORMAL, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), 1);
     GeometryInfo info;
     info.kind = HitKind::Emitter, info.index = index;
-    info.center = prim.center, info.normal = prim.normal, info.radius = float(prim.radius);
+    info.center = prim.center, info.radius = float(prim.radius);
+    if (!sphere) info.normal = prim.normal;  // a disc's; a sphere has none (and no normal buffer)
     info.entity = sub.flat ? e.entity : -1;
     place(g, info);
     info.entity = e.entity;
@@ -272,7 +273,7 @@ void EmbreeScene::setEntityTransform(int entity, const Transform& worldFromEntit
         RTCGeometry g = rtcGetGeometry(top_, id);
         place(g, flat_.geometries[id]);
         rtcUpdateGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0);
-        if (flat_.geometries[id].mesh == nullptr && !(flat_.geometries[id].normal == Vec3()))
+        if (flat_.geometries[id].mesh == nullptr && !(flat_.geometries[id].normal == Vec3()))  // a disc
             rtcUpdateGeometryBuffer(g, RTC_BUFFER_TYPE_NORMAL, 0);
         rtcCommitGeometry(g);
     }

@@ -114,7 +114,8 @@ private:
         // Per triangle, what every hit reads, side by side: one cache line, not the
         // three vertices and the material of a mesh spread over memory.
         const std::vector<TriangleFace>* faces = nullptr;
-        // A sphere or disc emitter, in its own frame (flat geometry moves it).
+        // A sphere or disc emitter, in its own frame (flat geometry moves it); a
+        // sphere's normal is zero.
         Vec3 center, normal;
         float radius = 0;
     };
