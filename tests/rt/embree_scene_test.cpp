@@ -98,11 +98,11 @@ TEST_F(Fixture, MovingAnInstanceChangesWhatARayHits) {
     EXPECT_NEAR(side->geometricNormal.z, 1.0, 1e-9);
 }
 
-// A plate at height z of w x d metres, centred on the origin, made of more triangles
-// than kFlatTriangles (so it is instanced, not flat).
-TriangleMesh finePlate(double w, double d, double z, uint32_t material) {
+// A plate at height z of w x d metres, centred on the origin, made of 202 ny
+// triangles: 20200, more than kFlatTriangles, by default (so it is instanced).
+TriangleMesh finePlate(double w, double d, double z, uint32_t material, int ny = 100) {
     TriangleMesh m;
-    const int nx = 101, ny = 100;  // 2 * 101 * 100 = 20200 triangles
+    const int nx = 101;  // 2 * 101 * ny triangles
     for (int j = 0; j <= ny; ++j)
         for (int i = 0; i <= nx; ++i) m.positions.push_back({w * (double(i) / nx - 0.5), d * (double(j) / ny - 0.5), z});
     for (int j = 0; j < ny; ++j)
@@ -189,6 +189,30 @@ TEST(EmbreeScene, FlatAndInstancedEntitiesMoveAlike) {
     EXPECT_EQ(top->kind, HitKind::Entity);
     EXPECT_NEAR(top->t, 2.9 - 0.5, 1e-5);
     EXPECT_NEAR(top->geometricNormal.z, 1, 1e-9);
+}
+
+// Items lie flat only while their triangles add up to kFlatTriangles: of three plates
+// of 8080 triangles, the third is instanced; all three are met where they stand.
+TEST(EmbreeScene, FlatTrianglesStayWithinTheirBound) {
+    test::SceneBuilder b;
+    b.material("wood", diffuse(0.5)).room({0, 0, 0}, {6, 4, 3}, "wood", "wood", "wood");
+    for (int k = 0; k < 3; ++k) b.entity("plate" + std::to_string(k), {1.0 + 2 * k, 2, 0}).region({0.5, 0.5}, {5.5, 3.5}).end();
+    Scene scene = b.build();
+    for (int k = 0; k < 3; ++k) scene.entities[size_t(k)].mesh = finePlate(1, 1, 0.7, scene.materialIndex.at("wood"), 40);
+    Layout layout = initialLayout(scene);
+    EmbreeScene rt(scene, layout);
+    const size_t room = scene.geometry[0].mesh.triangleCount();
+    EXPECT_EQ(rt.flatTriangleCount(), room + 2 * 8080);
+    for (int k = 0; k < 3; ++k) layout.placements[size_t(k)].position.y = 1;
+    rt.setLayout(layout);
+    for (int k = 0; k < 3; ++k) {
+        auto hit = rt.intersect({{1.0 + 2 * k, 1.2, 2}, {0, 0, -1}});
+        ASSERT_TRUE(hit);
+        EXPECT_EQ(hit->kind, HitKind::Entity);
+        EXPECT_EQ(hit->index, k);
+        EXPECT_NEAR(hit->t, 1.3, 1e-5);
+        EXPECT_EQ(rt.intersect({{1.0 + 2 * k, 2.7, 2}, {0, 0, -1}})->kind, HitKind::Static);
+    }
 }
 
 }  // namespace

@@ -212,13 +212,20 @@ EmbreeScene::EmbreeScene(const Scene& scene, const Layout& layout, std::shared_p
     flat_.scene = top_;
     flat_.flat = true;
 
+    // Items lie flat while their triangles add up to at most kFlatTriangles, the room
+    // first (nearly every ray meets it), so that a move rebuilds a small BVH; the
+    // others get a sub-scene each, built once and instanced.
+    auto fitsFlat = [&](const TriangleMesh& mesh) {
+        if (flatTriangles_ + mesh.triangleCount() > kFlatTriangles) return false;
+        flatTriangles_ += mesh.triangleCount();
+        return true;
+    };
     // Static geometry: visible static items and fixed luminaires. Invisible blockers
-    // only collide (overlap constraint) and take no part in light transport. A large
-    // item gets a sub-scene (instanced with the identity), built once.
+    // only collide (overlap constraint) and take no part in light transport.
     for (size_t i = 0; i < scene.geometry.size(); ++i) {
         const StaticItem& item = scene.geometry[i];
         if (item.invisible || item.mesh.empty()) continue;
-        if (item.mesh.triangleCount() <= kFlatTriangles) {
+        if (fitsFlat(item.mesh)) {
             attachMesh(flat_, item.mesh, HitKind::Static, int(i));
             continue;
         }
@@ -236,7 +243,7 @@ EmbreeScene::EmbreeScene(const Scene& scene, const Layout& layout, std::shared_p
         const Entity& e = scene.entities[i];
         if (!e.hasGeometry() && e.emitters.empty()) continue;
         ++entitiesMet_;
-        if (e.mesh.triangleCount() <= kFlatTriangles) {
+        if (fitsFlat(e.mesh)) {
             const size_t before = flat_.geometries.size();
             if (e.hasGeometry()) attachMesh(flat_, e.mesh, HitKind::Entity, int(i));
             for (int em : e.emitters) attachEmitter(flat_, scene.emitters[em], em);

@@ -2,9 +2,10 @@
 // The static geometry and every entity with geometry (parts or emitters) lie in it
 // as world-space triangles and points, so that a ray descends one BVH, not one per
 // instance it enters (1.3x the rays per second in the office); moving an entity
-// rewrites its vertices and rebuilds that BVH. An item of more than kFlatTriangles
-// triangles (a large mesh file) keeps a sub-scene of its own, instanced in the top
-// level instead, so that a move never rebuilds it.
+// rewrites its vertices and rebuilds that BVH. Items lie flat while their triangles
+// add up to at most kFlatTriangles (static geometry first); the others (large mesh files, a
+// hall of many pieces) keep a sub-scene each, instanced in the top level, so that no
+// move rebuilds them.
 #pragma once
 
 #include <deque>
@@ -95,8 +96,10 @@ public:
     const Transform& worldFromEntity(int entity) const { return worldFromEntity_[entity]; }
     // Number of entities in the scene (flat or instanced) that rays can meet.
     size_t entityCount() const;
-    // Items of at most this many triangles lie flat in the top level.
+    // The most triangles that lie flat in the top level, all items together.
     static constexpr size_t kFlatTriangles = 20000;
+    // How many do.
+    size_t flatTriangleCount() const { return flatTriangles_; }
     // Whether any visible surface other than the room's window panes has a
     // transmissive (glass) material.
     bool hasGlass() const { return hasGlass_; }
@@ -144,6 +147,7 @@ private:
     std::vector<int> subSceneOfEntity_;      // entity -> subScenes_ index, or -1
     std::vector<std::vector<unsigned>> flatOfEntity_;  // entity -> its flat geomIDs in top_
     size_t entitiesMet_ = 0;
+    size_t flatTriangles_ = 0;
     std::vector<Transform> worldFromEntity_;
     std::vector<TriangleMesh> emitterMeshes_;  // emitters Embree sees as triangles (rects)
     std::deque<TriangleMesh> splitMeshes_;     // meshes split into opaque and glass parts
