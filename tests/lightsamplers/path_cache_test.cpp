@@ -96,19 +96,30 @@ void randomMove(const Scene& scene, Layout& layout, Rng& rng) {
     if (rng.uniform() < 0.3) p.rotationDeg = rng.uniform() < 0.5 ? 90.0 * int(rng.uniform() * 4) : 360 * rng.uniform();
 }
 
+// The sequences' measurement: looks from 8 paths on, so that adaptive runs stop early.
+MeasureOptions sequenceOptions(bool adaptive, int paths) {
+    MeasureOptions o;
+    o.pathsPerPoint = paths, o.seed = 7, o.adaptive = adaptive, o.batchPaths = 8, o.minPaths = 8;
+    return o;
+}
+
+// Measures `layout` into the cache and commits it: where a sequence of moves starts.
+void commitFirst(SceneLab& lab, const MeasureOptions& o, PathCache& cache, const Layout& layout) {
+    lab.rt->setLayout(layout);
+    lab.tracer->updateLayout();
+    measureSamplers(*lab.tracer, o, &cache);
+    cache.commit();
+}
+
 void runSequence(bool adaptive, int paths, int moves, uint64_t moveSeed, bool terrace = false, double walls = 0.6) {
     SceneLab lab(studio(terrace, walls));
     ASSERT_EQ(lab.tracer->samplesExteriorSun(), terrace);
     const Scene& scene = lab.scene;
     const DaylightEnvironment* daylight = lab.daylight ? &*lab.daylight : nullptr;
-    MeasureOptions o;
-    o.pathsPerPoint = paths, o.seed = 7, o.adaptive = adaptive, o.batchPaths = 8, o.minPaths = 8;
+    const MeasureOptions o = sequenceOptions(adaptive, paths);
     PathCache cache(scene);
     Layout committed = initialLayout(scene);
-    lab.rt->setLayout(committed);
-    lab.tracer->updateLayout();
-    measureSamplers(*lab.tracer, o, &cache);
-    cache.commit();
+    commitFirst(lab, o, cache, committed);
     Rng rng(moveSeed);
     uint64_t reused = 0, traced = 0;
     for (int m = 0; m < moves; ++m) {
@@ -156,14 +167,10 @@ TEST(PathCache, MovesEqualFromScratchWithAFootOverATaskPoint) {
     const Scene& scene = lab.scene;
     const int foot = entityNamed(scene, "monitor"), desk = entityNamed(scene, "desk");
     ASSERT_GE(foot, 0);
-    MeasureOptions o;
-    o.pathsPerPoint = 32, o.seed = 7, o.adaptive = true, o.batchPaths = 8, o.minPaths = 8;
+    const MeasureOptions o = sequenceOptions(true, 32);
     PathCache cache(scene);
     Layout committed = initialLayout(scene);
-    lab.rt->setLayout(committed);
-    lab.tracer->updateLayout();
-    measureSamplers(*lab.tracer, o, &cache);
-    cache.commit();
+    commitFirst(lab, o, cache, committed);
     Rng rng(21);
     int sealedLayouts = 0, openLayouts = 0;
     for (int m = 0; m < 24; ++m) {

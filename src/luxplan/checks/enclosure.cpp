@@ -22,10 +22,6 @@ std::vector<Vec3> sphereDirections(int n) {
     return out;
 }
 
-bool opaque(const Material& m) {
-    return m.type == MaterialType::Diffuse || m.type == MaterialType::Glossy || m.type == MaterialType::Mirror;
-}
-
 bool related(const Scene& scene, int a, int b) {
     for (int e = a; e >= 0; e = scene.entities[size_t(e)].parent)
         if (e == b) return true;
@@ -55,7 +51,7 @@ std::vector<Diagnostic> enclosedEmitters(const Scene& scene) {
         for (Vec3 d : directions) {
             if (normal && dot(d, *normal) <= 0) continue;
             auto hit = rt.intersect({origin, d, 0, kInf, surfaces});
-            bool own = hit && opaque(scene.materials[hit->material]) &&
+            bool own = hit && isOpaque(scene.materials[hit->material]) &&
                        (e.entity >= 0 ? hit->kind == HitKind::Entity && related(scene, hit->index, e.entity)
                                       : hit->kind == HitKind::Static && !scene.geometry[size_t(hit->index)].room);
             if (!own) {

@@ -1,10 +1,7 @@
 // Luminaires and samplers outside the room, where the scene file places them.
 #include <luxplan/checks/scene_warnings.h>
 
-#include <cstdio>
-
 #include <luxplan/emitters/emitter_shape.h>
-#include <luxplan/lightsamplers/sampler_type.h>
 #include <luxplan/scene/layout.h>
 
 namespace luxplan {
@@ -17,12 +14,6 @@ bool inside(const std::vector<Bounds3>& rooms, const Vec3& p) {
     for (const Bounds3& r : rooms)
         if (Bounds3(r.lo - Vec3(kSlack, kSlack, kSlack), r.hi + Vec3(kSlack, kSlack, kSlack)).contains(p)) return true;
     return false;
-}
-
-std::string point(const Vec3& p) {
-    char buffer[96];
-    std::snprintf(buffer, sizeof buffer, "(%.3g, %.3g, %.3g)", p.x, p.y, p.z);
-    return buffer;
 }
 
 }  // namespace
@@ -41,12 +32,11 @@ std::vector<Diagnostic> outsideTheRoom(const Scene& scene) {
         Vec3 c = frame(e.entity).applyPoint(e.shape->center());
         if (!inside(rooms, c))
             out.push_back({scene.file.string(), e.jsonPath,
-                           "luminaire \"" + e.name + "\" is outside the room, at " + point(c) + where(e.entity) +
+                           "luminaire \"" + e.name + "\" is outside the room, at " + pointText(c) + where(e.entity) +
                                ": it lights the room only through its openings"});
     }
     for (const LightSamplerSpec& s : scene.samplers) {
-        SamplerDrawing d = s.type->place(frame(s.entity))->drawing();
-        const std::vector<Vec3>& points = d.dots.empty() ? d.outline : d.dots;
+        const std::vector<Vec3> points = measurementPoints(s, frame(s.entity));
         int outside = 0;
         const Vec3* first = nullptr;
         for (const Vec3& p : points)
@@ -55,7 +45,7 @@ std::vector<Diagnostic> outsideTheRoom(const Scene& scene) {
             out.push_back({scene.file.string(), s.jsonPath,
                            "sampler \"" + s.name + "\" measures outside the room" + where(s.entity) + ": " +
                                std::to_string(outside) + " of its " + std::to_string(points.size()) + " points, e.g. " +
-                               point(*first)});
+                               pointText(*first)});
     }
     return out;
 }

@@ -10,6 +10,11 @@
 
 namespace luxplan {
 
+// What the sampler checks share: a sampler's measurement points where `frame` puts it
+// (grid points, eye, a volume's corners), and a point as the warnings print it.
+std::vector<Vec3> measurementPoints(const LightSamplerSpec& sampler, const Transform& frame);
+std::string pointText(const Vec3& p);
+
 // Every check below, in this order. Carried emitters and samplers, and entities, are
 // judged where the scene file places them.
 std::vector<Diagnostic> sceneWarnings(const Scene& scene);

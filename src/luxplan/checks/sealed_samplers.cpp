@@ -1,9 +1,6 @@
 // Samplers that measure inside a closed opaque box, where the scene file places them.
 #include <luxplan/checks/scene_warnings.h>
 
-#include <cstdio>
-
-#include <luxplan/lightsamplers/sampler_type.h>
 #include <luxplan/pathtracer/sealed_boxes.h>
 #include <luxplan/scene/layout.h>
 
@@ -17,19 +14,16 @@ std::vector<Diagnostic> sealedSamplers(const Scene& scene) {
     if (sealed.empty()) return out;
     for (const LightSamplerSpec& s : scene.samplers) {
         const Transform frame = s.entity >= 0 ? world[size_t(s.entity)] : Transform();
-        SamplerDrawing d = s.type->place(frame)->drawing();
-        const std::vector<Vec3>& points = d.dots.empty() ? d.outline : d.dots;
+        const std::vector<Vec3> points = measurementPoints(s, frame);
         int inside = 0;
         Vec3 first, exit;
         for (const Vec3& p : points)
             if (sealed.contain(p, exit)) first = inside ? first : p, ++inside;
         if (!inside) continue;
-        char at[96];
-        std::snprintf(at, sizeof at, "(%.3g, %.3g, %.3g)", first.x, first.y, first.z);
         const std::string where = s.entity >= 0 ? " (where \"" + scene.entities[size_t(s.entity)].path + "\" stands)" : "";
         out.push_back({scene.file.string(), s.jsonPath,
                        "sampler \"" + s.name + "\" measures inside a closed opaque box" + where + ": " +
-                           std::to_string(inside) + " of its " + std::to_string(points.size()) + " points, e.g. " + at +
+                           std::to_string(inside) + " of its " + std::to_string(points.size()) + " points, e.g. " + pointText(first) +
                            ", where no light reaches (they read 0)"});
     }
     return out;

@@ -28,4 +28,9 @@ struct Material {
     Vec3 diffuseTransmittance{0.0, 0.0, 0.0};
 };
 
+// Whether light never crosses the surface (not glass, not translucent).
+inline bool isOpaque(const Material& m) {
+    return m.type == MaterialType::Diffuse || m.type == MaterialType::Glossy || m.type == MaterialType::Mirror;
+}
+
 }  // namespace luxplan

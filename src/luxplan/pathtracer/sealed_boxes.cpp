@@ -6,10 +6,6 @@
 namespace luxplan {
 namespace {
 
-bool letsLightThrough(const Material& m) {
-    return m.type == MaterialType::Glass || m.type == MaterialType::Translucent;
-}
-
 // The distance from p to the box (0 inside).
 double distanceTo(const Bounds3& b, const Vec3& p) {
     double d2 = 0;
@@ -29,7 +25,7 @@ SealedBoxes::SealedBoxes(const Scene& scene, const std::vector<Transform>& world
         placed.localFromWorld = worldFromLocal.inverse();
         placed.worldFromLocal = worldFromLocal;
         for (const SolidBox& b : boxes) {
-            if (letsLightThrough(scene.materials[b.material])) continue;
+            if (!isOpaque(scene.materials[b.material])) continue;
             const Vec3 inset(kInset, kInset, kInset);
             const Bounds3 inner(b.box.lo + inset, b.box.hi - inset);
             if (!(inner.lo.x < inner.hi.x && inner.lo.y < inner.hi.y && inner.lo.z < inner.hi.z)) continue;
