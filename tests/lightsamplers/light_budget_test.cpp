@@ -2,7 +2,8 @@
 // budget; two identical panels share in proportion to their flux; under an open sky
 // with the sun, the shares are pi L and E_n sin(altitude) over their sum; the
 // interreflected share of a grey room matches 1 - E(black walls) / E(grey walls),
-// measured apart; the thread count does not matter.
+// measured apart; the thread count does not matter; a path's light by bounces is
+// what each more surface vertex adds to the same path cut shorter.
 #include <gtest/gtest.h>
 
 #include <luxplan/daylight/daylight.h>
@@ -85,6 +86,67 @@ TEST(LightBudget, InterreflectionIsWhatGreyWallsAddToTheDirectLight) {
     EXPECT_GT(expected, 0.1);  // about 0.2: the walls matter
     EXPECT_NEAR(b.interreflected, expected, 4 * sigma + 0.02);
     EXPECT_NEAR(b.interreflected + b.emitters[0], 1, 1e-12);
+}
+
+TEST(LightBudget, EachBounceIsWhatOneMoreSurfaceVertexAdds) {
+    // The same random numbers with the path cut after b surface vertices (maxDepth b)
+    // and uncut: the light credited after b scatterings is the difference between the
+    // cuts at b + 1 and b, path by path, sky, sun and luminaire together.
+    // panelRoom's, with an open window in the south wall under a sky and a sun that
+    // reach the point straight through it.
+    DaylightParams d;
+    d.model = SkyModelType::Uniform;
+    d.luminanceNits = 3000;
+    d.sunOverride = SunOverride{40, 180, 50000};
+    test::SceneBuilder b;
+    b.material("m", test::diffuse(0.6)).room({0, 0, 0}, {4, 4, 3}, "m", "m", "m").window(Wall::South, 1, 2, 0.8, 1.8);
+    b.emitter("panel", rectEmitter({2, 2, 2.99}, {0, 0, -1}, {0, 1, 0}, {0.6, 0.6}), 3000);
+    b.sampler("desk", planarSampler({2, 2, 0.8}, {0, 0, 1}, {0, 1, 0}, {0.1, 0.1}, {2, 2}), 0, kInf);
+    b.daylight(d);
+    test::SceneLab lab(b.build());
+    const auto placed = placeSampler(lab.scene.samplers[0], *lab.rt);
+    auto tracerCutAt = [&](int depth) {
+        PathTracerOptions o;
+        o.maxDepth = depth;
+        return std::make_unique<PathTracer>(*lab.rt, &*lab.daylight, o);
+    };
+    std::vector<std::unique_ptr<PathTracer>> cut;
+    for (int depth = 1; depth <= 4; ++depth) cut.push_back(tracerCutAt(depth));
+    double bySun = 0, bySky = 0, byLuminaire = 0;
+    for (int path = 0; path < 400; ++path) {
+        auto value = [&](const PathTracer& tracer, LightBudget* budget) {
+            Rng rng(hashValues({7, uint64_t(path)}));
+            PathSamples samples(rng);
+            RayStats stats;
+            stats.budget = budget;
+            PathContributions c(0);
+            placed->sample(tracer, 0, samples, stats, c);
+            return c.size() > 0 ? c.valueAt(0) : 0.0;
+        };
+        LightBudget budget;
+        const double whole = value(*lab.tracer, &budget);
+        std::vector<double> upTo = {0};  // cut after 0, 1, ... 4 surface vertices
+        for (const auto& t : cut) upTo.push_back(value(*t, nullptr));
+        double sum = 0;
+        for (int b = 0; b < LightBudget::kBounces; ++b) {
+            double bounce = 0;
+            for (int kind = 0; kind < LightBudget::kKinds; ++kind) bounce += budget.byBounce[size_t(kind)][size_t(b)];
+            sum += bounce;
+            if (b < 4) {
+                EXPECT_NEAR(bounce, upTo[size_t(b) + 1] - upTo[size_t(b)], 1e-9 * (1 + whole)) << "path " << path << ", bounce " << b;
+            }
+        }
+        EXPECT_NEAR(sum, whole, 1e-9 * (1 + whole)) << "path " << path;
+        EXPECT_NEAR(budget.byBounce[LightBudget::kSunKind][0], budget.sun, 1e-9 * (1 + whole));
+        EXPECT_NEAR(budget.byBounce[LightBudget::kSkyKind][0], budget.sky, 1e-9 * (1 + whole));
+        bySun += budget.byBounce[LightBudget::kSunKind][0];
+        bySky += budget.byBounce[LightBudget::kSkyKind][0];
+        byLuminaire += budget.byBounce[LightBudget::kLuminaireKind][0];
+    }
+    // Every kind reaches the point directly, so the test covers each.
+    EXPECT_GT(bySun, 0);
+    EXPECT_GT(bySky, 0);
+    EXPECT_GT(byLuminaire, 0);
 }
 
 TEST(LightBudget, DoesNotDependOnTheThreadCount) {

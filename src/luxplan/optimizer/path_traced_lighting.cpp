@@ -44,7 +44,7 @@ double PathTracedLighting::measureIndependently(const Layout& /*layout*/, const 
 
 double PathTracedLighting::measure(PathTracer& tracer, const std::vector<Transform>& world, const MeasureOptions& options,
                                    PathCache* cache, LightingBreakdown* out, PathTracer* glareTracer) {
-    // Only instance transforms change: the top level is re-committed, nothing rebuilt.
+    // The moved entities' vertices are rewritten and the top level rebuilt (EmbreeScene).
     for (size_t i = 0; i < world.size(); ++i) rt_.setEntityTransform(int(i), world[i]);
     rt_.commit();
     tracer.updateLayout();

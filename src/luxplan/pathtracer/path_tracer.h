@@ -11,6 +11,8 @@
 // Results are in lx and cd/m^2.
 #pragma once
 
+#include <algorithm>
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -51,9 +53,15 @@ struct LightBudget {
     double sun = 0, sky = 0;        // direct; the sky includes the ground outside
     std::vector<double> emitters;   // direct, per Scene::emitters index (grown as needed)
     double interreflected = 0;
+    // The same light by kind (kSunKind, kSkyKind, kLuminaireKind) and by the surfaces it
+    // scattered off before the sensor (0: direct; the last entry holds that many and more).
+    static constexpr int kSunKind = 0, kSkyKind = 1, kLuminaireKind = 2, kKinds = 3, kBounces = 8;
+    std::array<std::array<double, kBounces>, kKinds> byBounce{};
     static constexpr int kSun = -1, kSky = -2;  // sources that are not emitters
     void credit(int source, int depth, double value) {
         if (!(value == value)) return;  // NaN: the estimator drops the path too
+        const int kind = source == kSun ? kSunKind : source == kSky ? kSkyKind : kLuminaireKind;
+        byBounce[size_t(kind)][size_t(std::min(depth, kBounces - 1))] += value;
         if (depth > 0) interreflected += value;
         else if (source == kSun) sun += value;
         else if (source == kSky) sky += value;
