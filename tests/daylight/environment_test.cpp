@@ -268,6 +268,21 @@ TEST(DaylightEnvironment, NightIsBlack) {
     EXPECT_EQ(night.totalHorizontalIlluminance(), 0.0);
 }
 
+TEST(DaylightEnvironment, RadianceIsPositiveEverywhereOnlyWhereEveryPixelAndTheGroundAre) {
+    // The path tracer traces a sky sample's shadow ray before it looks up its radiance
+    // only where no direction can read 0 (it would have skipped the ray).
+    EXPECT_TRUE(uniformSky(1000, 0.2).radiancePositive());
+    EXPECT_TRUE(preethamSky().radiancePositive());
+    EXPECT_FALSE(uniformSky(1000, 0).radiancePositive());  // a black ground
+    SkyMap map(32, 16);
+    for (int iy = 0; iy < 16; ++iy)
+        for (int ix = 0; ix < 32; ++ix) map.at(ix, iy) = Vec3(100, 100, 100);
+    EXPECT_TRUE(DaylightEnvironment(map, {}, 0.2).radiancePositive());
+    map.at(5, 3) = Vec3();  // one black pixel of the sky
+    EXPECT_FALSE(DaylightEnvironment(map, {}, 0.2).radiancePositive());
+    EXPECT_FALSE(DaylightEnvironment().radiancePositive());  // night
+}
+
 TEST(SkyMap, PixelLookupAgreesWithPixelDirections) {
     SkyMap map(32, 16);
     for (int iy = 0; iy < 16; ++iy)

@@ -86,6 +86,8 @@ DaylightEnvironment::DaylightEnvironment(SkyMap sky, std::vector<SunDisk> suns, 
     ground_ = (skyE + sunE) * (groundReflectance_ * kInvPi);
     for (int iy = h / 2; iy < h; ++iy)
         for (int ix = 0; ix < w; ++ix) map_.at(ix, iy) = ground_;
+    radiancePositive_ = maxComponent(ground_) > 0;
+    for (const Vec3& pixel : map_.pixels()) radiancePositive_ = radiancePositive_ && maxComponent(pixel) > 0;
 
     // Sampling in (phi, -cos theta), where area equals solid angle, proportional to luminance.
     std::vector<double> values(size_t(w) * h), xEdges(size_t(w) + 1), yEdges(size_t(h) + 1);

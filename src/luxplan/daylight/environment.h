@@ -98,6 +98,10 @@ public:
     EnvironmentSample sampleSky(Vec2 u) const;
     double skyPdf(const Vec3& w) const;
     bool hasSky() const { return !skyDistribution_.allZero(); }
+    // Whether Le(w) has a positive component for every direction (every pixel of the
+    // map and the ground): a light sample of the sky may then trace its shadow ray
+    // before it looks its radiance up.
+    bool radiancePositive() const { return radiancePositive_; }
     // Integral of luminance over the whole sphere (sky + ground), cd sr / m^2.
     double skyIntegral() const { return skyIntegral_; }
 
@@ -145,6 +149,7 @@ private:
     std::vector<Frame> sunFrames_;  // around each disk's centre, for its samples
     double groundReflectance_ = 0;
     Vec3 ground_;
+    bool radiancePositive_ = false;
     Distribution2D skyDistribution_;  // over (phi, -cos theta): area there = solid angle
     Distribution1D sunDistribution_;
     // The disks by direction, so sunLe and sunPdf cost O(1) however many time steps

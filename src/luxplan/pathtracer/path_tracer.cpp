@@ -366,14 +366,18 @@ double PathTracer::sample(const Sensor& sensor, PathSamples& samples, RayStats& 
             // `throughShell`: the direction must leave through an opening (the sun's: a
             // direction that leaves the box through an opaque wall is blocked whatever the
             // layout), tested once the surface is known to face it.
-            auto addLight = [&](const Vec3& wi, const Vec3& Le, double lightPdf, double maxT, int target, int source,
-                                bool throughShell = false) {
-                if (!(lightPdf > 0) || maxComponent(Le) <= 0) return;
+            // `skyLater`: a sky sample whose radiance, positive wherever it points
+            // (DaylightEnvironment::radiancePositive), is looked up only once the shadow
+            // ray has found the way open (most are blocked, by furniture).
+            auto addLight = [&](const Vec3& wi, const Vec3& sampledLe, double lightPdf, double maxT, int target, int source,
+                                bool throughShell = false, bool skyLater = false) {
+                if (!(lightPdf > 0) || (!skyLater && maxComponent(sampledLe) <= 0)) return;
                 Vec3 f = evalCos(v, wi);
                 if (maxComponent(f) <= 0) return;
                 if (throughShell && patches_.shadedByShell(spawn(v, wi), wi)) return;
                 double T = transmittance(spawn(v, wi), wi, v.isSurface() ? maxT : maxT - kRayEpsilon, target, stats);
                 if (T <= 0) return;
+                const Vec3 Le = skyLater ? daylight_->Le(wi) : sampledLe;
                 const double bsdfPdf = pdfOf(v, wi);
                 double w = powerHeuristic(1, lightPdf, 1, bsdfPdf);
                 if (source == LightBudget::kSun && arrivalDensity > 0) {
@@ -488,9 +492,10 @@ double PathTracer::sample(const Sensor& sensor, PathSamples& samples, RayStats& 
                 if (sunHere && !behind) addLight(sun.wi, sun.Le, sun.pdf, kInf, -1, LightBudget::kSun, true);
             }
             if (skyHere) {
-                EnvironmentSample s = sky_.sample(*view, v.p, samples.get2D(PathSamples::SkyPoint));
+                const bool later = !outside && view->active && daylight_->radiancePositive();
+                EnvironmentSample s = sky_.sample(*view, v.p, samples.get2D(PathSamples::SkyPoint), !later);
                 if (outside) addSkyOrOutside(s, sun);
-                else addLight(s.wi, s.Le, s.pdf, kInf, -1, LightBudget::kSky);
+                else addLight(s.wi, s.Le, s.pdf, kInf, -1, LightBudget::kSky, false, later);
             }
             if (patchesHere()) addSunPatch();
         }

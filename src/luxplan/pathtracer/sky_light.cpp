@@ -116,7 +116,7 @@ double SkyLight::pdf(const View& view, const Vec3& p, const Vec3& w) const {
     return 0;
 }
 
-EnvironmentSample SkyLight::sample(const View& view, const Vec3& p, Vec2 u) const {
+EnvironmentSample SkyLight::sample(const View& view, const Vec3& p, Vec2 u, bool radiance) const {
     if (!view.active) return daylight_->sampleSky(u);
     EnvironmentSample s;
     if (view.weightTotal <= 0) return s;
@@ -143,7 +143,7 @@ EnvironmentSample SkyLight::sample(const View& view, const Vec3& p, Vec2 u) cons
         s.wi = d / dist;
         const double cosine = std::abs(dot(portal.normal, s.wi));
         if (!(cosine > 0)) return s;
-        s.Le = daylight_->Le(s.wi);
+        if (radiance) s.Le = daylight_->Le(s.wi);
         s.pdf = pChosen * d2 / (portal.area * cosine);
         return s;
     }
@@ -151,7 +151,7 @@ EnvironmentSample SkyLight::sample(const View& view, const Vec3& p, Vec2 u) cons
     if (r.solidAngle() <= 0) return s;
     Vec3 q = r.sample(u);
     s.wi = normalize(q - p);
-    s.Le = daylight_->Le(s.wi);
+    if (radiance) s.Le = daylight_->Le(s.wi);
     s.pdf = pChosen / r.solidAngle();
     return s;
 }

@@ -62,7 +62,9 @@ public:
     double pdf(const View& view, const Vec3& p, const Vec3& w) const;
     // Whether sample() from a sensor's view may draw a direction the sensor sees.
     bool seenBy(const View& view, const Sensor& sensor) const;
-    EnvironmentSample sample(const View& view, const Vec3& p, Vec2 u) const;
+    // `radiance` false: Le is left unset where the view is active (the caller looks it
+    // up once it needs it, DaylightEnvironment::Le(wi)).
+    EnvironmentSample sample(const View& view, const Vec3& p, Vec2 u, bool radiance = true) const;
 
 private:
     void compute(const Vec3& p, View& view, bool buildAll) const;
