@@ -3,6 +3,8 @@
 #include <cstring>
 #include <mutex>
 
+#include <tbb/task_arena.h>
+
 #include <luxplan/core/error.h>
 #include <luxplan/emitters/emitter_shape.h>
 
@@ -190,8 +192,21 @@ void EmbreeScene::place(RTCGeometry g, const GeometryInfo& info) {
     }
 }
 
+namespace {
+
+// Embree's parallel builders may lay a BVH's leaves out differently from run to run,
+// and a ray that meets two triangles at the same distance then reports either of them:
+// paths differ in their last digits. Built on the calling thread alone, the same scene,
+// seed and thread count trace the same numbers (a build in the search is small).
+void commitOnOneThread(RTCScene scene) {
+    tbb::task_arena one(1);
+    one.execute([&] { rtcCommitScene(scene); });
+}
+
+}  // namespace
+
 void EmbreeScene::finishSubScene(SubScene& sub) {
-    rtcCommitScene(sub.scene);
+    commitOnOneThread(sub.scene);
     RTCGeometry inst = rtcNewGeometry(device_->handle(), RTC_GEOMETRY_TYPE_INSTANCE);
     rtcSetGeometryInstancedScene(inst, sub.scene);
     setRowMajor(inst, sub.entity >= 0 ? worldFromEntity_[sub.entity] : Transform());
@@ -298,7 +313,7 @@ void EmbreeScene::setLayout(const Layout& layout) {
 }
 
 void EmbreeScene::commit() {
-    rtcCommitScene(top_);
+    commitOnOneThread(top_);
     device_->check("scene commit");
 }
 
