@@ -7,6 +7,7 @@
 #include <vector>
 
 #include <luxplan/core/rng.h>
+#include <luxplan/core/warp.h>
 #include <luxplan/pathtracer/sun_patches.h>
 #include <luxplan/rt/embree_scene.h>
 #include <luxplan/scene/layout.h>
@@ -117,6 +118,49 @@ TEST(SunPatches, OnlyRoomsWithSunlitEntrancesHaveThem) {
 // The sun's shadow rays that must leave through a wall are not traced (the shell is
 // static: no move changes their answer). Only from strictly inside the room, so that a
 // path that went out of a window still sees the sun from the shell's outer face.
+// A sun disk whose every direction the shell blocks from near a vertex draws no sample
+// there (path_tracer.cpp): shadesCone must say so only when shadedByShell would for
+// every start within the offset and every direction within the cone, and should say
+// so for most of a room's points when the sun is low behind a wall.
+TEST(SunPatches, AConeIsShadedOnlyWhereEveryRayInItIs) {
+    const SunPatches shell(twoWindowRoom(), false);
+    Rng rng(11);
+    const double offset = 2e-4;
+    int shaded = 0, cones = 0;
+    for (int k = 0; k < 4000; ++k) {
+        // Points anywhere in the room and near its faces, cones from a sun's disk up to
+        // 20 degrees wide, pointing anywhere above the horizon.
+        Vec3 p(6 * rng.uniform(), 4 * rng.uniform(), 3 * rng.uniform());
+        if (k % 4 == 0) p.y = 1e-3 * rng.uniform();  // by the south wall
+        const Vec3 axis = sampleUniformHemisphere({rng.uniform(), rng.uniform()});
+        const double halfAngle = k % 2 ? 0.0047 : 0.35 * rng.uniform();
+        // A shadow ray's own origin, exactly (a floor point's, kRayEpsilon above it), or
+        // a point within `offset` of it.
+        const bool exact = k % 4 == 1;
+        if (exact) p.z = 1e-4;
+        const double within = exact ? 0.0 : offset;
+        ++cones;
+        if (!shell.shadesCone(p, within, axis, halfAngle)) continue;
+        ++shaded;
+        const Frame frame = Frame::fromNormal(axis);
+        for (int j = 0; j < 200; ++j) {
+            // Directions inside and on the rim of the cone, from starts in the offset's ball.
+            const double cosMax = std::cos(halfAngle);
+            Vec3 w = normalize(frame.toWorld(sampleUniformCone({j < 20 ? 1.0 : rng.uniform(), rng.uniform()}, cosMax)));
+            const Vec3 q = p + sampleUniformSphere({rng.uniform(), rng.uniform()}) * (within * rng.uniform());
+            ASSERT_TRUE(shell.shadedByShell(q, w)) << "p " << p.x << " " << p.y << " " << p.z << ", axis " << axis.x << " "
+                                                   << axis.y << " " << axis.z << ", half angle " << halfAngle;
+        }
+    }
+    EXPECT_GT(shaded, cones / 2);  // the windows are small: most cones meet only walls
+    // A sun low in the north (the windows face south and east) is behind walls from
+    // everywhere; a point by the south window with the sun right behind it is not shaded.
+    EXPECT_TRUE(shell.shadesCone({3, 2, 1.5}, offset, normalize(Vec3(-0.1, 1, 0.2)), 0.0047));
+    EXPECT_FALSE(shell.shadesCone({2, 0.5, 1.5}, offset, normalize(Vec3(0, -1, 0)), 0.0047));
+    EXPECT_FALSE(shell.shadesCone({2, 0.5, 1.5}, offset, normalize(Vec3(0, 1, 0.2)), 0.0047 + kPi));  // too wide to bound
+    EXPECT_FALSE(shell.shadesCone({7, 2, 1.5}, offset, normalize(Vec3(0, 1, 0.2)), 0.0047));  // outside the room
+}
+
 TEST(SunPatches, TheShellShadesWhatCannotLeaveThroughAnOpening) {
     const SunPatches off(twoWindowRoom(), false);  // works without the strategy too
     const Vec3 ws = normalize(Vec3(0.4, -0.7, 0.6));

@@ -241,10 +241,11 @@ void DaylightEnvironment::sunAt(const Vec3& w, Vec3& Le, double& pdf) const {
     pdf = pmfSum / kSunSolidAngle;
 }
 
-EnvironmentSample DaylightEnvironment::sampleSun(double uDisk, Vec2 u) const {
+size_t DaylightEnvironment::sunDiskOf(double uDisk) const { return suns_.empty() ? 0 : sunDistribution_.sampleDiscrete(uDisk); }
+
+EnvironmentSample DaylightEnvironment::sampleSunDisk(size_t k, Vec2 u) const {
     EnvironmentSample s;
     if (suns_.empty()) return s;
-    const size_t k = sunDistribution_.sampleDiscrete(uDisk);
     s.wi = normalize(sunFrames_[k].toWorld(sampleUniformCone(u, kSunCosHalfAngle)));
     if (sunDisksApart_) {
         // What sunAt would sum: disk k alone (the same rim test).

@@ -113,7 +113,10 @@ public:
     double sunLv(const Vec3& w) const { return luminance(sunLe(w)); }
     // Picks a disk with probability proportional to its luminance (uDisk), then a direction
     // uniformly in its cone (u). pdf is the mixture density over all disks containing wi.
-    EnvironmentSample sampleSun(double uDisk, Vec2 u) const;
+    EnvironmentSample sampleSun(double uDisk, Vec2 u) const { return sampleSunDisk(sunDiskOf(uDisk), u); }
+    // sampleSun's two steps: the disk uDisk chooses, then a direction in it (u).
+    size_t sunDiskOf(double uDisk) const;
+    EnvironmentSample sampleSunDisk(size_t k, Vec2 u) const;
     double sunPdf(const Vec3& w) const;
     // sunLe(w) and sunPdf(w) from one lookup.
     void sunAt(const Vec3& w, Vec3& Le, double& pdf) const;

@@ -488,7 +488,22 @@ double PathTracer::sample(const Sensor& sensor, PathSamples& samples, RayStats& 
                 // find the sample unlit (evalCos): its numbers are drawn all the same, so
                 // that every later one stays, but the direction is not.
                 const bool behind = v.isSurface() && !v.bsdf->hasDiffuseTransmission() && daylight_->sunBehind(v.ng);
-                if (outside || !behind) sun = daylight_->sampleSun(uDisk, uPoint);
+                if (outside || !behind) {
+                    // Nor where the shell's walls block every direction of the chosen disk
+                    // from the shadow ray's origin: the sample would find no opening
+                    // (addLight's shadedByShell), and none is made. At a surface whose plane
+                    // the disk's cone does not cross, that origin is spawn()'s, the same for
+                    // every direction of the disk (a point of the floor or a wall: on the
+                    // shell itself, its origin is just inside); else within kRayEpsilon.
+                    const size_t disk = daylight_->sunDiskOf(uDisk);
+                    const Vec3& axis = daylight_->sunDisks()[disk].direction;
+                    const double halfAngle = kSunHalfAngle * (1 + 1e-6) + 1e-9;
+                    Vec3 from = v.p;
+                    double within = kRayEpsilon;
+                    if (v.isSurface() && std::abs(dot(axis, v.ng)) > halfAngle) from = offsetAlong(v.p, v.ng, axis), within = 0;
+                    const bool walled = !outside && patches_.shadesCone(from, within, axis, halfAngle);
+                    if (!walled) sun = daylight_->sampleSunDisk(disk, uPoint);
+                }
                 if (sunHere && !behind) addLight(sun.wi, sun.Le, sun.pdf, kInf, -1, LightBudget::kSun, true);
             }
             if (skyHere) {

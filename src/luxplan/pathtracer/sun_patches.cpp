@@ -75,6 +75,35 @@ bool SunPatches::shadedByShell(const Vec3& p, const Vec3& ws) const {
     return true;
 }
 
+bool SunPatches::shadesCone(const Vec3& p, double offset, const Vec3& axis, double halfAngle) const {
+    if (!opaqueShell_) return false;
+    for (int i = 0; i < 3; ++i)  // every q strictly inside the box
+        if (!(p[i] - offset > shell_.lo[i] && p[i] + offset < shell_.hi[i])) return false;
+    // |w - axis| <= halfAngle (a chord is shorter than its arc).
+    const double delta = halfAngle;
+    for (const Entrance& o : openings_) {
+        const Vec3& n = o.outward;
+        const double nc = dot(n, axis);
+        if (nc + delta <= 0) continue;  // every w points away from this opening's plane
+        const double least = nc - delta;  // n . w for every w in the cone
+        if (!(least > 1e-3)) return false;
+        const Rect3& r = o.target.rect();
+        const double depth = dot(n, r.corner - p);  // p's distance to the opening's plane
+        if (!(depth > offset)) return false;
+        // Where the axis from p meets the plane, and how far the cone's rays from any q
+        // meet it from there: |w / (n.w) - axis / (n.axis)| <= delta / least + delta / (least nc),
+        // and a start moved by `offset` moves the meeting by at most offset (1 + 1 / least).
+        const Vec3 hit = p + axis * (depth / nc);
+        const double spread = depth * delta * (1 / least + 1 / (least * nc)) + offset * (1 + 1 / least);
+        const double margin = spread * (1 + 1e-6) + 1e-7 * (1 + std::abs(hit.x) + std::abs(hit.y) + std::abs(hit.z));
+        const double lenU = length(r.edgeU), lenV = length(r.edgeV);
+        const double a = dot(hit - r.corner, r.edgeU) / lenU, b = dot(hit - r.corner, r.edgeV) / lenV;
+        if (a < -margin || a > lenU + margin || b < -margin || b > lenV + margin) continue;  // misses it
+        return false;
+    }
+    return true;
+}
+
 double SunPatches::density(const Vec3& y, const Vec3& n, const Vec3& ws) const {
     if (!room_.contains(y)) return 0;
     for (const Entrance& o : openings_) {

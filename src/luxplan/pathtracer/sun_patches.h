@@ -32,6 +32,10 @@ public:
     // ray's origin, offset from its surface: a vertex on the shell's outer face (a path
     // that went out of a window) then lies outside the box.
     bool shadedByShell(const Vec3& p, const Vec3& ws) const;
+    // True only when shadedByShell(q, w) holds for every q within `offset` of p and
+    // every unit w within `halfAngle` (radians) of the unit `axis`: a sun disk whose
+    // every sample is blocked there (conservative: false when unsure).
+    bool shadesCone(const Vec3& p, double offset, const Vec3& axis, double halfAngle) const;
     // The area of the openings that face `ws` (towards the sun) projected across it.
     double projectedArea(const Vec3& ws) const;
     // A point on an opening facing `ws`, uniform in projected area (the opening chosen
