@@ -194,9 +194,9 @@ void EmbreeScene::place(RTCGeometry g, const GeometryInfo& info) {
 
 namespace {
 
-// Embree's parallel builders may lay a BVH's leaves out differently from run to run,
-// and a ray that meets two triangles at the same distance then reports either of them:
-// paths differ in their last digits. Built on the calling thread alone, the same scene,
+// Embree's parallel builders may lay a BVH out differently from run to run, and the
+// event hall's values then differed in their last digits between runs at 2 threads
+// (tests/cli/thread_count_test.cpp). Built on the calling thread alone, the same scene,
 // seed and thread count trace the same numbers (a build in the search is small).
 void commitOnOneThread(RTCScene scene) {
     tbb::task_arena one(1);
