@@ -4,6 +4,7 @@
 #include <chrono>
 #include <iomanip>
 #include <iostream>
+#include <sstream>
 
 #include <nlohmann/json.hpp>
 
@@ -23,6 +24,14 @@ namespace luxplan::cli {
 namespace {
 
 nlohmann::json bound(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+
+// A standard error as the table shows it: n/a from fewer than 2 paths per point.
+std::string errorText(double error, int paths, int digits) {
+    if (paths < 2) return "n/a";
+    std::ostringstream out;
+    out << std::fixed << std::setprecision(digits) << error;
+    return out.str();
+}
 
 struct MeasureArgs {
     std::string scene, layout;
@@ -64,6 +73,7 @@ void runMeasure(const MeasureArgs& args) {
     PathTracer tracer(rt, daylight ? &*daylight : nullptr, tracing);
     MeasureOptions options;
     options.pathsPerPoint = args.paths > 0 ? args.paths : scene.optimizer.pathsPerPoint;
+    warnFewPaths(scene, options.pathsPerPoint, args.paths > 0);
     options.seed = args.seed >= 0 ? uint64_t(args.seed) : scene.optimizer.seed;
     options.adaptive = args.adaptive;
     options.lowDiscrepancy = args.sampling == "sobol";
@@ -129,8 +139,8 @@ void runMeasure(const MeasureArgs& args) {
         value << std::fixed << std::setprecision(type == "dgp" ? 3 : 1) << r.value;
         std::cout << std::left << std::setw(24) << s.name << std::setw(12) << s.type->name() << std::right << std::fixed
                   << std::setprecision(1) << std::setw(12) << (type == "ugr" && r.value < 10 ? std::string("<10") : value.str())
-                  << std::setprecision(type == "dgp" ? 3 : 1) << std::setw(10) << r.standardError << std::setprecision(1) << std::setw(8)
-                  << s.type->unit() << std::setw(22) << target.str() << std::setprecision(3) << std::setw(10) << penalty
+                  << std::setw(10) << errorText(r.standardError, r.pathsPerPoint, type == "dgp" ? 3 : 1) << std::setprecision(1)
+                  << std::setw(8) << s.type->unit() << std::setw(22) << target.str() << std::setprecision(3) << std::setw(10) << penalty
                   << (penalty > 0 ? "  MISSED" : "  ok") << "\n";
         if (std::string stats = describeStatistics(s, r); !stats.empty()) std::cout << "    " << stats << "\n";
         // A statistics goal's line, under its sampler's columns (U0 is a ratio).
@@ -158,6 +168,21 @@ void runMeasure(const MeasureArgs& args) {
 }
 
 }  // namespace
+
+void warnFewPaths(const Scene& scene, int paths, bool fromOption) {
+    if (paths >= 2 || scene.samplers.empty()) return;
+    const std::string source = fromOption ? "--paths " + std::to_string(paths)
+                                          : scene.file.string() + ": /optimizer/paths_per_point: " + std::to_string(paths);
+    std::string message = "warning: " + source + ": one path per point gives no standard error (reported as 0, "
+                          "n/a in measure's table)";
+    for (const LightSamplerSpec& s : scene.samplers)
+        if (std::string(s.type->name()) == "directional") {
+            message += ", and directional sampler \"" + s.name + "\" reads the plain max of its strata, which errs high "
+                       "(its brightest stratum is measured with paths it was not chosen by from 2 paths per point on)";
+            break;
+        }
+    std::cerr << message << "\n";
+}
 
 void registerMeasureCommand(CLI::App& app, int& threads) {
     auto args = std::make_shared<MeasureArgs>();

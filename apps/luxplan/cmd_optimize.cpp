@@ -152,6 +152,7 @@ int runOptimize(const OptimizeArgs& args) {
 
     MeasureOptions measure;
     measure.pathsPerPoint = args.paths > 0 ? args.paths : scene.optimizer.searchPathsPerPoint;
+    warnFewPaths(original, measure.pathsPerPoint, args.paths > 0);
     measure.seed = options.seed;
     measure.adaptive = !args.fixedPaths;
     measure.lowDiscrepancy = args.sampling == "sobol";

@@ -94,6 +94,45 @@ TEST(Cli, MeasureJsonFollowsTheContract) {
     EXPECT_EQ(nlohmann::json::parse(again.output)["samplers"], json["samplers"]);
 }
 
+// One path per point can estimate no error, and a directional sampler cannot hold a
+// fold out to choose its brightest stratum: a warning, and n/a in the table.
+TEST(Cli, OnePathPerPointWarnsThatItHasNoErrorAndNoCrossFittedMax) {
+    test::TempDir dir;
+    const std::string lit = R"({"luxplan": 1, "materials": {"m": {"type": "diffuse", "reflectance": 0.5}},
+        "luminaires": [{"name": "l", "shape": "rect", "center": [0,0,3], "normal": [0,0,-1], "size": [1,1], "flux_lm": 1000}],
+        "samplers": [{"name": "p", "type": "planar", "center": [0,0,1], "size": [1,1], "grid": [2,3], "target": [10, 500]})";
+    auto planar = dir.write("planar.json", lit + "]}");
+    auto both = dir.write("both.json", lit + R"(,
+        {"name": "d", "type": "directional", "origin": [0,0,1], "direction": [0,0,1], "strata": 2, "target": [0, null]}]})");
+    auto fromFile = dir.write("file.json", lit + R"(], "optimizer": {"paths_per_point": 1}})");
+
+    Result r = run("measure " + planar.string() + " --paths 1 --threads 1");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("warning: --paths 1: one path per point gives no standard error"), std::string::npos) << r.output;
+    EXPECT_EQ(r.output.find("directional"), std::string::npos) << r.output;
+    EXPECT_TRUE(std::regex_search(r.output, std::regex(R"(\np +planar +[0-9.]+ +n/a )"))) << r.output;
+
+    r = run("measure " + both.string() + " --paths 1 --threads 1");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("directional sampler \"d\" reads the plain max of its strata, which errs high"), std::string::npos)
+        << r.output;
+
+    r = run("measure " + fromFile.string() + " --threads 1");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find(fromFile.string() + ": /optimizer/paths_per_point: 1: one path per point"), std::string::npos)
+        << r.output;
+
+    r = run("optimize " + both.string() + " -o " + (dir.path() / "out").string() + " --paths 1 --iterations 2 -q --no-pictures");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("warning: --paths 1: one path per point"), std::string::npos) << r.output;
+
+    // From 2 paths on: errors, and no warning.
+    r = run("measure " + both.string() + " --paths 2 --threads 1");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_EQ(r.output.find("warning"), std::string::npos) << r.output;
+    EXPECT_EQ(r.output.find("n/a"), std::string::npos) << r.output;
+}
+
 TEST(Cli, MeasureRejectsABadLayout) {
     test::TempDir dir;
     auto scene = dir.write("s.json", R"({"luxplan": 1, "entities": [{"name": "a", "placement": {"regions": [{"min": [0,0], "max": [1,1]}]}}]})");
