@@ -11,7 +11,10 @@ estimators, at PATHS paths per point, one thread. Per scene: the rays ratio, the
 ratio and the median over samplers of the variance ratio first/second; efficiency
 (1 / (variance x time)) of the first is 1 / (time ratio x variance ratio).
 
-    scripts/error-per-ray.py BINARY [PATHS] [SEEDS] [--sun-patches]
+    scripts/error-per-ray.py BINARY [PATHS] [SEEDS] [--sun-patches | --vs OTHER_BINARY]
+
+With `--vs OTHER_BINARY`, the two estimators are BINARY's (new) and OTHER_BINARY's
+(old) defaults: a change to the path tracer measured the same way.
 """
 import glob
 import json
@@ -32,16 +35,28 @@ def measure(binary, scene, paths, seed, extra):
 
 
 def main():
-    args = [a for a in sys.argv[1:] if not a.startswith("--")]
+    argv = sys.argv[1:]
+    other = None
+    if "--vs" in argv:
+        i = argv.index("--vs")
+        if i + 1 >= len(argv):
+            sys.exit(__doc__)
+        other = argv[i + 1]
+        del argv[i:i + 2]
+    args = [a for a in argv if not a.startswith("--")]
     if not args:
         sys.exit(__doc__)
     binary = args[0]
     paths = int(args[1]) if len(args) > 1 else 64
     seeds = int(args[2]) if len(args) > 2 else 8
-    if "--sun-patches" in sys.argv:
+    binaries = None
+    if other:
+        names, options, binaries = ("new", "old"), {"new": [], "old": []}, {"new": binary, "old": other}
+    elif "--sun-patches" in argv:
         names, options = ("patches", "off"), {"patches": ["--sun-patches", "on"], "off": ["--sun-patches", "off"]}
     else:
         names, options = ("sobol", "random"), {"sobol": ["--sampling", "sobol"], "random": ["--sampling", "random"]}
+    binaries = binaries or {m: binary for m in names}
     first, second = names
     scenes = ["scenes/demo/office.json"] + sorted(s for s in glob.glob("scenes/paper/*.json") if not s.endswith("-layout.json"))
     print(f"{paths} paths per point, {seeds} seeds")
@@ -50,7 +65,7 @@ def main():
     print("|---|---|---|---|---|")
     all_dir, all_other = [], []
     for scene in scenes:
-        runs = {m: [measure(binary, scene, paths, seed, options[m]) for seed in range(1, seeds + 1)] for m in names}
+        runs = {m: [measure(binaries[m], scene, paths, seed, options[m]) for seed in range(1, seeds + 1)] for m in names}
         types = runs[first][0][1]
         rays = {m: sum(r[2] for r in runs[m]) for m in runs}
         seconds = {m: sum(r[3] for r in runs[m]) for m in runs}

@@ -53,8 +53,10 @@ TEST(SunPatches, LeaveEveryEstimateAsItWasWithLessNoise) {
             << scene.samplers[k].name << ": " << x.value << " +- " << x.standardError << " against " << y.value
             << " +- " << y.standardError;
     }
-    EXPECT_LT(a.samplers[0].standardError, 0.8 * b.samplers[0].standardError);
-    EXPECT_LT(a.samplers[1].standardError, 0.8 * b.samplers[1].standardError);
+    // Measured: 0.45 and 0.81 of the errors without them (with the roulette's survivors
+    // at a third of the first vertex's weight, which tames the same deep sunlit hits).
+    EXPECT_LT(a.samplers[0].standardError, 0.6 * b.samplers[0].standardError);
+    EXPECT_LT(a.samplers[1].standardError, 0.9 * b.samplers[1].standardError);
 }
 
 }  // namespace

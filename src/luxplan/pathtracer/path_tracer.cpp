@@ -548,7 +548,7 @@ double PathTracer::sample(const Sensor& sensor, PathSamples& samples, RayStats& 
 
         // ---- Russian roulette ----
         if (depth >= options_.rouletteDepth) {
-            double q = std::min(0.95, maxComponent(throughput) / firstWeight);
+            double q = std::min(0.95, maxComponent(throughput) / (options_.rouletteLevel * firstWeight));
             if (samples.get1D(PathSamples::Roulette) >= q) break;
             throughput = throughput * (1 / q);
         }

@@ -39,6 +39,12 @@ struct PathTracerOptions {
     // across the street) and take the sun's light there.
     bool exteriorSun = true;
     int rouletteDepth = 3;     // bounces before Russian roulette starts
+    // The roulette lets a path go on with probability min(0.95, throughput / (level x
+    // the first surface's)), so a survivor carries level x that throughput (or more).
+    // A third: at 1 (as before 2026-12-04) the few deep survivors carried a first
+    // vertex's whole weight, and one that met a sunlit patch or a bright window
+    // dominated its point (docs/performance.md, "Russian roulette at a third").
+    double rouletteLevel = 1.0 / 3.0;
     int maxDepth = 256;        // a safety net only: roulette ends paths long before
 };
 
