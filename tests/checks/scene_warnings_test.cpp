@@ -109,6 +109,31 @@ TEST(OutsideTheRoom, LuminairesAndSamplers) {
     EXPECT_TRUE(outsideTheRoom(open).empty());
 }
 
+// A sampler on the shell sees past it: facing out, it measures the light outside (a
+// planar sampler on the east wall whose normal points east read 4964 lx of the
+// overcast sky in scenes/checks/window-lit-wall.json's room, 140 lx facing in).
+TEST(OutsideTheRoom, SamplersOnTheShellThatFaceOutThroughIt) {
+    Scene s = room()
+                  .window(Wall::South, 1, 2, 0.9, 1.2, "glass")
+                  .sampler("east out", planarSampler({6, 2, 1.5}, {1, 0, 0}, {0, 0, 1}, {1, 1}, {2, 2}), 0, 1000)
+                  .sampler("east in", planarSampler({6, 2, 1.5}, {-1, 0, 0}, {0, 0, 1}, {1, 1}, {2, 2}), 0, 1000)
+                  .sampler("floor grid", planarSampler({3, 2, 0}, {0, 0, 1}, {0, 1, 0}, {4, 2}, {4, 2}), 0, 1000)
+                  .sampler("under the floor", planarSampler({3, 2, 0}, {0, 0, -1}, {0, 1, 0}, {4, 2}, {4, 2}), 0, 1000)
+                  .sampler("eye", directionalSampler({3, 4, 1.2}, {0.3, 1, 0}, {0, 0, 1}, 60, 2), 0, 100)
+                  .sampler("in the window", planarSampler({2, 0, 1.5}, {0, -1, 0}, {0, 0, 1}, {0.4, 0.4}, {2, 2}), 0, 1e6)
+                  .sampler("near the wall", planarSampler({5.9, 2, 1.5}, {1, 0, 0}, {0, 0, 1}, {1, 1}, {2, 2}), 0, 1000)
+                  .build();
+    std::vector<Diagnostic> w = outsideTheRoom(s);
+    ASSERT_EQ(w.size(), 3u) << messages(w);
+    EXPECT_EQ(w[0].jsonPath, "/samplers/0");
+    EXPECT_EQ(w[0].message, "sampler \"east out\" lies on the room's east wall and faces out through it, at (6, 1.75, 1.25): it "
+                            "measures the light outside the room");
+    EXPECT_EQ(w[1].jsonPath, "/samplers/3");
+    EXPECT_NE(w[1].message.find("\"under the floor\" lies on the room's floor and faces out through it"), std::string::npos);
+    EXPECT_EQ(w[2].jsonPath, "/samplers/4");
+    EXPECT_NE(w[2].message.find("\"eye\" lies on the room's north wall and faces out through it, at (3, 4, 1.2)"), std::string::npos);
+}
+
 TEST(SealedSamplers, PointsInAClosedOpaqueBox) {
     // A desk's plane at 0.76 m, a monitor's foot (2 cm high, on the desk) over one of
     // its four points, and a plane in a glass case, which light enters.

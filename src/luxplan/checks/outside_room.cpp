@@ -1,8 +1,11 @@
-// Luminaires and samplers outside the room, where the scene file places them.
+// Luminaires and samplers outside the room, where the scene file places them; and
+// samplers on the room's shell that look out through it.
 #include <luxplan/checks/scene_warnings.h>
 
 #include <luxplan/emitters/emitter_shape.h>
+#include <luxplan/lightsamplers/sampler_type.h>
 #include <luxplan/scene/layout.h>
+#include <luxplan/scene/room.h>
 
 namespace luxplan {
 namespace {
@@ -14,6 +17,36 @@ bool inside(const std::vector<Bounds3>& rooms, const Vec3& p) {
     for (const Bounds3& r : rooms)
         if (Bounds3(r.lo - Vec3(kSlack, kSlack, kSlack), r.hi + Vec3(kSlack, kSlack, kSlack)).contains(p)) return true;
     return false;
+}
+
+const char* const kFaceNames[3][2] = {{"west wall", "east wall"}, {"south wall", "north wall"}, {"floor", "ceiling"}};
+
+// Whether p lies in one of the room's openings (on its wall's plane, within kSlack).
+bool inAnOpening(const RoomShell& room, const Vec3& p) {
+    for (const Opening& o : room.openings) {
+        const Rect3 q = openingQuad(room.box, o);
+        const Vec3 d = p - q.corner, n = q.normal();
+        const double u = dot(d, q.edgeU) / dot(q.edgeU, q.edgeU), v = dot(d, q.edgeV) / dot(q.edgeV, q.edgeV);
+        if (std::abs(dot(d, n)) <= kSlack && u >= 0 && u <= 1 && v >= 0 && v <= 1) return true;
+    }
+    return false;
+}
+
+// The face of the room's box that p lies on (within kSlack) and that `facing` points
+// out through, as {axis, side}; none where p is off the shell or in an opening.
+std::optional<std::array<int, 2>> faceLookedOutThrough(const RoomShell& room, const Vec3& p, const Vec3& facing) {
+    const Bounds3& b = room.box;
+    for (int axis = 0; axis < 3; ++axis)
+        for (int side = 0; side < 2; ++side) {
+            const double plane = side ? b.hi[axis] : b.lo[axis];
+            const double outward = side ? facing[axis] : -facing[axis];
+            if (std::abs(p[axis] - plane) > kSlack || outward <= 1e-9) continue;
+            bool onFace = true;
+            for (int other = 0; other < 3; ++other)
+                if (other != axis && (p[other] < b.lo[other] - kSlack || p[other] > b.hi[other] + kSlack)) onFace = false;
+            if (onFace && !inAnOpening(room, p)) return std::array<int, 2>{axis, side};
+        }
+    return std::nullopt;
 }
 
 }  // namespace
@@ -46,6 +79,22 @@ std::vector<Diagnostic> outsideTheRoom(const Scene& scene) {
                            "sampler \"" + s.name + "\" measures outside the room" + where(s.entity) + ": " +
                                std::to_string(outside) + " of its " + std::to_string(points.size()) + " points, e.g. " +
                                pointText(*first)});
+    }
+    // A point on the shell sees past it (a sensor's rays start 0.1 mm along
+    // themselves), so one that faces out measures the light outside the room.
+    for (const LightSamplerSpec& s : scene.samplers) {
+        const std::optional<Vec3> facing = s.type->facing(frame(s.entity));
+        if (!facing) continue;
+        for (const Vec3& p : measurementPoints(s, frame(s.entity))) {
+            std::optional<std::array<int, 2>> face;
+            for (const StaticItem& g : scene.geometry)
+                if (g.room && !face) face = faceLookedOutThrough(*g.room, p, *facing);
+            if (!face) continue;
+            out.push_back({scene.file.string(), s.jsonPath,
+                           "sampler \"" + s.name + "\" lies on the room's " + kFaceNames[(*face)[0]][(*face)[1]] + where(s.entity) +
+                               " and faces out through it, at " + pointText(p) + ": it measures the light outside the room"});
+            break;
+        }
     }
     return out;
 }

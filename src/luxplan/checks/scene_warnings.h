@@ -28,7 +28,9 @@ std::vector<Diagnostic> enclosedEmitters(const Scene& scene);
 inline constexpr int kEnclosureRays = 1024;
 
 // A luminaire whose centre, or a sampler's measurement point (its grid points, its
-// eye, its volume's corners), outside every room box by more than a millimetre
+// eye, its volume's corners), outside every room box by more than a millimetre; and a
+// sampler with a point on a room's wall, floor or ceiling (within a millimetre, not in
+// an opening) that faces out through it, which then measures the light outside
 // (outside_room.cpp). Scenes without a room are not judged.
 std::vector<Diagnostic> outsideTheRoom(const Scene& scene);
 

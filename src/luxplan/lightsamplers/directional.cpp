@@ -271,6 +271,8 @@ public:
         return p;
     }
 
+    std::optional<Vec3> facing(const Transform& world) const override { return normalize(world.applyVector(direction)); }
+
     std::shared_ptr<const SamplerType> transformed(const Transform& t) const override {
         auto s = std::make_shared<Directional>(*this);
         s->origin = t.applyPoint(origin);

@@ -70,6 +70,8 @@ public:
         return std::make_unique<PlacedPlanar>(std::move(points), normalize(world.applyVector(n)), std::move(corners));
     }
 
+    std::optional<Vec3> facing(const Transform& world) const override { return normalize(world.applyVector(normal)); }
+
     std::shared_ptr<const SamplerType> transformed(const Transform& t) const override {
         auto s = std::make_shared<Planar>(*this);
         s->center = t.applyPoint(center);

@@ -190,6 +190,9 @@ public:
     // uniformity U0 (EN 12464-1, core/point_statistics.h) describe it and may carry
     // goals (the sampler's "statistics"): planar and volume.
     virtual bool hasPointStatistics() const { return false; }
+    // The direction it looks in when its frame is at `worldFromFrame`, where it has one
+    // (a planar sampler's normal, a directional one's view axis), for the scene checks.
+    virtual std::optional<Vec3> facing(const Transform& /*worldFromFrame*/) const { return std::nullopt; }
     // Its points as an nx x ny grid (planar), for reports; none otherwise.
     virtual std::optional<std::array<int, 2>> pointGrid() const { return std::nullopt; }
     // The sampler fitted to where the loader found it, which its reader cannot see
