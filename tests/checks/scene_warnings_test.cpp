@@ -5,6 +5,7 @@
 #include <luxplan/checks/scene_warnings.h>
 #include <luxplan/daylight/datetime.h>
 #include <luxplan/emitters/emitter_shape.h>
+#include <luxplan/lightsamplers/glare_sources.h>
 #include <luxplan/lightsamplers/sampler_type.h>
 #include "support/scene_builder.h"
 
@@ -132,6 +133,30 @@ TEST(OutsideTheRoom, SamplersOnTheShellThatFaceOutThroughIt) {
     EXPECT_NE(w[1].message.find("\"under the floor\" lies on the room's floor and faces out through it"), std::string::npos);
     EXPECT_EQ(w[2].jsonPath, "/samplers/4");
     EXPECT_NE(w[2].message.find("\"eye\" lies on the room's north wall and faces out through it, at (3, 4, 1.2)"), std::string::npos);
+}
+
+// A sampler that gathers light from every direction sees out from anywhere on the shell
+// (a cylindrical sampler on window-lit-wall's east wall read 2545 lx, 109 lx 10 cm in),
+// and a glare eye looking out through the shell measures the outside.
+TEST(OutsideTheRoom, AllRoundSamplersOnTheShellAndGlareEyesFacingOut) {
+    Scene s = room()
+                  .window(Wall::South, 1, 2, 0.9, 1.2, "glass")
+                  .sampler("cylinder on the wall", cylindricalSampler({6, 2, 1.5}), 0, 1000)
+                  .sampler("cylinder in the room", cylindricalSampler({5.9, 2, 1.5}), 0, 1000)
+                  .sampler("cylinder in the window", cylindricalSampler({2, 0, 1.5}), 0, 1000)
+                  .sampler("ugr out", ugrSampler({3, 4, 1.2}, {0, 1, 0}), 0, 19)
+                  .sampler("ugr in", ugrSampler({3, 4, 1.2}, {0, -1, 0}), 0, 19)
+                  .sampler("dgp out", dgpSampler({0, 2, 1.2}, {-1, 0.2, 0}), 0, 0.35)
+                  .build();
+    std::vector<Diagnostic> w = outsideTheRoom(s);
+    ASSERT_EQ(w.size(), 3u) << messages(w);
+    EXPECT_EQ(w[0].jsonPath, "/samplers/0");
+    EXPECT_EQ(w[0].message, "sampler \"cylinder on the wall\" lies on the room's east wall and looks all round, at (6, 2, 1.5): "
+                            "half of what it measures is the light outside the room");
+    EXPECT_EQ(w[1].jsonPath, "/samplers/3");
+    EXPECT_NE(w[1].message.find("\"ugr out\" lies on the room's north wall and faces out through it"), std::string::npos);
+    EXPECT_EQ(w[2].jsonPath, "/samplers/5");
+    EXPECT_NE(w[2].message.find("\"dgp out\" lies on the room's west wall and faces out through it"), std::string::npos);
 }
 
 TEST(SealedSamplers, PointsInAClosedOpaqueBox) {

@@ -32,14 +32,15 @@ bool inAnOpening(const RoomShell& room, const Vec3& p) {
     return false;
 }
 
-// The face of the room's box that p lies on (within kSlack) and that `facing` points
-// out through, as {axis, side}; none where p is off the shell or in an opening.
-std::optional<std::array<int, 2>> faceLookedOutThrough(const RoomShell& room, const Vec3& p, const Vec3& facing) {
+// The face of the room's box that p lies on (within kSlack) and that a sampler looking
+// along `facing` (or all round, without one) sees out through, as {axis, side}; none
+// where p is off the shell or in an opening.
+std::optional<std::array<int, 2>> faceLookedOutThrough(const RoomShell& room, const Vec3& p, const std::optional<Vec3>& facing) {
     const Bounds3& b = room.box;
     for (int axis = 0; axis < 3; ++axis)
         for (int side = 0; side < 2; ++side) {
             const double plane = side ? b.hi[axis] : b.lo[axis];
-            const double outward = side ? facing[axis] : -facing[axis];
+            const double outward = !facing ? 1.0 : side ? (*facing)[axis] : -(*facing)[axis];
             if (std::abs(p[axis] - plane) > kSlack || outward <= 1e-9) continue;
             bool onFace = true;
             for (int other = 0; other < 3; ++other)
@@ -81,18 +82,23 @@ std::vector<Diagnostic> outsideTheRoom(const Scene& scene) {
                                pointText(*first)});
     }
     // A point on the shell sees past it (a sensor's rays start 0.1 mm along
-    // themselves), so one that faces out measures the light outside the room.
+    // themselves), so one that faces out, or looks all round, measures light from
+    // outside the room.
     for (const LightSamplerSpec& s : scene.samplers) {
         const std::optional<Vec3> facing = s.type->facing(frame(s.entity));
-        if (!facing) continue;
+        const bool allRound = s.type->looksAllRound();
+        if (!facing && !allRound) continue;
         for (const Vec3& p : measurementPoints(s, frame(s.entity))) {
             std::optional<std::array<int, 2>> face;
             for (const StaticItem& g : scene.geometry)
-                if (g.room && !face) face = faceLookedOutThrough(*g.room, p, *facing);
+                if (g.room && !face) face = faceLookedOutThrough(*g.room, p, allRound ? std::nullopt : facing);
             if (!face) continue;
+            const std::string on = "sampler \"" + s.name + "\" lies on the room's " + kFaceNames[(*face)[0]][(*face)[1]] + where(s.entity);
             out.push_back({scene.file.string(), s.jsonPath,
-                           "sampler \"" + s.name + "\" lies on the room's " + kFaceNames[(*face)[0]][(*face)[1]] + where(s.entity) +
-                               " and faces out through it, at " + pointText(p) + ": it measures the light outside the room"});
+                           allRound ? on + " and looks all round, at " + pointText(p) +
+                                          ": half of what it measures is the light outside the room"
+                                    : on + " and faces out through it, at " + pointText(p) +
+                                          ": it measures the light outside the room"});
             break;
         }
     }

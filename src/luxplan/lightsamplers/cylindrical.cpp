@@ -62,6 +62,7 @@ public:
     std::unique_ptr<PlacedSampler> place(const Transform& world) const override {
         return std::make_unique<PlacedCylindrical>(world.applyPoint(center));
     }
+    bool looksAllRound() const override { return true; }
     std::shared_ptr<const SamplerType> transformed(const Transform& t) const override {
         auto s = std::make_shared<Cylindrical>(*this);
         s->center = t.applyPoint(center);

@@ -25,6 +25,7 @@ public:
         return std::make_unique<PlacedGlare>(PlacedGlare::Metric::Dgp, world.applyPoint(origin),
                                              normalize(world.applyVector(direction)), thresholdNits, grid);
     }
+    std::optional<Vec3> facing(const Transform& world) const override { return normalize(world.applyVector(direction)); }
     std::shared_ptr<const SamplerType> transformed(const Transform& t) const override {
         auto s = std::make_shared<Dgp>(*this);
         s->origin = t.applyPoint(origin);

@@ -191,8 +191,12 @@ public:
     // goals (the sampler's "statistics"): planar and volume.
     virtual bool hasPointStatistics() const { return false; }
     // The direction it looks in when its frame is at `worldFromFrame`, where it has one
-    // (a planar sampler's normal, a directional one's view axis), for the scene checks.
+    // (a planar sampler's normal, a directional one's view axis, a glare eye's line of
+    // sight), for the scene checks.
     virtual std::optional<Vec3> facing(const Transform& /*worldFromFrame*/) const { return std::nullopt; }
+    // Whether it gathers light from every direction (cylindrical, volume), so that on
+    // the room's shell half of what it sees lies outside, whichever way it is turned.
+    virtual bool looksAllRound() const { return false; }
     // Its points as an nx x ny grid (planar), for reports; none otherwise.
     virtual std::optional<std::array<int, 2>> pointGrid() const { return std::nullopt; }
     // The sampler fitted to where the loader found it, which its reader cannot see

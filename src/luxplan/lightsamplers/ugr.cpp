@@ -19,6 +19,7 @@ public:
         return std::make_unique<PlacedGlare>(PlacedGlare::Metric::Ugr, world.applyPoint(origin),
                                              normalize(world.applyVector(direction)), 0.0);
     }
+    std::optional<Vec3> facing(const Transform& world) const override { return normalize(world.applyVector(direction)); }
     std::shared_ptr<const SamplerType> transformed(const Transform& t) const override {
         auto s = std::make_shared<Ugr>(*this);
         s->origin = t.applyPoint(origin);

@@ -61,6 +61,7 @@ public:
         return p;
     }
 
+    bool looksAllRound() const override { return true; }
     std::shared_ptr<const SamplerType> transformed(const Transform& t) const override {
         auto s = std::make_shared<Volume>(*this);
         s->center = t.applyPoint(center);
