@@ -194,3 +194,55 @@ TEST(PhotometricEmission, AxesMoveWithTheEmitter) {
 
 }  // namespace
 }  // namespace luxplan
+
+namespace luxplan {
+namespace {
+
+// A sensor point's view of the luminaires (its choice weights and each shape's set-up,
+// kept per thread) gives exactly what sampling from the point afresh gives, for every
+// shape, and follows its point and its set.
+int compareViewWithFresh(const EmitterSet& set, const Vec3& p, Rng& rng) {
+    int compared = 0;
+    for (int k = 0; k < 200; ++k) {
+        const double uSelect = rng.uniform();
+        const Vec2 u(rng.uniform(), rng.uniform());
+        const EmitterSample a = set.sample(p, uSelect, u), b = set.sample(set.viewFrom(p), uSelect, u);
+        EXPECT_EQ(a.emitter, b.emitter);
+        EXPECT_EQ(a.pdf, b.pdf);
+        EXPECT_EQ(a.Lv, b.Lv);
+        EXPECT_EQ(a.distance, b.distance);
+        EXPECT_TRUE(a.wi == b.wi);
+        if (a.emitter < 0 || a.emitter != b.emitter) continue;
+        const Vec3 q = p + a.wi * a.distance;
+        for (size_t i = 0; i < set.size(); ++i) EXPECT_EQ(set.pdf(i, p, q), set.pdf(i, set.viewFrom(p), q)) << i;
+        ++compared;
+    }
+    return compared;
+}
+
+TEST(EmitterPointView, SamplesAndDensitiesAreThoseFromThePointItself) {
+    Scene s;
+    s.emitters = {luminaire(rectEmitter({0, 0, 3}, {0, 0, -1}, {0, 1, 0}, {0.3, 0.2}), {0, 0, -1}, {1, 0, 0}, 1000),
+                  disk({-1, 0, 3}, 0.2, 500)};
+    Emitter panel, bulb;
+    panel.shape = rectEmitter({1, 1, 2.9}, {0, 0, -1}, {0, 1, 0}, {0.6, 0.6}), panel.fluxLm = 3000;
+    bulb.shape = sphereEmitter({0.5, -1, 2}, 0.05), bulb.fluxLm = 400;
+    s.emitters.push_back(panel), s.emitters.push_back(bulb);
+    const EmitterSet set(s, {}, EmitterSelection::PowerDistance);
+    Rng rng(21);
+    int compared = 0;
+    for (Vec3 p : {Vec3(0.5, 0.2, 0.75), Vec3(-0.4, 1.1, 1.2), Vec3(0.5, 0.2, 0.75), Vec3(1, 1, 2.95)})
+        compared += compareViewWithFresh(set, p, rng);
+    EXPECT_GT(compared, 600);
+    // Another set from the same point (the bulb moved): its own weights, not the view
+    // the thread kept of the first set.
+    s.emitters[3].shape = sphereEmitter({0.6, 0.3, 0.9}, 0.05);
+    const EmitterSet moved(s, {}, EmitterSelection::PowerDistance);
+    const Vec3 p(0.5, 0.2, 0.75);
+    ASSERT_NE(moved.selectionProbability(3, p), set.selectionProbability(3, p));
+    (void)set.viewFrom(p);
+    EXPECT_GT(compareViewWithFresh(moved, p, rng), 150);
+}
+
+}  // namespace
+}  // namespace luxplan

@@ -11,7 +11,8 @@ constexpr int kOutlinePoints = 32;
 
 class Disk final : public EmitterShape {
 public:
-    Disk(Vec3 center, Vec3 normal, double radius) : center_(center), normal_(normal), radius_(radius), n_(normalize(normal)) {}
+    Disk(Vec3 center, Vec3 normal, double radius)
+        : center_(center), normal_(normal), radius_(radius), n_(normalize(normal)), frame_(Frame::fromNormal(n_)) {}
 
     const char* name() const override { return "disk"; }
     double area() const override { return kPi * radius_ * radius_; }
@@ -25,8 +26,7 @@ public:
 
     std::optional<EmitterPoint> sample(const Vec3& p, Vec2 u) const override {
         Vec2 d = sampleUniformDiskConcentric(u);
-        Frame f = Frame::fromNormal(n_);
-        Vec3 q = center_ + (f.s * d.x + f.t * d.y) * radius_;
+        Vec3 q = center_ + (frame_.s * d.x + frame_.t * d.y) * radius_;
         return EmitterPoint{q, n_, pdf(p, q)};
     }
 
@@ -76,6 +76,7 @@ private:
     Vec3 center_, normal_;
     double radius_;
     Vec3 n_;
+    Frame frame_;  // of n_, for sample()
 };
 
 }  // namespace

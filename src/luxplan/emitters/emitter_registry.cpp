@@ -22,4 +22,18 @@ std::vector<std::string> emitterShapeNames() { return namesOf(emitterShapes()); 
 
 double emitterLuminance(const Emitter& e) { return e.fluxLm / (kPi * e.shape->area()); }
 
+std::unique_ptr<const EmitterShape::FromPoint> EmitterShape::from(const Vec3& p) const {
+    class Calls final : public FromPoint {
+    public:
+        Calls(const EmitterShape& shape, const Vec3& p) : shape_(shape), p_(p) {}
+        std::optional<EmitterPoint> sample(Vec2 u) const override { return shape_.sample(p_, u); }
+        double pdf(const Vec3& q) const override { return shape_.pdf(p_, q); }
+
+    private:
+        const EmitterShape& shape_;
+        Vec3 p_;
+    };
+    return std::make_unique<Calls>(*this, p);
+}
+
 }  // namespace luxplan

@@ -64,6 +64,16 @@ public:
     virtual std::optional<EmitterPoint> sample(const Vec3& p, Vec2 u) const = 0;
     // The solid-angle density of sample() at the point `q` on the shape, from `p`.
     virtual double pdf(const Vec3& p, const Vec3& q) const = 0;
+    // sample() and pdf() from one point `p`, for many calls: every path of a sampler
+    // point starts there. What each call would set up (a rect's spherical rectangle)
+    // is set up once; the numbers are the same. The default shares nothing.
+    class FromPoint {
+    public:
+        virtual ~FromPoint() = default;
+        virtual std::optional<EmitterPoint> sample(Vec2 u) const = 0;
+        virtual double pdf(const Vec3& q) const = 0;
+    };
+    virtual std::unique_ptr<const FromPoint> from(const Vec3& p) const;
     virtual EmitterPrimitive primitive() const = 0;
     virtual std::vector<Vec3> outline() const = 0;  // a closed polygon on the shape, for plans
     virtual EmitterMesh mesh() const = 0;

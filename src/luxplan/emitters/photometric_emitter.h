@@ -31,6 +31,7 @@ public:
     std::shared_ptr<const EmitterShape> transformed(const Transform& newFromOld) const override;
     std::optional<EmitterPoint> sample(const Vec3& p, Vec2 u) const override { return opening_->sample(p, u); }
     double pdf(const Vec3& p, const Vec3& q) const override { return opening_->pdf(p, q); }
+    std::unique_ptr<const FromPoint> from(const Vec3& p) const override { return opening_->from(p); }
     EmitterPrimitive primitive() const override { return opening_->primitive(); }
     std::vector<Vec3> outline() const override { return opening_->outline(); }
     EmitterMesh mesh() const override { return opening_->mesh(); }

@@ -28,15 +28,22 @@ public:
         return std::make_shared<Rect>(t.applyPoint(center_), t.applyVector(normal_), t.applyVector(up_), size_);
     }
 
-    std::optional<EmitterPoint> sample(const Vec3& p, Vec2 u) const override {
-        SphericalRect sr(rect_, p);
-        if (sr.solidAngle() <= 0) return std::nullopt;
-        return EmitterPoint{sr.sample(u), n_, 1 / sr.solidAngle()};
-    }
+    std::optional<EmitterPoint> sample(const Vec3& p, Vec2 u) const override { return sampleFrom(SphericalRect(rect_, p), u); }
+    double pdf(const Vec3& p, const Vec3&) const override { return pdfFrom(SphericalRect(rect_, p)); }
 
-    double pdf(const Vec3& p, const Vec3&) const override {
-        double omega = SphericalRect(rect_, p).solidAngle();
-        return omega > 0 ? 1 / omega : 0;
+    // The spherical rectangle (four acos and a sqrt to set up) once per point.
+    std::unique_ptr<const FromPoint> from(const Vec3& p) const override {
+        class Prepared final : public FromPoint {
+        public:
+            Prepared(const Rect& rect, const Vec3& p) : rect_(rect), sr_(rect.rect_, p) {}
+            std::optional<EmitterPoint> sample(Vec2 u) const override { return rect_.sampleFrom(sr_, u); }
+            double pdf(const Vec3&) const override { return rect_.pdfFrom(sr_); }
+
+        private:
+            const Rect& rect_;
+            SphericalRect sr_;
+        };
+        return std::make_unique<Prepared>(*this, p);
     }
 
     EmitterPrimitive primitive() const override {
@@ -74,6 +81,12 @@ public:
     }
 
 private:
+    std::optional<EmitterPoint> sampleFrom(const SphericalRect& sr, Vec2 u) const {
+        if (sr.solidAngle() <= 0) return std::nullopt;
+        return EmitterPoint{sr.sample(u), n_, 1 / sr.solidAngle()};
+    }
+    static double pdfFrom(const SphericalRect& sr) { return sr.solidAngle() > 0 ? 1 / sr.solidAngle() : 0; }
+
     Vec3 center_, normal_, up_;
     Vec2 size_;
     Vec3 n_;

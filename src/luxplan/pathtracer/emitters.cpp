@@ -1,9 +1,13 @@
 #include <luxplan/pathtracer/emitters.h>
 
+#include <atomic>
+
 namespace luxplan {
 
 EmitterSet::EmitterSet(const Scene& scene, const std::vector<Transform>& world, EmitterSelection selection)
     : selection_(selection) {
+    static std::atomic<uint64_t> nextId{1};
+    id_ = nextId++;
     for (const Emitter& e : scene.emitters) {
         Transform t = e.entity >= 0 ? world[e.entity] : Transform();
         auto shape = e.shape->transformed(t);
@@ -59,8 +63,32 @@ double EmitterSet::emitted(size_t i, const Vec3& w) const {
     return !e.normal || dot(w, *e.normal) < 0 ? e.luminance : 0.0;
 }
 
-EmitterSample EmitterSet::sample(const Vec3& p, double uSelect, Vec2 u) const {
+size_t EmitterSet::choose(const double* weights, double total, double uSelect) const {
+    double target = uSelect * total, acc = 0;
+    size_t chosen = emitters_.size();
+    for (size_t k = 0; k < emitters_.size(); ++k) {
+        if (weights[k] <= 0) continue;
+        chosen = k;  // the last emitter with weight, should rounding leave target >= total
+        acc += weights[k];
+        if (target < acc) break;
+    }
+    return chosen;
+}
+
+EmitterSample EmitterSet::finish(size_t chosen, double select, const std::optional<EmitterPoint>& q, const Vec3& p) const {
     EmitterSample s;
+    if (!q || !(q->pdf > 0) || !std::isfinite(q->pdf)) return s;
+    Vec3 d = q->position - p;
+    s.distance = length(d);
+    if (s.distance <= 0) return s;
+    s.wi = d / s.distance;
+    s.Lv = emitted(chosen, s.wi);
+    s.pdf = select * q->pdf;
+    s.emitter = int(chosen);
+    return s;
+}
+
+EmitterSample EmitterSet::sample(const Vec3& p, double uSelect, Vec2 u) const {
     // Choose by importance: one pass for the weights (on the stack for the usual few
     // dozen emitters), one for the choice.
     constexpr size_t kStack = 64;
@@ -73,27 +101,40 @@ EmitterSample EmitterSet::sample(const Vec3& p, double uSelect, Vec2 u) const {
     }
     double total = 0;
     for (size_t k = 0; k < emitters_.size(); ++k) total += weights[k] = importance(k, p);
-    if (total <= 0) return s;
-    double target = uSelect * total, acc = 0;
-    size_t chosen = emitters_.size();
-    for (size_t k = 0; k < emitters_.size(); ++k) {
-        if (weights[k] <= 0) continue;
-        chosen = k;  // the last emitter with weight, should rounding leave target >= total
-        acc += weights[k];
-        if (target < acc) break;
-    }
-    double select = weights[chosen] / total;
+    if (total <= 0) return {};
+    const size_t chosen = choose(weights, total, uSelect);
+    return finish(chosen, weights[chosen] / total, emitters_[chosen].shape->sample(p, u), p);
+}
 
-    auto q = emitters_[chosen].shape->sample(p, u);
-    if (!q || !(q->pdf > 0) || !std::isfinite(q->pdf)) return s;
-    Vec3 d = q->position - p;
-    s.distance = length(d);
-    if (s.distance <= 0) return s;
-    s.wi = d / s.distance;
-    s.Lv = emitted(chosen, s.wi);
-    s.pdf = select * q->pdf;
-    s.emitter = int(chosen);
-    return s;
+const EmitterShape::FromPoint& EmitterSet::PointView::shape(const EmitterSet& set, size_t i) const {
+    if (!shapes_[i]) shapes_[i] = set.emitters_[i].shape->from(point_);
+    return *shapes_[i];
+}
+
+const EmitterSet::PointView& EmitterSet::viewFrom(const Vec3& p) const {
+    thread_local uint64_t cachedSet = 0;
+    thread_local PointView view;
+    if (cachedSet != id_ || !(view.point_ == p)) {
+        view.point_ = p;
+        view.weights_.resize(emitters_.size());
+        view.total_ = 0;
+        for (size_t k = 0; k < emitters_.size(); ++k) view.total_ += view.weights_[k] = importance(k, p);
+        view.shapes_.clear();
+        view.shapes_.resize(emitters_.size());
+        cachedSet = id_;
+    }
+    return view;
+}
+
+EmitterSample EmitterSet::sample(const PointView& view, double uSelect, Vec2 u) const {
+    if (view.total_ <= 0) return {};
+    const size_t chosen = choose(view.weights_.data(), view.total_, uSelect);
+    return finish(chosen, view.weights_[chosen] / view.total_, view.shape(*this, chosen).sample(u), view.point_);
+}
+
+double EmitterSet::pdf(size_t i, const PointView& view, const Vec3& onEmitter) const {
+    const double select = view.total_ > 0 ? view.weights_[i] / view.total_ : 0;
+    return select > 0 ? select * view.shape(*this, i).pdf(onEmitter) : 0;
 }
 
 }  // namespace luxplan

@@ -64,12 +64,37 @@ public:
     // Density (per solid angle, selection included) that sample() gives the point
     // `onEmitter` of emitter i seen from p.
     double pdf(size_t i, const Vec3& p, const Vec3& onEmitter) const;
+    // Choosing and sampling from one point many times (every path of a sampler point
+    // starts there): the choice's weights, and each chosen shape's set-up (a rect's
+    // spherical rectangle), once. The numbers are those of sample(p, ...) and pdf(i, p, q).
+    class PointView {
+    public:
+        const Vec3& point() const { return point_; }
+
+    private:
+        friend class EmitterSet;
+        Vec3 point_;
+        std::vector<double> weights_;  // importance from point_
+        double total_ = 0;
+        mutable std::vector<std::unique_ptr<const EmitterShape::FromPoint>> shapes_;  // on first use
+        const EmitterShape::FromPoint& shape(const EmitterSet& set, size_t i) const;
+    };
+    // This thread's view from p, valid until its next call (measureSamplers runs a
+    // point's paths on one thread in a row, as SkyLight::viewFromSensor).
+    const PointView& viewFrom(const Vec3& p) const;
+    EmitterSample sample(const PointView& view, double uSelect, Vec2 u) const;
+    double pdf(size_t i, const PointView& view, const Vec3& onEmitter) const;
     // Luminance emitter i sends along -w (w: direction from the viewer towards it):
     // flux / (pi A), or a photometric luminaire's I(-w) / (its area projected across w).
     double emitted(size_t i, const Vec3& w) const;
 
 private:
     double importance(size_t i, const Vec3& p) const;
+    // The emitter uSelect picks in proportion to `weights` (their sum `total` > 0).
+    size_t choose(const double* weights, double total, double uSelect) const;
+    EmitterSample finish(size_t chosen, double select, const std::optional<EmitterPoint>& q, const Vec3& p) const;
+
+    uint64_t id_ = 0;  // which set a thread's cached view is from
 
     std::vector<WorldEmitter> emitters_;
     EmitterSelection selection_ = EmitterSelection::PowerDistance;

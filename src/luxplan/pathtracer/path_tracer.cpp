@@ -253,6 +253,7 @@ double PathTracer::sample(const Sensor& sensor, PathSamples& samples, RayStats& 
     bool lastDelta = false;
     double lastPdf = 0;
     Vec3 lastPoint = origin;
+    bool lastAtSensor = true;  // lastPoint is the sensor's (its emitter view applies)
     const bool sky = sky_.active();
     // This vertex's view of the sky's portals and the last non-delta vertex's. A View
     // is large (16 spherical rectangles): a path neither zeroes nor copies one. The
@@ -460,7 +461,11 @@ double PathTracer::sample(const Sensor& sensor, PathSamples& samples, RayStats& 
                 if (stats.footprint) stats.footprint->usedEmitterChoice = true;
                 if (v.isSurface() || sensorSeesEmitters) {
                     const double uChoice = samples.get1D(PathSamples::EmitterChoice);
-                    EmitterSample s = emitters_.sample(v.p, uChoice, samples.get2D(PathSamples::EmitterPoint));
+                    const Vec2 uPoint = samples.get2D(PathSamples::EmitterPoint);
+                    // Every path of a sampler point starts at it: its thread's view of the
+                    // luminaires from there (the same numbers, set up once).
+                    EmitterSample s = v.isSurface() ? emitters_.sample(v.p, uChoice, uPoint)
+                                                    : emitters_.sample(emitters_.viewFrom(v.p), uChoice, uPoint);
                     if (s.pdf > 0 && s.Lv > 0) addLight(s.wi, Vec3(s.Lv, s.Lv, s.Lv), s.pdf, s.distance, s.emitter, s.emitter);
                 }
             }
@@ -539,6 +544,7 @@ double PathTracer::sample(const Sensor& sensor, PathSamples& samples, RayStats& 
         if (!delta) {
             lastPdf = pdf;
             lastPoint = v.p;
+            lastAtSensor = !v.isSurface();
             lastPatched = patchesHere();
             if (lastPatched) lastOrigin = {v.p, v.ng, v.bsdf->hasDiffuseTransmission(), true};
             lastOutside = exteriorSun_ && views[current]->active;
@@ -591,7 +597,11 @@ double PathTracer::sample(const Sensor& sensor, PathSamples& samples, RayStats& 
                 if (stats.footprint) stats.footprint->usedEmitterChoice = true;  // the MIS weight reads it
                 double Le = depth == 0 && sensor.hidesSources() ? 0.0 : emitters_.emitted(size_t(hit->index), d);
                 if (Le > 0) {
-                    double w = lastDelta ? 1 : powerHeuristic(1, lastPdf, 1, emitters_.pdf(size_t(hit->index), lastPoint, hit->point));
+                    const size_t e = size_t(hit->index);
+                    double w = lastDelta ? 1
+                                         : powerHeuristic(1, lastPdf, 1,
+                                                          lastAtSensor ? emitters_.pdf(e, emitters_.viewFrom(lastPoint), hit->point)
+                                                                       : emitters_.pdf(e, lastPoint, hit->point));
                     L += throughput * Vec3(Le, Le, Le) * w;
                     if (stats.budget) stats.budget->credit(hit->index, depth, luminance(throughput * Vec3(Le, Le, Le) * w));
                 }
