@@ -1,6 +1,9 @@
 // Emitter choice: the selection probabilities sum to one and vanish behind one-sided
 // emitters; sampling through the set (choice included) matches the set's pdf. Each
 // shape's own sampling is tested in tests/emitters/.
+#include <algorithm>
+#include <cmath>
+
 #include <gtest/gtest.h>
 
 #include <luxplan/core/rng.h>
@@ -26,6 +29,44 @@ TEST(EmitterSampling, SelectionProbabilitiesSumToOne) {
     EXPECT_NEAR(sum, 1.0, 1e-12);
     // A point above the one-sided disks is lit by none of them.
     EXPECT_EQ(set.selectionProbability(0, {0, 0, 4}), 0.0);
+}
+
+// The choice is a binary search over the weights' running sums: it must pick the
+// emitter a scan of the selection probabilities picks, past the 64 weights kept on the
+// stack, with emitters that weigh nothing (behind their plane) among them, and the last
+// one with weight at the very top.
+TEST(EmitterSampling, TheChoiceIsTheScansOverManyEmitters) {
+    for (int count : {5, 64, 65, 150}) {
+        Scene s;
+        for (int i = 0; i < count; ++i) {
+            Emitter e = disk({0.3 * i, 0.2 * (i % 7), 3}, 0.1, 100.0 + 37 * (i % 11));
+            if (i % 5 == 2 || i == count - 1) e.shape = diskEmitter({0.3 * i, 0, 0.5}, {0, 0, -1}, 0.1);  // faces away from p
+            s.emitters.push_back(e);
+        }
+        const EmitterSet set(s, {}, EmitterSelection::PowerDistance);
+        const Vec3 p(4, 0.5, 1.5);
+        std::vector<double> cumulative;
+        double acc = 0;
+        for (size_t k = 0; k < set.size(); ++k) cumulative.push_back(acc += set.selectionProbability(k, p));
+        ASSERT_NEAR(acc, 1, 1e-12);
+        Rng rng{uint64_t(count)};
+        for (int n = 0; n < 2000; ++n) {
+            const double u = rng.uniform();
+            const size_t expected = size_t(std::upper_bound(cumulative.begin(), cumulative.end(), u) - cumulative.begin());
+            // A u within rounding of a boundary may go either way.
+            if (expected < set.size() && std::abs(cumulative[expected] - u) < 1e-12) continue;
+            if (expected > 0 && std::abs(cumulative[expected - 1] - u) < 1e-12) continue;
+            const EmitterSample e = set.sample(p, u, {0.5, 0.5});
+            ASSERT_EQ(e.emitter, int(expected)) << count << " emitters, u " << u;
+            EXPECT_EQ(e.emitter, set.sample(set.viewFrom(p), u, {0.5, 0.5}).emitter);
+        }
+        int last = -1;
+        for (size_t k = 0; k < set.size(); ++k)
+            if (set.selectionProbability(k, p) > 0) last = int(k);
+        EXPECT_EQ(set.sample(p, std::nextafter(1.0, 0.0), {0.5, 0.5}).emitter, last);
+        EXPECT_EQ(set.sample(p, 1.0, {0.5, 0.5}).emitter, last);  // the target at the total itself
+        EXPECT_EQ(set.sample(p, 0, {0.5, 0.5}).emitter, 0);
+    }
 }
 
 TEST(EmitterSampling, SetPdfIncludesTheChoice) {

@@ -1,8 +1,36 @@
 #include <luxplan/pathtracer/emitters.h>
 
+#include <algorithm>
 #include <atomic>
 
 namespace luxplan {
+namespace {
+
+// A vertex's weights and their running sums, on the stack for the usual few dozen
+// emitters.
+class WeightBuffers {
+public:
+    explicit WeightBuffers(size_t n) {
+        if (n > kStack) heap_.resize(2 * n);
+        weights = n > kStack ? heap_.data() : stack_;
+        sums = weights + (n > kStack ? n : kStack);
+    }
+    double* weights;
+    double* sums;
+
+private:
+    static constexpr size_t kStack = 64;
+    double stack_[2 * kStack];
+    std::vector<double> heap_;
+};
+
+// sums[k] = w[0] + ... + w[k], added in order (the last is the total).
+void runningSums(const double* w, size_t n, double* sums) {
+    double acc = 0;
+    for (size_t k = 0; k < n; ++k) sums[k] = acc += w[k];
+}
+
+}  // namespace
 
 EmitterSet::EmitterSet(const Scene& scene, const std::vector<Transform>& world, EmitterSelection selection)
     : selection_(selection) {
@@ -18,6 +46,34 @@ EmitterSet::EmitterSet(const Scene& scene, const std::vector<Transform>& world, 
             emitters_.back().intensityScale = fileFlux > 0 ? e.fluxLm / fileFlux : 0;
         }
     }
+    for (size_t k = 0; k < emitters_.size(); ++k) {
+        const WorldEmitter& e = emitters_[k];
+        if (e.photometric) photometric_.push_back(k);
+        const Vec3 n = e.normal.value_or(Vec3());
+        arrays_.cx.push_back(e.center.x), arrays_.cy.push_back(e.center.y), arrays_.cz.push_back(e.center.z);
+        arrays_.nx.push_back(n.x), arrays_.ny.push_back(n.y), arrays_.nz.push_back(n.z);
+        arrays_.flux.push_back(e.flux), arrays_.reach2.push_back(e.reach * e.reach);
+        arrays_.oneSided.push_back(e.normal ? 1 : 0);
+    }
+}
+
+void EmitterSet::weigh(const Vec3& p, double* weights) const {
+    const size_t n = emitters_.size();
+    if (selection_ == EmitterSelection::Uniform) {
+        for (size_t k = 0; k < n; ++k) weights[k] = emitters_[k].flux > 0 ? 1 : 0;
+        return;
+    }
+    // importance()'s arithmetic, in its order, so that the weights are its own.
+    const Arrays& a = arrays_;
+    for (size_t k = 0; k < n; ++k) {
+        const double dx = a.cx[k] - p.x, dy = a.cy[k] - p.y, dz = a.cz[k] - p.z;
+        const double facing = (-dx) * a.nx[k] + (-dy) * a.ny[k] + (-dz) * a.nz[k];
+        const double d2 = dx * dx + dy * dy + dz * dz, r2 = a.reach2[k];
+        const double w = a.flux[k] / (d2 < r2 ? r2 : d2);  // std::max's choice
+        const bool lit = (a.flux[k] > 0) & ((a.oneSided[k] == 0) | (facing > 0));  // & and |: no branch
+        weights[k] = lit ? w : 0.0;
+    }
+    for (size_t k : photometric_) weights[k] = importance(k, p);
 }
 
 double EmitterSet::importance(size_t i, const Vec3& p) const {
@@ -41,9 +97,11 @@ double EmitterSet::importance(size_t i, const Vec3& p) const {
 }
 
 double EmitterSet::selectionProbability(size_t i, const Vec3& p) const {
+    WeightBuffers b(emitters_.size());
+    weigh(p, b.weights);
     double total = 0;
-    for (size_t k = 0; k < emitters_.size(); ++k) total += importance(k, p);
-    return total > 0 ? importance(i, p) / total : 0;
+    for (size_t k = 0; k < emitters_.size(); ++k) total += b.weights[k];
+    return total > 0 ? b.weights[i] / total : 0;
 }
 
 double EmitterSet::pdf(size_t i, const Vec3& p, const Vec3& onEmitter) const {
@@ -63,16 +121,16 @@ double EmitterSet::emitted(size_t i, const Vec3& w) const {
     return !e.normal || dot(w, *e.normal) < 0 ? e.luminance : 0.0;
 }
 
-size_t EmitterSet::choose(const double* weights, double total, double uSelect) const {
-    double target = uSelect * total, acc = 0;
-    size_t chosen = emitters_.size();
-    for (size_t k = 0; k < emitters_.size(); ++k) {
-        if (weights[k] <= 0) continue;
-        chosen = k;  // the last emitter with weight, should rounding leave target >= total
-        acc += weights[k];
-        if (target < acc) break;
-    }
-    return chosen;
+size_t EmitterSet::choose(const double* weights, const double* sums, double uSelect) const {
+    // The first emitter whose running sum passes the target; it has weight, since its
+    // sum grew there. A scan adding the weights in the same order picks the same one.
+    const size_t n = emitters_.size();
+    const double target = uSelect * sums[n - 1];
+    const size_t chosen = size_t(std::upper_bound(sums, sums + n, target) - sums);
+    if (chosen < n) return chosen;
+    for (size_t k = n; k-- > 0;)  // rounding left the target at the total: the last with weight
+        if (weights[k] > 0) return k;
+    return n;
 }
 
 EmitterSample EmitterSet::finish(size_t chosen, double select, const std::optional<EmitterPoint>& q, const Vec3& p) const {
@@ -89,21 +147,15 @@ EmitterSample EmitterSet::finish(size_t chosen, double select, const std::option
 }
 
 EmitterSample EmitterSet::sample(const Vec3& p, double uSelect, Vec2 u) const {
-    // Choose by importance: one pass for the weights (on the stack for the usual few
-    // dozen emitters), one for the choice.
-    constexpr size_t kStack = 64;
-    double stackWeights[kStack];
-    std::vector<double> heapWeights;
-    double* weights = stackWeights;
-    if (emitters_.size() > kStack) {
-        heapWeights.resize(emitters_.size());
-        weights = heapWeights.data();
-    }
-    double total = 0;
-    for (size_t k = 0; k < emitters_.size(); ++k) total += weights[k] = importance(k, p);
+    // Choose by importance: the weights, their running sums, a binary search.
+    if (emitters_.empty()) return {};
+    WeightBuffers b(emitters_.size());
+    weigh(p, b.weights);
+    runningSums(b.weights, emitters_.size(), b.sums);
+    const double total = b.sums[emitters_.size() - 1];
     if (total <= 0) return {};
-    const size_t chosen = choose(weights, total, uSelect);
-    return finish(chosen, weights[chosen] / total, emitters_[chosen].shape->sample(p, u), p);
+    const size_t chosen = choose(b.weights, b.sums, uSelect);
+    return finish(chosen, b.weights[chosen] / total, emitters_[chosen].shape->sample(p, u), p);
 }
 
 const EmitterShape::FromPoint& EmitterSet::PointView::shape(const EmitterSet& set, size_t i) const {
@@ -117,8 +169,10 @@ const EmitterSet::PointView& EmitterSet::viewFrom(const Vec3& p) const {
     if (cachedSet != id_ || !(view.point_ == p)) {
         view.point_ = p;
         view.weights_.resize(emitters_.size());
-        view.total_ = 0;
-        for (size_t k = 0; k < emitters_.size(); ++k) view.total_ += view.weights_[k] = importance(k, p);
+        view.sums_.resize(emitters_.size());
+        weigh(p, view.weights_.data());
+        runningSums(view.weights_.data(), emitters_.size(), view.sums_.data());
+        view.total_ = emitters_.empty() ? 0 : view.sums_.back();
         view.shapes_.clear();
         view.shapes_.resize(emitters_.size());
         cachedSet = id_;
@@ -128,7 +182,7 @@ const EmitterSet::PointView& EmitterSet::viewFrom(const Vec3& p) const {
 
 EmitterSample EmitterSet::sample(const PointView& view, double uSelect, Vec2 u) const {
     if (view.total_ <= 0) return {};
-    const size_t chosen = choose(view.weights_.data(), view.total_, uSelect);
+    const size_t chosen = choose(view.weights_.data(), view.sums_.data(), uSelect);
     return finish(chosen, view.weights_[chosen] / view.total_, view.shape(*this, chosen).sample(u), view.point_);
 }
 

@@ -75,6 +75,7 @@ public:
         friend class EmitterSet;
         Vec3 point_;
         std::vector<double> weights_;  // importance from point_
+        std::vector<double> sums_;     // their running sums
         double total_ = 0;
         mutable std::vector<std::unique_ptr<const EmitterShape::FromPoint>> shapes_;  // on first use
         const EmitterShape::FromPoint& shape(const EmitterSet& set, size_t i) const;
@@ -90,11 +91,22 @@ public:
 
 private:
     double importance(size_t i, const Vec3& p) const;
-    // The emitter uSelect picks in proportion to `weights` (their sum `total` > 0).
-    size_t choose(const double* weights, double total, double uSelect) const;
+    // importance(k, p) for every k, into weights[0, size()): the Lambertian emitters'
+    // in one branch-free loop over arrays (it vectorizes: a large office's dozens of
+    // luminaires are weighed at every vertex), the photometric ones after.
+    void weigh(const Vec3& p, double* weights) const;
+    // The emitter uSelect picks in proportion to `weights`, whose running sums are
+    // `sums` (the total, the last, > 0).
+    size_t choose(const double* weights, const double* sums, double uSelect) const;
     EmitterSample finish(size_t chosen, double select, const std::optional<EmitterPoint>& q, const Vec3& p) const;
 
     uint64_t id_ = 0;  // which set a thread's cached view is from
+    // weigh()'s inputs, one array per field; a two-sided emitter has a zero normal and
+    // oneSided 0, a photometric one is weighed by importance() (its index in `photometric_`).
+    struct Arrays {
+        std::vector<double> cx, cy, cz, nx, ny, nz, flux, reach2, oneSided;
+    } arrays_;
+    std::vector<size_t> photometric_;
 
     std::vector<WorldEmitter> emitters_;
     EmitterSelection selection_ = EmitterSelection::PowerDistance;
