@@ -11,10 +11,11 @@ estimators, at PATHS paths per point, one thread. Per scene: the rays ratio, the
 ratio and the median over samplers of the variance ratio first/second; efficiency
 (1 / (variance x time)) of the first is 1 / (time ratio x variance ratio).
 
-    scripts/error-per-ray.py BINARY [PATHS] [SEEDS] [--sun-patches | --vs OTHER_BINARY]
+    scripts/error-per-ray.py BINARY [PATHS] [SEEDS] [--sun-patches | --vs OTHER_BINARY] [--scenes A.json,B.json]
 
 With `--vs OTHER_BINARY`, the two estimators are BINARY's (new) and OTHER_BINARY's
-(old) defaults: a change to the path tracer measured the same way.
+(old) defaults: a change to the path tracer measured the same way. `--scenes` takes
+those scenes instead of the bundled ones.
 """
 import glob
 import json
@@ -43,6 +44,13 @@ def main():
             sys.exit(__doc__)
         other = argv[i + 1]
         del argv[i:i + 2]
+    chosen = None
+    if "--scenes" in argv:
+        i = argv.index("--scenes")
+        if i + 1 >= len(argv):
+            sys.exit(__doc__)
+        chosen = argv[i + 1].split(",")
+        del argv[i:i + 2]
     args = [a for a in argv if not a.startswith("--")]
     if not args:
         sys.exit(__doc__)
@@ -58,7 +66,8 @@ def main():
         names, options = ("sobol", "random"), {"sobol": ["--sampling", "sobol"], "random": ["--sampling", "random"]}
     binaries = binaries or {m: binary for m in names}
     first, second = names
-    scenes = ["scenes/demo/office.json"] + sorted(s for s in glob.glob("scenes/paper/*.json") if not s.endswith("-layout.json"))
+    scenes = chosen or ["scenes/demo/office.json"] + sorted(
+        s for s in glob.glob("scenes/paper/*.json") if not s.endswith("-layout.json"))
     print(f"{paths} paths per point, {seeds} seeds")
     print(f"| scene | rays {first}/{second} | time {first}/{second} | directional: median var {first}/{second} "
           f"| others: median var {first}/{second} |")
