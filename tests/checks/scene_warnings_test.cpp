@@ -152,7 +152,7 @@ TEST(OutsideTheRoom, AllRoundSamplersOnTheShellAndGlareEyesFacingOut) {
     ASSERT_EQ(w.size(), 3u) << messages(w);
     EXPECT_EQ(w[0].jsonPath, "/samplers/0");
     EXPECT_EQ(w[0].message, "sampler \"cylinder on the wall\" lies on the room's east wall and looks all round, at (6, 2, 1.5): "
-                            "half of what it measures is the light outside the room");
+                            "half of its directions see outside the room");
     EXPECT_EQ(w[1].jsonPath, "/samplers/3");
     EXPECT_NE(w[1].message.find("\"ugr out\" lies on the room's north wall and faces out through it"), std::string::npos);
     EXPECT_EQ(w[2].jsonPath, "/samplers/5");
@@ -179,6 +179,42 @@ TEST(SealedSamplers, PointsInAClosedOpaqueBox) {
     // The monitor moved off the points: no warning.
     s.entities[1].position = {0, 0.2, 0.75};
     EXPECT_TRUE(sealedSamplers(s).empty()) << messages(sealedSamplers(s));
+}
+
+// A sampler on a closed opaque box's face sees past it: looking into the box, it reads
+// its dark inside (in a lit room, a plane on a desk's top facing down read 0 lx, facing
+// up 663 lx; a cylindrical sampler on the top 321 lx, 10 cm above it 443 lx). A desk turned 30 degrees (its top from 0 to 0.75 m), planes on its top
+// facing down and up, one 0.5 mm above it facing down (its rays start outside), a
+// cylindrical sampler on the top, and an eye on a static box's side looking into it.
+TEST(SealedSamplers, SamplersOnABoxThatLookIntoIt) {
+    const double c = std::cos(kPi / 6), s30 = std::sin(kPi / 6);
+    Scene s = room()
+                  .box("cabinet", {4, 0.5, 0}, {5, 1.5, 1}, "wall")
+                  .sampler("eye", directionalSampler({4, 1, 0.5}, {1, 0, 0}, {0, 0, 1}, 40, 2), 0, 100)
+                  .sampler("eye away", directionalSampler({4, 1, 0.5}, {-1, 0, 0}, {0, 0, 1}, 40, 2), 0, 100)
+                  .entity("desk", {2, 2, 0}, 30).region({0, 0}, {6, 4})
+                  .part({1.2, 0.6, 0.75}, "wall")
+                  .sampler("down", planarSampler({0, 0, 0.75}, {0, 0, -1}, {0, 1, 0}, {0.6, 0.3}, {2, 2}), 0, 500)
+                  .sampler("up", planarSampler({0, 0, 0.75}, {0, 0, 1}, {0, 1, 0}, {0.6, 0.3}, {2, 2}), 300, 500)
+                  .sampler("above", planarSampler({0, 0, 0.7505}, {0, 0, -1}, {0, 1, 0}, {0.6, 0.3}, {2, 2}), 0, 500)
+                  .sampler("cylinder", cylindricalSampler({0, 0, 0.75}), 0, 500)
+                  .sampler("side", planarSampler({0.6, 0, 0.4}, {-1, 0, 0}, {0, 0, 1}, {0.2, 0.2}, {1, 1}), 0, 500)
+                  .end()
+                  .build();
+    std::vector<Diagnostic> w = sealedSamplers(s);
+    ASSERT_EQ(w.size(), 4u) << messages(w);  // the entities' samplers first
+    EXPECT_EQ(w[0].jsonPath, "/entities/0/samplers/0");
+    EXPECT_EQ(w[0].message.rfind("sampler \"desk.down\" lies on a closed opaque box (where \"desk\" stands) and faces into it: 4 "
+                                 "of its 4 points", 0), 0u) << w[0].message;
+    EXPECT_EQ(w[1].jsonPath, "/entities/0/samplers/3");
+    EXPECT_NE(w[1].message.find("\"desk.cylinder\" lies on a closed opaque box (where \"desk\" stands) and looks all round: "
+                                "1 of its 1 points, e.g. (2, 2, 0.75), where half of its directions see"), std::string::npos) << w[1].message;
+    // On the turned desk's end face (local x = 0.6), facing back into it.
+    EXPECT_EQ(w[2].jsonPath, "/entities/0/samplers/4");
+    EXPECT_NE(w[2].message.find(pointText({2 + 0.6 * c, 2 + 0.6 * s30, 0.4})), std::string::npos) << w[2].message;
+    EXPECT_EQ(w[3].jsonPath, "/samplers/0");
+    EXPECT_EQ(w[3].message, "sampler \"eye\" lies on a closed opaque box and faces into it: 1 of its 1 points, e.g. (4, 1, 0.5), "
+                            "where it measures the box's dark inside (they read 0)");
 }
 
 DaylightParams preetham(const char* from, const char* to) {

@@ -96,7 +96,7 @@ std::vector<Diagnostic> outsideTheRoom(const Scene& scene) {
             const std::string on = "sampler \"" + s.name + "\" lies on the room's " + kFaceNames[(*face)[0]][(*face)[1]] + where(s.entity);
             out.push_back({scene.file.string(), s.jsonPath,
                            allRound ? on + " and looks all round, at " + pointText(p) +
-                                          ": half of what it measures is the light outside the room"
+                                          ": half of its directions see outside the room"
                                     : on + " and faces out through it, at " + pointText(p) +
                                           ": it measures the light outside the room"});
             break;

@@ -71,4 +71,30 @@ bool SealedBoxes::contain(const Vec3& p, Vec3& exit) const {
     return false;
 }
 
+bool SealedBoxes::onFace(const Vec3& p, double tolerance, Vec3& outward) const {
+    const double reach = kInset + tolerance;
+    for (const Placed& e : entities_) {
+        if (!Bounds3(e.world.lo - Vec3(reach, reach, reach), e.world.hi + Vec3(reach, reach, reach)).contains(p)) continue;
+        const Vec3 local = e.localFromWorld.applyPoint(p);
+        for (const Bounds3& inner : e.inner) {
+            const Bounds3 b(inner.lo - Vec3(kInset, kInset, kInset), inner.hi + Vec3(kInset, kInset, kInset));
+            // Within the tolerance of the box on every axis, and of one face on its own.
+            bool near = true;
+            for (int axis = 0; axis < 3; ++axis)
+                near = near && local[axis] >= b.lo[axis] - tolerance && local[axis] <= b.hi[axis] + tolerance;
+            if (!near) continue;
+            for (int axis = 0; axis < 3; ++axis)
+                for (int side = 0; side < 2; ++side) {
+                    const double face = side ? b.hi[axis] : b.lo[axis];
+                    if (std::abs(local[axis] - face) > tolerance) continue;
+                    Vec3 n;
+                    n[axis] = side ? 1 : -1;
+                    outward = normalize(e.worldFromLocal.applyVector(n));
+                    return true;
+                }
+        }
+    }
+    return false;
+}
+
 }  // namespace luxplan

@@ -29,6 +29,11 @@ public:
     // Whether p lies inside one of them; if so, `exit` is where the shortest way out
     // of that box (its unshrunk box) leaves it, on one of its faces.
     bool contain(const Vec3& p, Vec3& exit) const;
+    // Whether p lies within `tolerance` of a face of one of them (the box's own face, not
+    // the shrunk one), on either side; if so, `outward` is that face's outward normal
+    // (world frame, unit). For the scene checks: a sampler on a closed box that looks
+    // into it measures the dark inside.
+    bool onFace(const Vec3& p, double tolerance, Vec3& outward) const;
 
 private:
     struct Placed {
