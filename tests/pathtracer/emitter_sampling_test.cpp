@@ -31,6 +31,29 @@ TEST(EmitterSampling, SelectionProbabilitiesSumToOne) {
     EXPECT_EQ(set.selectionProbability(0, {0, 0, 4}), 0.0);
 }
 
+// The weights are flux / max(d^2, reach^2), 0 behind a one-sided emitter: a row of
+// disks, a two-sided bulb and a disk whose back faces the point, seen from a point 1 m
+// below the row and from one 0.1 m under a disk (within its reach of 0.2 m, where the
+// weight stops growing).
+TEST(EmitterSampling, WeightsAreFluxOverSquaredDistance) {
+    Scene s;
+    for (int i = 0; i < 5; ++i) s.emitters.push_back(disk({double(i), 0, 3}, 0.2, 100.0 * (i + 1)));
+    Emitter bulb;
+    bulb.shape = sphereEmitter({0, 0, 1}, 0.1), bulb.fluxLm = 50;
+    s.emitters.push_back(bulb);
+    s.emitters.push_back(disk({1, 1, 0.5}, 0.3, 700));  // its back faces p
+    const EmitterSet set(s, {}, EmitterSelection::PowerDistance);
+    for (Vec3 p : {Vec3(1.5, 0.5, 2), Vec3(3, 0, 2.9)}) {
+        std::vector<double> w;
+        for (int i = 0; i < 5; ++i) w.push_back(100.0 * (i + 1) / std::max(lengthSquared(Vec3(i, 0, 3) - p), 0.04));
+        w.push_back(50 / std::max(lengthSquared(Vec3(0, 0, 1) - p), 0.01));
+        w.push_back(0);
+        double total = 0;
+        for (double x : w) total += x;
+        for (size_t i = 0; i < w.size(); ++i) EXPECT_NEAR(set.selectionProbability(i, p), w[i] / total, 1e-12) << i;
+    }
+}
+
 // The choice is a binary search over the weights' running sums: it must pick the
 // emitter a scan of the selection probabilities picks, past the 64 weights kept on the
 // stack, with emitters that weigh nothing (behind their plane) among them, and the last

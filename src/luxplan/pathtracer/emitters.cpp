@@ -63,37 +63,33 @@ void EmitterSet::weigh(const Vec3& p, double* weights) const {
         for (size_t k = 0; k < n; ++k) weights[k] = emitters_[k].flux > 0 ? 1 : 0;
         return;
     }
-    // importance()'s arithmetic, in its order, so that the weights are its own.
+    // flux / max(d^2, reach^2), 0 behind a one-sided emitter's plane or without flux.
     const Arrays& a = arrays_;
     for (size_t k = 0; k < n; ++k) {
         const double dx = a.cx[k] - p.x, dy = a.cy[k] - p.y, dz = a.cz[k] - p.z;
         const double facing = (-dx) * a.nx[k] + (-dy) * a.ny[k] + (-dz) * a.nz[k];
         const double d2 = dx * dx + dy * dy + dz * dz, r2 = a.reach2[k];
-        const double w = a.flux[k] / (d2 < r2 ? r2 : d2);  // std::max's choice
+        const double w = a.flux[k] / (d2 < r2 ? r2 : d2);
         const bool lit = (a.flux[k] > 0) & ((a.oneSided[k] == 0) | (facing > 0));  // & and |: no branch
         weights[k] = lit ? w : 0.0;
     }
-    for (size_t k : photometric_) weights[k] = importance(k, p);
+    for (size_t k : photometric_) weights[k] = photometricImportance(k, p);
 }
 
-double EmitterSet::importance(size_t i, const Vec3& p) const {
+double EmitterSet::photometricImportance(size_t i, const Vec3& p) const {
     const WorldEmitter& e = emitters_[i];
     if (e.flux <= 0) return 0;
-    if (selection_ == EmitterSelection::Uniform) return 1;
     Vec3 d = e.center - p;
     // A one-sided emitter lights nothing behind its plane.
     if (e.normal && dot(-d, *e.normal) <= 0) return 0;
-    if (e.photometric) {
-        // 4 pi I is the flux of a uniform source as bright towards p: a point the
-        // luminaire sends nothing to never chooses it (BSDF paths still see it, at
-        // full MIS weight). Within its reach, where the centre's direction says
-        // little, at least the mean intensity.
-        double d2 = lengthSquared(d);
-        double I = d2 > 0 ? e.intensityScale * e.photometric->intensity(-d / std::sqrt(d2)) : 0;
-        if (d2 < e.reach * e.reach) I = std::max(I, e.flux / (4 * kPi));
-        return 4 * kPi * I / std::max(d2, e.reach * e.reach);
-    }
-    return e.flux / std::max(lengthSquared(d), e.reach * e.reach);
+    // 4 pi I is the flux of a uniform source as bright towards p: a point the
+    // luminaire sends nothing to never chooses it (BSDF paths still see it, at full
+    // MIS weight). Within its reach, where the centre's direction says little, at
+    // least the mean intensity.
+    double d2 = lengthSquared(d);
+    double I = d2 > 0 ? e.intensityScale * e.photometric->intensity(-d / std::sqrt(d2)) : 0;
+    if (d2 < e.reach * e.reach) I = std::max(I, e.flux / (4 * kPi));
+    return 4 * kPi * I / std::max(d2, e.reach * e.reach);
 }
 
 double EmitterSet::selectionProbability(size_t i, const Vec3& p) const {

@@ -90,11 +90,13 @@ public:
     double emitted(size_t i, const Vec3& w) const;
 
 private:
-    double importance(size_t i, const Vec3& p) const;
-    // importance(k, p) for every k, into weights[0, size()): the Lambertian emitters'
-    // in one branch-free loop over arrays (it vectorizes: a large office's dozens of
-    // luminaires are weighed at every vertex), the photometric ones after.
+    // The choice's weight of every emitter from p, into weights[0, size()): the
+    // Lambertian emitters' in one branch-free loop over arrays (it vectorizes: a large
+    // office's dozens of luminaires are weighed at every vertex), the photometric ones
+    // after it (photometricImportance).
     void weigh(const Vec3& p, double* weights) const;
+    // A photometric luminaire's weight: 4 pi I(towards p) / max(d^2, reach^2).
+    double photometricImportance(size_t i, const Vec3& p) const;
     // The emitter uSelect picks in proportion to `weights`, whose running sums are
     // `sums` (the total, the last, > 0).
     size_t choose(const double* weights, const double* sums, double uSelect) const;
@@ -102,7 +104,8 @@ private:
 
     uint64_t id_ = 0;  // which set a thread's cached view is from
     // weigh()'s inputs, one array per field; a two-sided emitter has a zero normal and
-    // oneSided 0, a photometric one is weighed by importance() (its index in `photometric_`).
+    // oneSided 0; a photometric one is weighed by photometricImportance() (its index in
+    // `photometric_`).
     struct Arrays {
         std::vector<double> cx, cy, cz, nx, ny, nz, flux, reach2, oneSided;
     } arrays_;
