@@ -217,6 +217,43 @@ TEST(SealedSamplers, SamplersOnABoxThatLookIntoIt) {
                             "where it measures the box's dark inside (they read 0)");
 }
 
+// A plane just under a face it looks out of: its rays start 0.1 mm along themselves, so
+// the grazing ones start inside the box (on a lit desk, 650 lx at 1 cm above its top, 440
+// at 0.05 mm under it, 206 at 0.08 mm and 0 from 0.12 mm down). The desk is turned 30
+// degrees; a plane on its top, or 0.005 mm under it (1% of its light is lost at
+// 0.01 mm), is not warned about. A plane under the top looking down into the desk gets
+// the other warning; an eye 0.3 mm inside a static box, looking out, this one.
+TEST(SealedSamplers, SamplersJustUnderAFaceTheyLookOutOf) {
+    Scene s = room()
+                  .box("cabinet", {4, 0.5, 0}, {5, 1.5, 1}, "wall")
+                  .sampler("eye out", directionalSampler({4.0003, 1, 0.5}, {-1, 0, 0}, {0, 0, 1}, 40, 2), 0, 100)
+                  .entity("desk", {2, 2, 0}, 30).region({0, 0}, {6, 4})
+                  .part({1.2, 0.6, 0.75}, "wall")
+                  .sampler("on", planarSampler({0, 0, 0.75}, {0, 0, 1}, {0, 1, 0}, {0.6, 0.3}, {2, 2}), 300, 500)
+                  .sampler("hair under", planarSampler({0, 0, 0.749995}, {0, 0, 1}, {0, 1, 0}, {0.6, 0.3}, {2, 2}), 300, 500)
+                  .sampler("under", planarSampler({0, 0, 0.7495}, {0, 0, 1}, {0, 1, 0}, {0.6, 0.3}, {2, 2}), 300, 500)
+                  .sampler("shallow", planarSampler({0, 0, 0.74995}, {0, 0, 1}, {0, 1, 0}, {0.6, 0.3}, {2, 2}), 300, 500)
+                  .sampler("down", planarSampler({0, 0, 0.7495}, {0, 0, -1}, {0, 1, 0}, {0.6, 0.3}, {2, 2}), 0, 500)
+                  .end()
+                  .build();
+    std::vector<Diagnostic> w = sealedSamplers(s);
+    ASSERT_EQ(w.size(), 4u) << messages(w);
+    EXPECT_EQ(w[0].jsonPath, "/entities/0/samplers/2");
+    EXPECT_EQ(w[0].message.rfind("sampler \"desk.under\" lies just inside a closed opaque box (where \"desk\" stands), under the "
+                                 "face it looks out of: 4 of its 4 points, e.g. (", 0), 0u) << w[0].message;
+    EXPECT_NE(w[0].message.find("), 0.5 mm deep, where its rays start inside the box"), std::string::npos) << w[0].message;
+    EXPECT_EQ(w[1].jsonPath, "/entities/0/samplers/3");
+    EXPECT_NE(w[1].message.find(", 0.05 mm deep,"), std::string::npos) << w[1].message;
+    // Looking down into the desk from under its top: the dark inside, however deep.
+    EXPECT_EQ(w[2].jsonPath, "/entities/0/samplers/4");
+    EXPECT_NE(w[2].message.find("\"desk.down\" lies on a closed opaque box (where \"desk\" stands) and faces into it"),
+              std::string::npos) << w[2].message;
+    EXPECT_EQ(w[3].jsonPath, "/samplers/0");
+    EXPECT_EQ(w[3].message, "sampler \"eye out\" lies just inside a closed opaque box, under the face it looks out of: 1 of its 1 "
+                            "points, e.g. (4, 1, 0.5), 0.3 mm deep, where its rays start inside the box (they read low, and 0 "
+                            "from 0.1 mm down): place it on the face");
+}
+
 DaylightParams preetham(const char* from, const char* to) {
     DaylightParams d;
     d.model = SkyModelType::Preetham;

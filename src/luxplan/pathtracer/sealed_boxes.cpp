@@ -71,30 +71,36 @@ bool SealedBoxes::contain(const Vec3& p, Vec3& exit) const {
     return false;
 }
 
-bool SealedBoxes::onFace(const Vec3& p, double tolerance, Vec3& outward) const {
+bool SealedBoxes::nearestFace(const Vec3& p, double tolerance, Vec3& outward, double& depth) const {
     const double reach = kInset + tolerance;
+    bool found = false;
     for (const Placed& e : entities_) {
         if (!Bounds3(e.world.lo - Vec3(reach, reach, reach), e.world.hi + Vec3(reach, reach, reach)).contains(p)) continue;
         const Vec3 local = e.localFromWorld.applyPoint(p);
         for (const Bounds3& inner : e.inner) {
             const Bounds3 b(inner.lo - Vec3(kInset, kInset, kInset), inner.hi + Vec3(kInset, kInset, kInset));
-            // Within the tolerance of the box on every axis, and of one face on its own.
-            bool near = true;
-            for (int axis = 0; axis < 3; ++axis)
-                near = near && local[axis] >= b.lo[axis] - tolerance && local[axis] <= b.hi[axis] + tolerance;
-            if (!near) continue;
-            for (int axis = 0; axis < 3; ++axis)
-                for (int side = 0; side < 2; ++side) {
-                    const double face = side ? b.hi[axis] : b.lo[axis];
-                    if (std::abs(local[axis] - face) > tolerance) continue;
-                    Vec3 n;
-                    n[axis] = side ? 1 : -1;
-                    outward = normalize(e.worldFromLocal.applyVector(n));
-                    return true;
+            // How far p lies inside each face (negative outside); within the tolerance
+            // of the box on every axis, the face p lies least far inside is its nearest.
+            double least = kInf;
+            int nearest = -1;
+            for (int face = 0; face < 6; ++face) {
+                const int axis = face / 2;
+                const double inside = face % 2 ? b.hi[axis] - local[axis] : local[axis] - b.lo[axis];
+                if (inside < -tolerance) {
+                    nearest = -1;
+                    break;
                 }
+                if (inside < least) least = inside, nearest = face;
+            }
+            if (nearest < 0 || (found && least >= depth)) continue;
+            Vec3 n;
+            n[nearest / 2] = nearest % 2 ? 1 : -1;
+            outward = normalize(e.worldFromLocal.applyVector(n));
+            depth = least;
+            found = true;
         }
     }
-    return false;
+    return found;
 }
 
 }  // namespace luxplan

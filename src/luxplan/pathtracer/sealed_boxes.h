@@ -29,11 +29,12 @@ public:
     // Whether p lies inside one of them; if so, `exit` is where the shortest way out
     // of that box (its unshrunk box) leaves it, on one of its faces.
     bool contain(const Vec3& p, Vec3& exit) const;
-    // Whether p lies within `tolerance` of a face of one of them (the box's own face, not
-    // the shrunk one), on either side; if so, `outward` is that face's outward normal
-    // (world frame, unit). For the scene checks: a sampler on a closed box that looks
-    // into it measures the dark inside.
-    bool onFace(const Vec3& p, double tolerance, Vec3& outward) const;
+    // Whether p lies in one of them or within `tolerance` outside it (the box's own
+    // faces, not the shrunk ones); if so, of the face nearest p (of the box p lies least
+    // deep in), `outward` is its outward normal (world frame, unit) and `depth` how far p
+    // lies inside it (negative outside). For the scene checks: a sampler just inside a
+    // box, or on one looking into it, measures the dark inside.
+    bool nearestFace(const Vec3& p, double tolerance, Vec3& outward, double& depth) const;
 
 private:
     struct Placed {
