@@ -154,7 +154,8 @@ int main(int argc, char** argv) try {
     std::optional<DaylightEnvironment> daylight;
     if (scene.daylight) daylight = buildDaylight(*scene.daylight, scene.site);
     const EmbreeScene rt(scene, layout);
-    const auto sampler = placeSampler(scene.samplers[size_t(samplerIndex)], rt);
+    const PathTracer placer(rt, daylight ? &*daylight : nullptr, PathTracerOptions{});
+    const auto sampler = placeSampler(scene.samplers[size_t(samplerIndex)], placer);
     if (item < 0 || item >= sampler->items()) throw std::runtime_error("ITEM " + std::to_string(item) + " is past the sampler's " + std::to_string(sampler->items()) + " items");
     std::printf("%s, item %d, %d paths, sunlit patches %s (%s)\n", argv[3], item, paths, sunPatches ? "on" : "off",
                 scene.samplers[size_t(samplerIndex)].type->unit());

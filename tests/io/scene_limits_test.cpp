@@ -199,6 +199,40 @@ TEST(SceneLimits, SamplerPoints) {
     EXPECT_EQ(onlyProblem(s), "/samplers/1/strata: strata 256 (65536 strata) exceeds the limit of 32");
 }
 
+// A glare eye surveys each luminaire (and a DGP eye each sun disk) with six estimates of
+// its own: at most 1024 sources, counted in the file (the sun disks of the steps with the
+// sun up: 10:00-22:00 in Athens on 21 June, sunset about 20:50, every 0.5 minutes).
+TEST(SceneLimits, GlareSources) {
+    json s = smallScene();
+    for (int k = 1; k < 1024; ++k) {
+        json l = s["luminaires"][0];
+        l["name"] = "panel" + std::to_string(k);
+        s["luminaires"].push_back(l);
+    }
+    s["samplers"].push_back({{"name", "u"}, {"type", "ugr"}, {"origin", {3, 1, 1.2}}, {"direction", {0, 1, 0}}, {"target", {0, 19}}});
+    {
+        test::TempDir dir;
+        EXPECT_TRUE(test::loadProblems(s.dump(), dir).empty());  // 1024 luminaires
+    }
+    s["luminaires"].push_back(s["luminaires"][0]);
+    s["luminaires"].back()["name"] = "panel1024";
+    EXPECT_EQ(onlyProblem(s), "/samplers/1: a ugr sampler surveys each luminaire as a glare source of its own: 1025 luminaires "
+                              "exceed the limit of 1024");
+    s = smallScene();
+    s["site"] = {{"latitude", 37.98}, {"longitude", 23.73}};
+    s["daylight"] = {{"sky", {{"model", "preetham"}}},
+                     {"from", "2026-06-21T10:00+03:00"}, {"to", "2026-06-21T22:00+03:00"}, {"step_minutes", 0.5}};
+    s["samplers"].push_back({{"name", "g"}, {"type", "dgp"}, {"origin", {3, 1, 1.2}}, {"direction", {0, 1, 0}}, {"target", {0, 0.35}}});
+    const std::string p = onlyProblem(s);
+    EXPECT_EQ(p.rfind("/samplers/1: a dgp sampler surveys each luminaire and sun disk as a glare source of its own: 1 luminaire "
+                      "and ", 0), 0u) << p;
+    EXPECT_NE(p.find(" sun disks (one per daylight step with the sun up) exceed the limit of 1024; a longer \"step_minutes\" "
+                     "or a shorter period has fewer"), std::string::npos) << p;
+    s["daylight"]["step_minutes"] = 1;  // about 650 disks
+    test::TempDir dir;
+    EXPECT_TRUE(test::loadProblems(s.dump(), dir).empty());
+}
+
 TEST(SceneLimits, OnlyRegularFilesOfBoundedSize) {
     test::TempDir dir;
     auto fifo = dir.path() / "scene.json";

@@ -103,6 +103,32 @@ TEST(UgrSampler, LuminairesBehindOrBelowTheEyeDoNotCount) {
     EXPECT_EQ(above.measure(500).samplers[0].value, 0);
 }
 
+// Every luminaire is a source of its own however many there are: the panel of
+// OneLuminaire listed after 40 others behind the eye (which add nothing to what it sees)
+// gives the same UGR and DGP as alone. Source slots were once 32: it read UGR 0.
+TEST(GlareSamplers, EveryLuminaireCountsHoweverMany) {
+    using T = OneLuminaire;
+    auto crowd = [](std::shared_ptr<const SamplerType> sampler) {
+        test::SceneBuilder b;
+        b.uniformSky(T::kSky);
+        for (int k = 0; k < 40; ++k)
+            b.emitter("behind" + std::to_string(k), rectEmitter({-2, 0.2 * k - 4, 1}, {0, 0, -1}, {0, 1, 0}, {0.1, 0.1}), 1000);
+        b.emitter("panel", rectEmitter({2, 0, 1}, {0, 0, -1}, {0, 1, 0}, {T::kSide, T::kSide}), T::flux());
+        return b.sampler("eye", sampler, 0, 100).build();
+    };
+    const double sum = T::kLuminance * T::kLuminance * T::omega() / (T::P() * T::P());
+    test::SceneLab ugr(crowd(ugrSampler({0, 0, 0}, {1, 0, 0})));
+    SamplerResult u = ugr.measure(2000).samplers[0];
+    EXPECT_NEAR(u.value, 8 * std::log10(0.25 / (T::indirect() / kPi) * sum), 4 * u.standardError + 0.05) << u.standardError;
+    ASSERT_TRUE(u.glare.has_value());
+    ASSERT_EQ(u.glare->sources.size(), 1u);
+    EXPECT_EQ(u.glare->sources[0].index, 40);
+    test::SceneLab dgp(crowd(dgpSampler({0, 0, 0}, {1, 0, 0}, 2000)));
+    SamplerResult d = dgp.measure(2000).samplers[0];
+    const double Ev = T::indirect() + T::kLuminance * T::omega() * T::cosSigma();
+    EXPECT_NEAR(d.value, 5.87e-5 * Ev + 0.159 + 0.092 * std::log10(1 + sum / std::pow(Ev, 1.87)), 4 * d.standardError + 2e-3);
+}
+
 TEST(DgpSampler, OneLuminaireAgainstTheFormula) {
     using T = OneLuminaire;
     test::SceneLab lab(T::scene(dgpSampler({0, 0, 0}, {1, 0, 0}, 2000)));
@@ -180,18 +206,20 @@ TEST(DgpSampler, TheSunIsOneSourceNotTwo) {
 TEST(DgpSampler, AdaptiveStopsOnlyTheCellsSurelyBelowTheThreshold) {
     auto type = dgpSampler({0, 0, 0}, {1, 0, 0}, 2000, 2);
     auto placed = type->place(Transform());
-    ASSERT_EQ(placed->items(), PlacedGlare::kFirstCell + 4);
+    placed->setSources(1, 0);  // one luminaire: items 1-6
+    const int first = 1 + PlacedGlare::kQuantities;
+    ASSERT_EQ(placed->items(), first + 4);
     ItemEstimates e(placed->items(), 1);
     const double cell[4][2] = {{100, 110}, {5000, 5200}, {1900, 2050}, {0, 4000}};  // two paths each
     for (int c = 0; c < 4; ++c)
-        for (int k = 0; k < 2; ++k) e.cell(PlacedGlare::kFirstCell + c, 0, k).add(cell[c][k]);
+        for (int k = 0; k < 2; ++k) e.cell(first + c, 0, k).add(cell[c][k]);
     const std::vector<char> keep = placed->stillNeeded(e, 3, 0, kInf);
     EXPECT_TRUE(keep[0]);  // E_v
     EXPECT_TRUE(keep[1]);  // a slot
-    EXPECT_FALSE(keep[size_t(PlacedGlare::kFirstCell)]);  // 105 +- 5: surely dark
-    EXPECT_TRUE(keep[size_t(PlacedGlare::kFirstCell + 1)]);  // bright
-    EXPECT_TRUE(keep[size_t(PlacedGlare::kFirstCell + 2)]);  // near the threshold
-    EXPECT_TRUE(keep[size_t(PlacedGlare::kFirstCell + 3)]);  // too noisy to tell
+    EXPECT_FALSE(keep[size_t(first)]);  // 105 +- 5: surely dark
+    EXPECT_TRUE(keep[size_t(first + 1)]);  // bright
+    EXPECT_TRUE(keep[size_t(first + 2)]);  // near the threshold
+    EXPECT_TRUE(keep[size_t(first + 3)]);  // too noisy to tell
 }
 
 TEST(GlareSamplers, DeterministicForASeed) {

@@ -104,7 +104,7 @@ TEST(LightBudget, EachBounceIsWhatOneMoreSurfaceVertexAdds) {
     b.sampler("desk", planarSampler({2, 2, 0.8}, {0, 0, 1}, {0, 1, 0}, {0.1, 0.1}, {2, 2}), 0, kInf);
     b.daylight(d);
     test::SceneLab lab(b.build());
-    const auto placed = placeSampler(lab.scene.samplers[0], *lab.rt);
+    const auto placed = placeSampler(lab.scene.samplers[0], *lab.tracer);
     auto tracerCutAt = [&](int depth) {
         PathTracerOptions o;
         o.maxDepth = depth;

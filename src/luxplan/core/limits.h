@@ -70,6 +70,10 @@ inline constexpr std::int64_t kMaxSamplerPoints = 65536;
 // A directional sampler's strata per side: each stratum's paths reach every other
 // stratum, so its estimates grow as strata^4 (16: 79 MB in all; 32: 600 MB).
 inline constexpr int kMaxDirectionalStrata = 32;
+// The glare sources a "ugr" eye surveys (every luminaire of the scene) or a "dgp" eye
+// (every luminaire and every sun disk: one per daylight step with the sun up), each
+// with six estimates of its own.
+inline constexpr std::int64_t kMaxGlareSources = 1024;
 
 // ---- daylight ----
 // Instants from..to every step_minutes (counted in floating point before any

@@ -210,7 +210,7 @@ DaylightEnvironment buildDaylight(const DaylightParams& p, const Site& site, con
     // One sharp disk per instant with the sun up, carrying that instant's share of the average.
     std::vector<SunDisk> disks;
     for (const DaylightInstant& i : instants) {
-        if (!i.hasSunPosition || i.sunAltitudeDeg < 0 || !(i.sunNormalIlluminanceLx > 0)) continue;
+        if (!i.sunUp()) continue;
         SunDisk s;
         s.direction = i.sunDirection;
         s.altitudeDeg = i.sunAltitudeDeg;

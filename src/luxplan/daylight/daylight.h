@@ -42,6 +42,8 @@ struct DaylightInstant {
     double sunAltitudeDeg = 0, sunAzimuthDeg = 0;  // apparent altitude; azimuth from true north
     Vec3 sunDirection;                             // scene coordinates
     double sunNormalIlluminanceLx = 0;
+    // Whether the instant has a sun disk: its sun up and shining.
+    bool sunUp() const { return hasSunPosition && sunAltitudeDeg >= 0 && sunNormalIlluminanceLx > 0; }
 };
 
 // The instants averaged: from, from + step, ... up to and including `to` (when it falls on

@@ -1211,6 +1211,34 @@ private:
         if (triangles > limits::kMaxSceneTriangles)
             sink_.error("", "the scene's " + std::to_string(triangles) + " triangles exceed the limit of " +
                                 std::to_string(limits::kMaxSceneTriangles));
+        checkGlareSources();
+    }
+
+    // A glare eye surveys every luminaire, and a DGP eye every sun disk, as a source of
+    // its own (lightsamplers/glare_sources.h).
+    void checkGlareSources() {
+        const int64_t luminaires = int64_t(scene_.emitters.size());
+        std::optional<int64_t> sunDisks;
+        for (const LightSamplerSpec& s : scene_.samplers) {
+            const std::string type = s.type->name();
+            if (type != "ugr" && type != "dgp") continue;
+            int64_t sources = luminaires;
+            std::string what = std::to_string(luminaires) + (luminaires == 1 ? " luminaire" : " luminaires");
+            if (type == "dgp") {
+                if (!sunDisks) {
+                    sunDisks = 0;
+                    if (scene_.daylight)
+                        for (const DaylightInstant& i : daylightInstants(*scene_.daylight, scene_.site)) *sunDisks += i.sunUp();
+                }
+                sources += *sunDisks;
+                what += " and " + std::to_string(*sunDisks) + " sun disks (one per daylight step with the sun up)";
+            }
+            if (sources > limits::kMaxGlareSources)
+                sink_.error(s.jsonPath, "a " + type + " sampler surveys each " + (type == "dgp" ? "luminaire and sun disk" : "luminaire") +
+                                            " as a glare source of its own: " + what + " exceed the limit of " +
+                                            std::to_string(limits::kMaxGlareSources) +
+                                            (type == "dgp" && *sunDisks > 0 ? "; a longer \"step_minutes\" or a shorter period has fewer" : ""));
+        }
     }
 
     void buildVoxels() {

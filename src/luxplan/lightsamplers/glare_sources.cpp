@@ -81,10 +81,10 @@ Vec3 DirectionGrid::direction(int cell, Vec2 u) const {
 void PlacedGlare::sample(const PathTracer& tracer, int item, PathSamples& samples, RayStats& stats, PathContributions& out) const {
     if (item == 0) {
         out.add(tracer.sample(CosineSensor(eye_, forward_), samples, stats));
-    } else if (item >= kFirstCell) {
+    } else if (item >= firstCell()) {
         // The sky, the ground outside and surfaces through a cell; the luminaires and
         // sun disks a ray meets first are their slots' sources.
-        const Vec3 w = frame_.toWorld(grid_->direction(item - kFirstCell, samples.get2D(PathSamples::Direction)));
+        const Vec3 w = frame_.toWorld(grid_->direction(item - firstCell(), samples.get2D(PathSamples::Direction)));
         out.add(tracer.sample(RaySensor(Ray{eye_, w}, true), samples, stats));
     } else {
         sampleSlot(tracer, item, samples, stats, out);
@@ -131,11 +131,11 @@ void PlacedGlare::sampleSlot(const PathTracer& tracer, int item, PathSamples& sa
     }
 }
 
-GlareSurvey PlacedGlare::survey(const std::vector<double>& m, int luminaires) const {
+GlareSurvey PlacedGlare::survey(const std::vector<double>& m) const {
     GlareSurvey s;
     s.verticalIlluminance = m.empty() ? 0 : m[0];
     double direct = 0;
-    for (int slot = 0; slot < kSlots; ++slot) {
+    for (int slot = 0; slot < slots_; ++slot) {
         const size_t b = 1 + size_t(slot) * kQuantities;
         if (b + kQuantities > m.size()) break;
         const double omega = m[b];
@@ -147,7 +147,7 @@ GlareSurvey PlacedGlare::survey(const std::vector<double>& m, int luminaires) co
         g.direction = length(c) > 0 ? normalize(c) : forward_;
         g.positionIndex = guthIndexOf(forward_, g.direction);
         g.index = slot;
-        g.kind = slot < luminaires ? GlareSource::Kind::Luminaire : GlareSource::Kind::Sun;
+        g.kind = slot < luminaires_ ? GlareSource::Kind::Luminaire : GlareSource::Kind::Sun;
         if (metric_ == Metric::Dgp && g.luminance <= threshold_) continue;
         direct += m[b + 2];
         s.sources.push_back(g);
@@ -162,8 +162,9 @@ GlareSurvey PlacedGlare::survey(const std::vector<double>& m, int luminaires) co
 
 void PlacedGlare::addRegions(const std::vector<double>& m, std::vector<GlareSource>& sources, double& direct) const {
     const int n = grid_->cellsPerSide();
-    if (m.size() < size_t(kFirstCell + grid_->cells())) return;
-    auto bright = [&](int i, int j) { return m[size_t(kFirstCell + j * n + i)] > threshold_; };
+    const int first = firstCell();
+    if (m.size() < size_t(first + grid_->cells())) return;
+    auto bright = [&](int i, int j) { return m[size_t(first + j * n + i)] > threshold_; };
     std::vector<int> region(size_t(grid_->cells()), -1);
     std::vector<int> stack;
     int regions = 0;
@@ -178,7 +179,7 @@ void PlacedGlare::addRegions(const std::vector<double>& m, std::vector<GlareSour
         while (!stack.empty()) {
             const int c = stack.back();
             stack.pop_back();
-            const double L = m[size_t(kFirstCell + c)];
+            const double L = m[size_t(first + c)];
             sumL += L, sumE += L * grid_->centroid(c).z, sumDir += grid_->centroid(c), ++count;
             for (int dj = -1; dj <= 1; ++dj)
                 for (int di = -1; di <= 1; ++di) {
@@ -204,7 +205,7 @@ void PlacedGlare::addRegions(const std::vector<double>& m, std::vector<GlareSour
 
 std::vector<char> PlacedGlare::stillNeeded(const ItemEstimates& e, double z, double, double) const {
     std::vector<char> keep(size_t(e.items()), 1);
-    for (int k = kFirstCell; k < e.items(); ++k) {
+    for (int k = firstCell(); k < e.items(); ++k) {
         const Estimate x = e.of(k);
         keep[size_t(k)] = x.value + z * x.standardError >= threshold_;
     }
@@ -218,10 +219,10 @@ Estimate PlacedGlare::combine(const ItemEstimates& e) const {
         return m;
     };
     Estimate r;
-    r.value = survey(meansOf(-1), kSlots).value;
+    r.value = survey(meansOf(-1)).value;
     std::vector<double> folds;
     for (int g = 0; g < ItemEstimates::kFolds; ++g)
-        if (e.pathsInFold(0, g) > 0) folds.push_back(survey(meansOf(g), kSlots).value);
+        if (e.pathsInFold(0, g) > 0) folds.push_back(survey(meansOf(g)).value);
     if (folds.size() >= 2) {
         double mean = 0, var = 0;
         for (double v : folds) mean += v / double(folds.size());

@@ -53,21 +53,28 @@ private:
 Frame eyeFrame(const Vec3& forward);
 
 // The placed "ugr" or "dgp" sampler. Items: 0 the vertical illuminance at the eye,
-// then per source slot (emitters first, then sun disks, up to kSlots) its visible
-// solid angle, L omega, direct vertical illuminance and omega-weighted direction;
-// then, for DGP, each cell of its direction grid: the mean luminance through the cell
-// but for the luminaires and sun disks (surveyed by their slots). Cells brighter than
-// the threshold, joined to their eight neighbours, are the region sources.
+// then per source slot (every luminaire of the scene, then, for DGP, every sun disk:
+// setSources) its visible solid angle, L omega, direct vertical illuminance and
+// omega-weighted direction; then, for DGP, each cell of its direction grid: the mean
+// luminance through the cell but for the luminaires and sun disks (surveyed by their
+// slots). Cells brighter than the threshold, joined to their eight neighbours, are the
+// region sources.
 class PlacedGlare final : public PlacedSampler {
 public:
-    static constexpr int kSlots = 32, kQuantities = 6, kFirstCell = 1 + kSlots * kQuantities;
+    static constexpr int kQuantities = 6;
     enum class Metric { Ugr, Dgp };
     PlacedGlare(Metric metric, Vec3 eye, Vec3 forward, double thresholdNits,
                 std::shared_ptr<const DirectionGrid> grid = nullptr)
         : metric_(metric), eye_(eye), forward_(forward), frame_(eyeFrame(forward)), threshold_(thresholdNits),
           grid_(std::move(grid)) {}
 
-    int items() const override { return kFirstCell + (grid_ ? grid_->cells() : 0); }
+    void setSources(int luminaires, int sunDisks) override {
+        luminaires_ = luminaires;
+        slots_ = luminaires + (metric_ == Metric::Dgp ? sunDisks : 0);
+    }
+    // The first direction cell's item.
+    int firstCell() const { return 1 + slots_ * kQuantities; }
+    int items() const override { return firstCell() + (grid_ ? grid_->cells() : 0); }
     void sample(const PathTracer& tracer, int item, PathSamples& samples, RayStats& stats, PathContributions& out) const override;
     // The metric from all folds; its error by the jackknife over the folds.
     Estimate combine(const ItemEstimates& items) const override;
@@ -75,10 +82,8 @@ public:
     // upper bound is): they are no source and E_v is item 0's.
     std::vector<char> stillNeeded(const ItemEstimates& items, double z, double targetMin, double targetMax) const override;
     SamplerDrawing drawing() const override;
-    // The survey from item means (points of a SamplerResult, in item order); the first
-    // `luminaires` slots are the scene's emitters, the rest sun disks (which only
-    // labels the sources: the value does not depend on it).
-    GlareSurvey survey(const std::vector<double>& itemMeans, int luminaires) const;
+    // The survey from item means (points of a SamplerResult, in item order).
+    GlareSurvey survey(const std::vector<double>& itemMeans) const;
 
 private:
     void sampleSlot(const PathTracer& tracer, int item, PathSamples& samples, RayStats& stats, PathContributions& out) const;
@@ -91,6 +96,7 @@ private:
     Frame frame_;  // s right, t up, n forward
     double threshold_;
     std::shared_ptr<const DirectionGrid> grid_;  // DGP only
+    int luminaires_ = 0, slots_ = 0;
 };
 
 // Constructed in C++ (tests): a normalized direction, which must not be zero.

@@ -26,7 +26,7 @@ std::vector<SamplerBudget> measureLightBudgets(const PathTracer& tracer, int pat
     };
     std::vector<Work> work;
     for (size_t k = 0; k < scene.samplers.size(); ++k) {
-        placed.push_back(placeSampler(scene.samplers[k], rt));
+        placed.push_back(placeSampler(scene.samplers[k], tracer));
         for (int i = 0; i < placed.back()->items(); ++i) work.push_back({k, i});
     }
     std::vector<LightBudget> sums(work.size());

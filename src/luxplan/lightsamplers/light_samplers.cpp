@@ -99,8 +99,12 @@ Estimate PlacedSampler::combine(const ItemEstimates& items) const {
     return e;
 }
 
-std::unique_ptr<PlacedSampler> placeSampler(const LightSamplerSpec& s, const EmbreeScene& rt) {
-    return s.type->place(s.entity >= 0 ? rt.worldFromEntity(s.entity) : Transform());
+std::unique_ptr<PlacedSampler> placeSampler(const LightSamplerSpec& s, const PathTracer& tracer) {
+    const EmbreeScene& rt = tracer.rayTracer();
+    std::unique_ptr<PlacedSampler> placed = s.type->place(s.entity >= 0 ? rt.worldFromEntity(s.entity) : Transform());
+    const DaylightEnvironment* daylight = tracer.daylight();
+    placed->setSources(int(tracer.emitters().size()), daylight ? int(daylight->sunDisks().size()) : 0);
+    return placed;
 }
 
 namespace {
@@ -166,7 +170,7 @@ MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& op
     std::vector<WorkItem> work;
     std::vector<size_t> firstWork;  // per sampler
     for (size_t k = 0; k < samplers; ++k) {
-        placed.push_back(placeSampler(scene.samplers[k], rt));
+        placed.push_back(placeSampler(scene.samplers[k], tracer));
         firstWork.push_back(work.size());
         for (int i = 0; i < placed.back()->items(); ++i) work.push_back({int(k), i});
     }
@@ -319,7 +323,7 @@ MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& op
         Estimate value = placed[k]->combine(e);
         r.value = value.value;
         r.standardError = value.standardError;
-        if (const auto* glare = dynamic_cast<const PlacedGlare*>(placed[k].get())) r.glare = glare->survey(r.points, int(tracer.emitters().size()));
+        if (const auto* glare = dynamic_cast<const PlacedGlare*>(placed[k].get())) r.glare = glare->survey(r.points);
     }
     return result;
 }

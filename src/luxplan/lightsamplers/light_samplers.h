@@ -15,8 +15,9 @@
 
 namespace luxplan {
 
-// A sampler placed for the current layout of `rt`.
-std::unique_ptr<PlacedSampler> placeSampler(const LightSamplerSpec& sampler, const EmbreeScene& rt);
+// A sampler placed for the current layout of the tracer's scene, told its luminaires
+// and sun disks.
+std::unique_ptr<PlacedSampler> placeSampler(const LightSamplerSpec& sampler, const PathTracer& tracer);
 
 struct MeasureOptions {
     int pathsPerPoint = 1000;  // exactly, or at most when adaptive

@@ -132,6 +132,9 @@ enum ItemNeed : char {
 class PlacedSampler {
 public:
     virtual ~PlacedSampler() = default;
+    // The scene's luminaires and sun disks, told once before items() is asked (by
+    // placeSampler): a glare eye surveys each as a source of its own.
+    virtual void setSources(int /*luminaires*/, int /*sunDisks*/) {}
     // How many estimates it is made of: its points, or its strata.
     virtual int items() const = 0;
     // Traces one path for `item` and adds what it contributes, in the type's unit.
