@@ -74,6 +74,11 @@ TEST(LayoutIo, ErrorsNameThePath) {
           "/entities/set/region: position (9, 9) with rotation 0 lies outside region 0");
     check(R"({"entities": {"set": {"place": [1,1]}}})",
           "/entities/set/place: unknown key \"place\" (known keys: position, rotation, region)");
+    // An entity moves on the plane of its scene position's z (a desk at z 2.5 went
+    // through the ceiling and read 0 lx).
+    check(R"({"entities": {"set": {"position": [2,2,2.5], "rotation": 0, "region": 0}}})",
+          "/entities/set/position/2: z 2.5 is not the plane entity \"set\" moves on (z = 0, its position's in the scene)");
+    EXPECT_NO_THROW(io::readLayout(dir.write("layout.json", R"({"entities": {"set": {"position": [2,2]}}})"), s));
 }
 
 }  // namespace

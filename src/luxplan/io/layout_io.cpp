@@ -1,5 +1,6 @@
 #include <luxplan/io/layout_io.h>
 
+#include <cmath>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -60,6 +61,13 @@ Layout readEntities(DiagnosticSink& sink, const Json& root, const Scene& scene) 
                     auto n = readNumbers(sink, pos, f.at("position"), pos.is_array() && pos.size() == 2 ? 2 : 3,
                                          coordinateRange());
                     if (n) p.position = Vec3((*n)[0], (*n)[1], n->size() == 3 ? (*n)[2] : e.position.z);
+                    // An entity moves on the plane of its scene position's z.
+                    if (n && !(std::abs(p.position.z - e.position.z) <= 1e-9 * (1 + std::abs(e.position.z)))) {
+                        sink.error(pointer(f.at("position"), 2), "z " + formatNumber(p.position.z) + " is not the plane entity \"" + name +
+                                                                     "\" moves on (z = " + formatNumber(e.position.z) +
+                                                                     ", its position's in the scene)");
+                        p.position.z = e.position.z;
+                    }
                 }
                 p.rotationDeg = f.number("rotation", p.rotationDeg, json::rotationRange());
                 auto region = f.integer("region", Range::closed(0, double(e.regions.size()) - 1));
