@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.h"
+#include "option_checks.h"
 #include <luxplan/constraints/geometry_cost.h>
 #include <luxplan/constraints/penalty.h>
 #include <luxplan/daylight/datetime.h>
@@ -36,7 +37,7 @@ std::string errorText(double error, int paths, int digits) {
 struct MeasureArgs {
     std::string scene, layout;
     int paths = 0;
-    int64_t seed = -1;
+    std::optional<uint64_t> seed;
     bool json = false, flat = false, adaptive = false;
     std::string sampling = "sobol";
     std::string sunPatches = "on";
@@ -74,7 +75,7 @@ void runMeasure(const MeasureArgs& args) {
     MeasureOptions options;
     options.pathsPerPoint = args.paths > 0 ? args.paths : scene.optimizer.pathsPerPoint;
     warnFewPaths(scene, options.pathsPerPoint, args.paths > 0);
-    options.seed = args.seed >= 0 ? uint64_t(args.seed) : scene.optimizer.seed;
+    options.seed = args.seed.value_or(scene.optimizer.seed);
     options.adaptive = args.adaptive;
     options.lowDiscrepancy = args.sampling == "sobol";
     MeasureResult result = measureSamplers(tracer, options);
@@ -190,9 +191,9 @@ void registerMeasureCommand(CLI::App& app, int& threads) {
     cmd->add_option("scene", args->scene, "Scene JSON file")->required();
     cmd->add_option("--layout", args->layout, "layout.json to measure instead of the scene's placement");
     cmd->add_option("--paths", args->paths, "Paths per sampler point (default: optimizer.paths_per_point)")
-        ->check(CLI::PositiveNumber);
-    cmd->add_option("--seed", args->seed, "Random seed (default: optimizer.seed)")->check(CLI::NonNegativeNumber);
-    cmd->add_option("--threads", threads, "Worker threads (default: all cores)")->check(CLI::NonNegativeNumber);
+        ->check(wholeNumber(1));
+    addSeedOption(cmd, args->seed);
+    cmd->add_option("--threads", threads, "Worker threads (default: all cores)")->check(wholeNumber(0));
     cmd->add_flag("--json", args->json, "Print JSON with per-point values");
     cmd->add_option("--at", args->at,
                     "One instant of daylight (ISO 8601 with its UTC offset, e.g. 2026-03-20T16:30+02:00) instead of the "

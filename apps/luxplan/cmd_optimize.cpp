@@ -16,6 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.h"
+#include "option_checks.h"
 #include "picture_progress.h"
 #include <luxplan/core/atomic_file.h>
 #include <luxplan/core/error.h>
@@ -64,7 +65,7 @@ private:
 struct OptimizeArgs {
     std::string scene, out;
     int iterations = -1, paths = 0, spp = 0, inner = -1, snapshots = 0;
-    int64_t seed = -1;
+    std::optional<uint64_t> seed;
     bool flat = false, quiet = false, noPictures = false, fixedPaths = false, fullEvaluation = false,
          freshNoise = false, noiseBlind = false, nested = false, cycle = false, singleTest = false;
     std::string sampling = "sobol";
@@ -132,7 +133,7 @@ int runOptimize(const OptimizeArgs& args) {
 
     OptimizerOptions options = optimizerOptions(original);
     if (args.iterations >= 0) options.iterations = args.iterations;
-    if (args.seed >= 0) options.seed = uint64_t(args.seed);
+    if (args.seed) options.seed = *args.seed;
     if (args.flat) options.hierarchy = Hierarchy::Flat;
     if (args.noiseBlind) options.noiseAware = false;
     if (args.singleTest) options.delayedAcceptance = false;
@@ -259,12 +260,12 @@ void registerOptimizeCommand(CLI::App& app, int& threads) {
     cmd->add_option("scene", args->scene, "Scene JSON file")->required();
     cmd->add_option("-o,--out", args->out, "Output folder (layout.json, report.json, trace.csv)")->required();
     cmd->add_option("--iterations", args->iterations, "Iterations (default: optimizer.iterations)")
-        ->check(CLI::NonNegativeNumber);
-    cmd->add_option("--seed", args->seed, "Random seed (default: optimizer.seed)")->check(CLI::NonNegativeNumber);
+        ->check(wholeNumber(0));
+    addSeedOption(cmd, args->seed);
     cmd->add_option("--threads", threads, "Worker threads for light transport (default: all cores)")
-        ->check(CLI::NonNegativeNumber);
+        ->check(wholeNumber(0));
     cmd->add_option("--paths", args->paths, "Paths per sampler point during the search (default: optimizer.paths_per_point, or 64 if the scene does not give it)")
-        ->check(CLI::PositiveNumber);
+        ->check(wholeNumber(1));
     cmd->add_flag("--fixed-paths", args->fixedPaths,
                   "Trace exactly --paths per point for every sampler (default: a sampler stops early once its "
                   "penalty is settled, --paths being the most)");
@@ -307,7 +308,7 @@ void registerOptimizeCommand(CLI::App& app, int& threads) {
         ->check(CLI::Range(0, 1000));
     cmd->add_flag("-q,--quiet", args->quiet, "No progress line");
     cmd->add_flag("--no-pictures", args->noPictures, "Skip the pictures, scene.glb and report.html");
-    cmd->add_option("--spp", args->spp, "Samples per pixel of render.png (default 16)")->check(CLI::PositiveNumber);
+    cmd->add_option("--spp", args->spp, "Samples per pixel of render.png (default 16)")->check(wholeNumber(1));
     cmd->callback([args] {
         namingScene(args->scene, [&] {
             if (int signal = runOptimize(*args)) throw CLI::RuntimeError(128 + signal);

@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "commands.h"
+#include "option_checks.h"
 #include "picture_progress.h"
 #include <luxplan/constraints/penalty.h>
 #include <luxplan/core/limits.h>
@@ -20,7 +21,7 @@ namespace {
 struct PictureArgs {
     std::string scene, layout, out;
     int width = 0, height = 0, spp = 0, paths = 0;
-    int64_t seed = -1;
+    std::optional<uint64_t> seed;
     double cell = 0;
     int cellPaths = 0;
     bool raw = false;
@@ -34,20 +35,20 @@ void addPictureOptions(CLI::App* cmd, PictureArgs& args, int& threads) {
     cmd->add_option("scene", args.scene, "Scene JSON file")->required();
     cmd->add_option("--layout", args.layout, "layout.json to show instead of the scene's placement");
     cmd->add_option("--width", args.width, "Render width in pixels (default " + std::to_string(defaults.renderWidth) + ")")
-        ->check(CLI::PositiveNumber);
+        ->check(wholeNumber(1));
     cmd->add_option("--height", args.height, "Render height in pixels (default " + std::to_string(defaults.renderHeight) + ")")
-        ->check(CLI::PositiveNumber);
+        ->check(wholeNumber(1));
     cmd->add_option("--spp", args.spp, "Render samples per pixel (default " + std::to_string(defaults.renderSamplesPerPixel) + ")")
-        ->check(CLI::PositiveNumber);
+        ->check(wholeNumber(1));
     cmd->add_flag("--raw", args.raw, "render.png without the denoising filter (the path tracer's pixel means)");
     cmd->add_option("--paths", args.paths, "Paths per sampler point (default " + std::to_string(defaults.samplerPaths) + ")")
-        ->check(CLI::PositiveNumber);
-    cmd->add_option("--cell", args.cell, "Work-plane grid cell in metres (default 0.25)")->check(CLI::PositiveNumber);
+        ->check(wholeNumber(1));
+    cmd->add_option("--cell", args.cell, "Work-plane grid cell in metres (default 0.25)")->check(positiveNumber());
     cmd->add_option("--cell-paths", args.cellPaths, "Illuminance samples per work-plane cell (default " +
                                                         std::to_string(defaults.cellPaths) + ")")
-        ->check(CLI::PositiveNumber);
-    cmd->add_option("--threads", threads, "Worker threads (default: all cores)")->check(CLI::NonNegativeNumber);
-    cmd->add_option("--seed", args.seed, "Random seed (default: optimizer.seed)")->check(CLI::NonNegativeNumber);
+        ->check(wholeNumber(1));
+    cmd->add_option("--threads", threads, "Worker threads (default: all cores)")->check(wholeNumber(0));
+    addSeedOption(cmd, args.seed);
     auto* camera = cmd->add_option("--camera", args.camera, "render.png from the scene's camera of that name (\"cameras\")");
     auto* eye = cmd->add_option("--eye", args.eye, "render.png from this point: X,Y,Z in metres (with --target)")
                     ->delimiter(',')->expected(3);
@@ -90,7 +91,7 @@ OutputOptions outputOptions(const PictureArgs& args, const Scene& scene) {
     if (args.paths > 0) o.samplerPaths = args.paths;
     if (args.cell > 0) o.cellSize = args.cell;
     if (args.cellPaths > 0) o.cellPaths = args.cellPaths;
-    o.seed = args.seed >= 0 ? uint64_t(args.seed) : scene.optimizer.seed;
+    o.seed = args.seed.value_or(scene.optimizer.seed);
     o.camera = chosenCamera(args, scene);
     return o;
 }

@@ -29,7 +29,8 @@ int main(int argc, char** argv) {
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
-        return app.exit(e);
+        // --help and --version exit 0; a mistake on the command line, 2 (1: the input).
+        return app.exit(e) == 0 ? 0 : 2;
     } catch (const luxplan::SceneError& e) {
         std::cerr << e.what() << "\n";
         return 1;

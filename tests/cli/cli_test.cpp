@@ -57,8 +57,37 @@ TEST(Cli, InfoSummarizesTheScene) {
 }
 
 TEST(Cli, UnknownCommandFails) {
-    EXPECT_NE(run("frobnicate").exitCode, 0);
-    EXPECT_NE(run("validate").exitCode, 0);
+    EXPECT_EQ(run("frobnicate").exitCode, 2);
+    EXPECT_EQ(run("validate").exitCode, 2);
+    EXPECT_EQ(run("--help").exitCode, 0);
+}
+
+// Each option's mistake in words, exit 2; a seed up to 2^64 - 1 read exactly (CLI11's
+// int64 once turned 18446744073709551615 into 9223372036854775807 silently).
+TEST(Cli, OptionValuesAreCheckedAndSeedsReadExactly) {
+    auto expectRefused = [](const std::string& args, const std::string& message) {
+        Result r = run("measure " + kDemo + " " + args);
+        EXPECT_EQ(r.exitCode, 2) << args << "\n" << r.output;
+        EXPECT_NE(r.output.find(message), std::string::npos) << args << "\n" << r.output;
+    };
+    expectRefused("--paths 0", "--paths: must be at least 1, got 0");
+    expectRefused("--paths abc", "--paths: expected a whole number, got abc (at least 1)");
+    expectRefused("--paths 3000000000", "--paths: must be at most 2147483647, got 3000000000");
+    expectRefused("--threads -1", "--threads: expected a whole number, got -1 (at least 0)");
+    expectRefused("--seed 18446744073709551616", "--seed: expected a whole number up to 18446744073709551615, got 18446744073709551616");
+    expectRefused("--seed 1e3", "--seed: expected a whole number, got 1e3");
+    Result r = run("render " + kDemo + " --cell 0 -o x");
+    EXPECT_EQ(r.exitCode, 2) << r.output;
+    EXPECT_NE(r.output.find("--cell: must be a finite number > 0, got 0"), std::string::npos) << r.output;
+    test::TempDir dir;
+    auto file = dir.write("lit.json", R"({"luxplan": 1, "materials": {"m": {"type": "diffuse", "reflectance": 0.5}},
+        "luminaires": [{"name": "l", "shape": "rect", "center": [0,0,3], "normal": [0,0,-1], "size": [1,1], "flux_lm": 1000}],
+        "samplers": [{"name": "p", "type": "planar", "center": [0,0,1], "size": [1,1], "target": [10, 500]}]})");
+    r = run("measure " + file.string() + " --paths 2 --seed 18446744073709551615 --json");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_EQ(nlohmann::json::parse(r.output)["seed"].get<uint64_t>(), 18446744073709551615ull);
+    Result other = run("measure " + file.string() + " --paths 2 --seed 9223372036854775807 --json");
+    EXPECT_NE(nlohmann::json::parse(other.output)["samplers"][0]["value"], nlohmann::json::parse(r.output)["samplers"][0]["value"]);
 }
 
 }  // namespace
