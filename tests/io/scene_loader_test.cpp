@@ -303,6 +303,14 @@ TEST(SceneLoader, DuplicateNames) {
     s["samplers"][0]["name"] = "desk1.top";
     EXPECT_EQ(onlyProblem(s),
               "/samplers/0/name: names must be non-empty and must not contain '.' (it separates an entity's path from the name)");
+    // An empty entity name once gave its sampler the name ".top" and the layout a key "".
+    s = validScene();
+    s["geometry"][0]["name"] = "";
+    EXPECT_EQ(onlyProblem(s), "/geometry/0/name: geometry names must be non-empty");
+    s = validScene();
+    s["entities"][0]["name"] = "";
+    EXPECT_EQ(onlyProblem(s),
+              "/entities/0/name: entity names must be non-empty and must not contain '.' (it separates levels in dotted paths)");
 }
 
 TEST(SceneLoader, OpeningsMustFitAndNotOverlap) {

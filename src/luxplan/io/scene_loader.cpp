@@ -443,6 +443,7 @@ private:
         StaticItem item;
         item.jsonPath = path;
         item.name = f.string("name", true).value_or("");
+        if (f.has("name") && f.get("name").is_string() && item.name.empty()) f.error("name", "geometry names must be non-empty");
         item.invisible = f.boolean("invisible").value_or(false);
         std::optional<StaticKind> kind;
         int count = 0;
@@ -757,8 +758,8 @@ private:
             e.jsonPath = path;
             e.parent = parent;
             e.name = f.string("name", true).value_or("#" + std::to_string(index));
-            if (e.name.find('.') != std::string::npos)
-                f.error("name", "entity names must not contain '.' (it separates levels in dotted paths)");
+            if (e.name.empty() || e.name.find('.') != std::string::npos)
+                f.error("name", "entity names must be non-empty and must not contain '.' (it separates levels in dotted paths)");
             e.path = parent >= 0 ? scene_.entities[parent].path + "." + e.name : e.name;
             if (f.has("position")) {
                 const Json& p = f.get("position");
