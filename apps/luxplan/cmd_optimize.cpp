@@ -172,9 +172,21 @@ int runOptimize(const OptimizeArgs& args) {
 
     // With lighting weight 0 the chain never calls it, but the result's report does.
     Optimizer optimizer(scene, options, lighting.get());
-    optimizer.initialize();
-    Layout start = optimizer.current();  // the comparison picture's left side
     bool tty = !args.quiet && isatty(STDERR_FILENO);
+    bool drew = false;
+    auto lastLine = std::chrono::steady_clock::now();
+    auto drawing = [&](int drawn, int most) {
+        // A start that keeps failing the geometric rules (furniture that cannot fit):
+        // its draws can take seconds in all. Without a terminal, a line every 5 s.
+        if (!tty && drew && std::chrono::steady_clock::now() - lastLine < std::chrono::seconds(5)) return;
+        lastLine = std::chrono::steady_clock::now();
+        drew = true;
+        std::cerr << (tty ? "\r" : "") << "drawing a start layout: " << drawn << " of at most " << most
+                  << " draws, none within the geometric rules' hard limits yet" << (tty ? "\033[K" : "\n") << std::flush;
+    };
+    optimizer.initialize(args.quiet ? std::function<void(int, int)>() : drawing);
+    if (drew && tty) std::cerr << "\n";
+    Layout start = optimizer.current();  // the comparison picture's left side
     ProgressCallback progress;
     if (!args.quiet) progress = [tty](const Progress& p) { showProgress(p, tty); };
     OptimizerResult result = optimizer.run(progress, &interrupted);

@@ -28,6 +28,8 @@ int main(int argc, char** argv) {
     });
     try {
         app.parse(argc, argv);
+    } catch (const CLI::RuntimeError& e) {
+        return e.get_exit_code();  // a run stopped by a signal: 128 + the signal
     } catch (const CLI::ParseError& e) {
         // --help and --version exit 0; a mistake on the command line, 2 (1: the input).
         return app.exit(e) == 0 ? 0 : 2;

@@ -308,6 +308,40 @@ TEST(OptimizerStart, RepairsAnInfeasibleStart) {
     EXPECT_FALSE(GeometryEvaluator(s).evaluate(worldTransforms(s, r.best)).rejected);
 }
 
+// A desk that cannot fit (7 m long in a 6 x 4 m room): no layout passes the geometric
+// rules, so the report gives no C and no G (null, and what rejects it), but the light of
+// the least violating layout, which layout.json holds. It once said C = L = G = 0 with
+// no samplers.
+TEST(OptimizerStart, AnInfeasibleResultHasNoCostButItsLight) {
+    Scene s = test::SceneBuilder()
+                  .material("m", test::diffuse(0.5))
+                  .room({0, 0, 0}, {6, 4, 3}, "m", "m", "m")
+                  .sampler("desk_light", planarSampler({0, 0, 0.75}, {0, 0, 1}, {0, 1, 0}, {1, 1}, {2, 2}), 300, 500)
+                  .entity("workstation", {3, 2, 0}).region({1, 1}, {5, 3}, {0, 90})
+                  .entity("desk").part({7, 0.6, 0.75}, "m").end()
+                  .end()
+                  .lightingWeight(0.5)
+                  .build();
+    test::DeskLight light(s);
+    OptimizerOptions o = optimizerOptions(s);
+    o.iterations = 20;
+    o.startAttempts = 3;
+    OptimizerResult r = Optimizer(s, o, &light).run();
+    ASSERT_FALSE(r.feasible);
+    const nlohmann::json j = nlohmann::json::parse(reportJson(s, r));
+    EXPECT_TRUE(j["C"].is_null()) << j["C"];
+    EXPECT_TRUE(j["G"].is_null()) << j["G"];
+    EXPECT_TRUE(j["C_std_error"].is_null());
+    EXPECT_EQ(j["feasible"], false);
+    EXPECT_NE(j["rejected_by"].get<std::string>().find("overlap \"workstation.desk\""), std::string::npos) << j["rejected_by"];
+    const double x = worldTransforms(s, r.best)[size_t(s.findEntity("workstation.desk"))].t.x, lux = 600 - 100 * x;
+    EXPECT_DOUBLE_EQ(j["L"].get<double>(), lightingCost(s, {lux}));
+    ASSERT_EQ(j["samplers"].size(), 1u);
+    EXPECT_DOUBLE_EQ(j["samplers"][0]["value"].get<double>(), lux);
+    EXPECT_TRUE(j["start"]["C"].is_null());
+    EXPECT_TRUE(j["start"]["L"].is_null());  // the start's light was never measured
+}
+
 TEST_F(OptimizerTest, WritesReportAndTrace) {
     test::DeskLight light(scene);
     OptimizerOptions o = optimizerOptions(scene);

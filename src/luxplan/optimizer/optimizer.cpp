@@ -213,7 +213,10 @@ double Optimizer::temperature() const {
     return std::max(t, std::sqrt(noiseVariance_));
 }
 
-void Optimizer::initialize() {
+void Optimizer::initialize(const std::function<void(int drawn, int most)>& drawing) {
+    using Clock = std::chrono::steady_clock;
+    const auto started = Clock::now();
+    auto lastHeard = started;
     samplerRanges_.clear();
     for (size_t i = 0; i < levels_.size(); ++i) {
         rngs_[i] = Rng(hashValues({options_.seed, kStreamTag, streams_[i]}));
@@ -239,6 +242,10 @@ void Optimizer::initialize() {
             leastViolation = g.violation;
             start = std::move(candidate);
             if (!g.rejected) break;
+            if (drawing && Clock::now() - lastHeard > std::chrono::milliseconds(500)) {
+                drawing(attempt + 1, options_.startAttempts);
+                lastHeard = Clock::now();
+            }
         }
     }
     current_ = start;
@@ -259,6 +266,7 @@ void Optimizer::initialize() {
     trace_.clear();
     record();
     initialized_ = true;
+    startSeconds_ = std::chrono::duration<double>(Clock::now() - started).count();
 }
 
 namespace {
@@ -407,10 +415,12 @@ void Optimizer::step() {
 
 OptimizerResult Optimizer::run(const ProgressCallback& progress, const std::atomic<bool>* cancel) {
     using Clock = std::chrono::steady_clock;
-    const auto started = Clock::now();
-    auto seconds = [&] { return std::chrono::duration<double>(Clock::now() - started).count(); };
     if (!initialized_) initialize();
     const int first = iteration_;
+    // A run from the start counts the start's draws and measurement too.
+    const double before = first == 0 ? startSeconds_ : 0.0;
+    const auto started = Clock::now();
+    auto seconds = [&] { return before + std::chrono::duration<double>(Clock::now() - started).count(); };
     int reported = -1;
     auto report = [&] {
         if (!progress || reported == iteration_) return;
@@ -526,7 +536,7 @@ void Optimizer::chooseResult(OptimizerResult& r) {
     r.bestEvaluation = r.bestSearchEvaluation = bestEval_;
     r.bestIteration = bestIteration_;
     const bool measured = lighting_ && !scene_->samplers.empty();
-    if (!measured || !feasible_) return;  // no estimate to correct (or only the least violating layout)
+    if (!measured) return;
     const double w = scene_->objective.lightingWeight;
     auto measure = [&](const Layout& layout, Evaluation e, uint64_t stream) {
         ++independentMeasurements_;
@@ -537,6 +547,13 @@ void Optimizer::chooseResult(OptimizerResult& r) {
         e.cost = scene_->objective.cost(e.lighting, e.geometry);
         return e;
     };
+    if (!feasible_) {
+        // Only the least violating layout, which no cost describes (a hard limit is
+        // passed): its light is still what layout.json would measure.
+        r.bestEvaluation = measure(best_, bestEval_, kReportStream);
+        r.reportSeed = independentSeed(kReportStream);
+        return;
+    }
     std::vector<Candidate>& all = candidates_.all();
     size_t chosen = 0;
     if (w > 0) {

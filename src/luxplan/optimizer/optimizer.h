@@ -188,7 +188,9 @@ public:
 
     // The start state (StartFrom); resets the counters and random streams, so a
     // second call starts the same chain again. Called by run() when not called before.
-    void initialize();
+    // `drawing` hears of the uniform start's draws (how many so far, of at most how
+    // many) while none passes the geometric rules, about twice a second.
+    void initialize(const std::function<void(int drawn, int most)>& drawing = {});
     // One proposal at the level the hierarchy schedule gives, then the Metropolis test.
     void step();
     // Runs to the iteration limit, C = 0 or cancellation (checked before every
@@ -250,6 +252,7 @@ private:
     std::vector<Rng> rngs_;  // one stream per level
     std::vector<uint64_t> streams_;  // the stream id each level's Rng is seeded with
     bool initialized_ = false;
+    double startSeconds_ = 0;  // initialize()'s, counted in the first run's seconds
     Layout current_, best_;
     Evaluation currentEval_, bestEval_, startEval_;
     bool feasible_ = false;

@@ -72,10 +72,12 @@ std::string reportJson(const Scene& scene, const OptimizerResult& r) {
     Json j;
     j["scene"] = scene.name;
     j["file"] = scene.file.string();
-    j["C"] = number(best.cost);
-    j["C_std_error"] = number(best.costError);
-    j["L"] = number(best.lighting);
-    j["G"] = number(best.geometry);
+    // A layout past a hard limit has no cost (rejected_by says which); L is null where
+    // the light was not measured.
+    j["C"] = best.rejected ? Json(nullptr) : number(best.cost);
+    j["C_std_error"] = best.rejected ? Json(nullptr) : number(best.costError);
+    j["L"] = best.lightingEvaluated || scene.samplers.empty() ? number(best.lighting) : Json(nullptr);
+    j["G"] = best.rejected ? Json(nullptr) : number(best.geometry);
     j["lighting_weight"] = scene.objective.lightingWeight;
     j["lighting_evaluated"] = best.lightingEvaluated;
     j["feasible"] = r.feasible;
@@ -106,8 +108,10 @@ std::string reportJson(const Scene& scene, const OptimizerResult& r) {
     }
     j["seconds"] = r.seconds;
     j["stop_reason"] = stopReasonName(r.stop);
-    j["start"] = {{"C", number(r.startEvaluation.cost)}, {"L", number(r.startEvaluation.lighting)},
-                  {"G", number(r.startEvaluation.geometry)}, {"feasible", r.startFeasible}};
+    const Evaluation& start = r.startEvaluation;
+    j["start"] = {{"C", start.rejected ? Json(nullptr) : number(start.cost)},
+                  {"L", start.lightingEvaluated || scene.samplers.empty() ? number(start.lighting) : Json(nullptr)},
+                  {"G", start.rejected ? Json(nullptr) : number(start.geometry)}, {"feasible", r.startFeasible}};
 
     Json constraints = Json::array();
     Json pairs = Json::array();
