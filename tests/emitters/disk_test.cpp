@@ -33,7 +33,7 @@ TEST(DiskEmitter, GeometryAndKeys) {
     for (const Vec3& q : disk->outline()) EXPECT_NEAR(length(q - Vec3(0, 0, 2)), 0.25, 1e-12);
     std::vector<std::string> problems;
     readShape("disk", R"({"center": [0, 0, 2], "radius": -1})", &problems);
-    EXPECT_EQ(problems, std::vector<std::string>{"/e/radius: value -1 outside > 0 m"});
+    EXPECT_EQ(problems, std::vector<std::string>{"/e/radius: value -1 outside >= 0.0001 m"});
 }
 
 }  // namespace

@@ -233,6 +233,21 @@ TEST(SceneLimits, GlareSources) {
     EXPECT_TRUE(test::loadProblems(s.dump(), dir).empty());
 }
 
+// A luminaire's light sampling loses its precision far below a tenth of a millimetre
+// (a 1e-8 m rect read 1131, 0, 1371 and 0 lx where a point source gives 33, 71, 71 and
+// 33; a sphere of 1e-8 m, nothing): its sides and radius are at least 0.1 mm.
+TEST(SceneLimits, LuminairesTooSmallToSample) {
+    json s = smallScene();
+    s["luminaires"][0]["size"] = {1e-12, 0.02};
+    EXPECT_EQ(onlyProblem(s), "/luminaires/0/size/0: value 1e-12 outside >= 0.0001 m");
+    s = smallScene();
+    s["luminaires"][0] = {{"name", "bulb"}, {"shape", "sphere"}, {"center", {3, 2, 2}}, {"radius", 1e-8}, {"flux_lm", 1000}};
+    EXPECT_EQ(onlyProblem(s), "/luminaires/0/radius: value 1e-08 outside >= 0.0001 m");
+    s["luminaires"][0]["radius"] = 1e-4;
+    test::TempDir dir;
+    EXPECT_TRUE(test::loadProblems(s.dump(), dir).empty());
+}
+
 TEST(SceneLimits, OnlyRegularFilesOfBoundedSize) {
     test::TempDir dir;
     auto fifo = dir.path() / "scene.json";

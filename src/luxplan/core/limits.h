@@ -48,6 +48,10 @@ inline constexpr std::uint64_t kMaxGltfNodeInstances = 100'000;
 inline constexpr int kMaxGltfNodeDepth = 64;
 
 // ---- light ----
+// A luminaire's side or radius, m: the light sampling's set-up (spherical rectangles,
+// cones) loses its precision far below it (a rect of 1e-7 m read 36% high, of 1e-8 m
+// nothing). A lamp's smallest opening, an LED die, is about a millimetre.
+inline constexpr double kMinLuminaireSize = 1e-4;
 // A luminaire's flux, lm (a stadium floodlight gives about 2e5 lm).
 inline constexpr double kMaxFluxLm = 1e9;
 // Sky and sun illuminance, lx (direct sunlight is about 1.3e5 lx), and a uniform

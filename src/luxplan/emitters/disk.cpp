@@ -88,7 +88,7 @@ std::shared_ptr<const EmitterShape> diskEmitter(Vec3 center, Vec3 normal, double
 std::shared_ptr<const EmitterShape> readDiskEmitter(const json::Fields& f) {
     Vec3 center = f.vec3("center", true, json::coordinateRange()).value_or(Vec3());
     Vec3 normal = f.direction("normal").value_or(Vec3(0, 0, -1));
-    double radius = f.number("radius", json::lengthRange(), true).value_or(0.1);
+    double radius = f.number("radius", json::luminaireSizeRange(), true).value_or(0.1);
     return diskEmitter(center, normal, radius);
 }
 

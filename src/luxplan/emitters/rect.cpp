@@ -102,7 +102,7 @@ std::shared_ptr<const EmitterShape> rectEmitter(Vec3 center, Vec3 normal, Vec3 u
 std::shared_ptr<const EmitterShape> readRectEmitter(const json::Fields& f) {
     Vec3 center = f.vec3("center", true, json::coordinateRange()).value_or(Vec3());
     Vec3 normal = f.direction("normal").value_or(Vec3(0, 0, -1));
-    Vec2 size = f.vec2("size", true, json::lengthRange()).value_or(Vec2(1, 1));
+    Vec2 size = f.vec2("size", true, json::luminaireSizeRange()).value_or(Vec2(1, 1));
     Vec3 up = f.direction("up").value_or(std::abs(normal.y) > 0.999 ? Vec3(1, 0, 0) : Vec3(0, 1, 0));
     if (length(cross(up, normal)) < 1e-6) {
         f.error(f.has("up") ? "up" : "normal", "\"up\" is parallel to \"normal\"");

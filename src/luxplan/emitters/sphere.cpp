@@ -126,7 +126,7 @@ std::shared_ptr<const EmitterShape> sphereEmitter(Vec3 center, double radius) {
 
 std::shared_ptr<const EmitterShape> readSphereEmitter(const json::Fields& f) {
     Vec3 center = f.vec3("center", true, json::coordinateRange()).value_or(Vec3());
-    double radius = f.number("radius", json::lengthRange(), true).value_or(0.1);
+    double radius = f.number("radius", json::luminaireSizeRange(), true).value_or(0.1);
     return sphereEmitter(center, radius);
 }
 

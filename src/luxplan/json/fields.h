@@ -65,6 +65,8 @@ inline Range coordinateRange() { return Range{-kInf, kInf, false, false, "m"}.li
 // A signed length (a side vector's component).
 inline Range signedLengthRange() { return Range{-kInf, kInf, false, false, "m"}.limitedTo(limits::kMaxLength); }
 inline Range lengthRange() { return Range::positive("m").limitedTo(limits::kMaxLength); }
+// A luminaire's side or radius.
+inline Range luminaireSizeRange() { return Range::atLeast(limits::kMinLuminaireSize, "m").limitedTo(limits::kMaxLength); }
 // A rotation about +z, degrees.
 inline Range rotationRange() { return Range{-kInf, kInf, false, false, "deg"}.limitedTo(limits::kMaxRotationDeg); }
 // A non-negative length (an offset along a wall, a sill).
