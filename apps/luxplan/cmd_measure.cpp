@@ -10,6 +10,7 @@
 
 #include "commands.h"
 #include "option_checks.h"
+#include <luxplan/checks/scene_warnings.h>
 #include <luxplan/constraints/geometry_cost.h>
 #include <luxplan/constraints/penalty.h>
 #include <luxplan/daylight/datetime.h>
@@ -65,8 +66,16 @@ void runMeasure(const MeasureArgs& args) {
     if (args.flat) scene = flattenScene(scene).scene;
     Layout layout = args.layout.empty() ? initialLayout(scene) : io::readLayout(args.layout, scene);
     std::optional<DaylightEnvironment> daylight;
-    if (!args.at.empty()) daylight = buildDaylight(daylightAt(scene, args.at), scene.site);
-    else if (scene.daylight) daylight = buildDaylight(*scene.daylight, scene.site);
+    if (!args.at.empty()) {
+        Scene instant = scene;
+        instant.daylight = daylightAt(scene, args.at);
+        // The same warning as a scene whose period is that instant: after sunset.
+        for (const Diagnostic& w : darkDaylight(instant))
+            std::cerr << scene.file.string() << ": --at " << args.at << ": warning: " << w.message << "\n";
+        daylight = buildDaylight(*instant.daylight, scene.site);
+    } else if (scene.daylight) {
+        daylight = buildDaylight(*scene.daylight, scene.site);
+    }
     EmbreeScene rt(scene, layout);
     PathTracerOptions tracing;
     tracing.sunPatches = args.sunPatches == "on";

@@ -70,6 +70,19 @@ TEST(MeasureAt, TheReportsHourByHourIsMeasureAtEachHour) {
         EXPECT_NEAR(shown[k], measured["samplers"][k]["value"].get<double>(), 0.051) << measured["samplers"][k]["name"];
 }
 
+// An instant after sunset gets the warning a scene whose period it is gets (none before).
+TEST(MeasureAt, WarnsAfterSunset) {
+    test::CliResult r = test::runCli("measure " + kOffice + " --paths 2 --threads 2 --at 2026-03-20T23:00+02:00");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find(kOffice + ": --at 2026-03-20T23:00+02:00: warning: the sun is below the horizon at "
+                                      "2026-03-20T23:00+02:00 (after sunset or before sunrise): the daylight adds no light"),
+              std::string::npos)
+        << r.output;
+    r = test::runCli("measure " + kOffice + " --paths 2 --threads 2 --at 2026-03-20T13:00+02:00");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_EQ(r.output.find("below the horizon"), std::string::npos) << r.output;
+}
+
 TEST(MeasureAt, RefusesABadTimeAndASceneWithoutDaylight) {
     test::CliResult r = test::runCli("measure " + kOffice + " --paths 4 --at 2026-03-20T25:00+02:00");
     EXPECT_NE(r.exitCode, 0);
