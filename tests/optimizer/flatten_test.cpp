@@ -13,6 +13,7 @@
 #include <luxplan/optimizer/flatten.h>
 #include <luxplan/optimizer/optimizer.h>
 #include <luxplan/optimizer/placement.h>
+#include "support/scene_builder.h"
 #include "support/shared_scenes.h"
 
 namespace luxplan {
@@ -181,6 +182,31 @@ TEST_F(FlattenTest, LayoutsConvertBothWays) {
             EXPECT_TRUE(sameRotation(a.rotationDeg, b.rotationDeg)) << a.rotationDeg << " vs " << b.rotationDeg;
             EXPECT_EQ(a.region, b.region) << scene.entities[k].path;
         }
+    }
+}
+
+// A movable group inside a fixed, partless wrapper: the wrapper's anchor is the group's
+// desk, which moves, but the wrapper stays where the scene puts it. The group's
+// placement was once taken relative to a wrapper moved with its desk, so layout.json
+// kept the group at its scene placement and its members relative to the moved one.
+TEST(FlattenWrapped, AFixedWrapperStaysAndItsGroupConvertsBothWays) {
+    Scene scene = test::SceneBuilder()
+                      .material("m", test::diffuse(0.5))
+                      .room({0, 0, 0}, {8, 6, 3}, "m", "m", "m")
+                      .entity("wrap", {1, 0.5, 0}, 10)
+                      .entity("ws", {1.5, 1.5, 0}).region({0.5, 0.5}, {5, 4}, {0, 90, 180, 270})
+                      .entity("desk").part({1.2, 0.6, 0.75}, "m").end()
+                      .entity("chair", {0, -0.7, 0}).rangeRegion({-0.4, -0.9}, {0.4, -0.5}, -30, 30).part({0.5, 0.5, 0.9}, "m").end()
+                      .end()
+                      .end()
+                      .build();
+    const FlatScene flat = flattenScene(scene);
+    Rng rng(hashValues({9}));
+    for (int trial = 0; trial < 20; ++trial) {
+        const Layout layout = sampleLayout(scene, initialLayout(scene), rng);
+        const Layout back = hierarchicalLayoutOf(scene, flat, flatLayoutOf(scene, flat, layout));
+        const std::vector<Transform> a = worldTransforms(scene, layout), b = worldTransforms(scene, back);
+        for (size_t k = 0; k < scene.entities.size(); ++k) expectSameTransform(a[k], b[k], scene.entities[k].path);
     }
 }
 

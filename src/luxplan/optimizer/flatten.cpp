@@ -250,8 +250,18 @@ Layout flatLayoutOf(const Scene& original, const FlatScene& flat, const Layout& 
 
 Layout hierarchicalLayoutOf(const Scene& original, const FlatScene& flat, const Layout& flatLayout) {
     const size_t n = original.entities.size();
+    const std::vector<Transform> initialWorld = worldTransforms(original, initialLayout(original));
     std::vector<Transform> world(n);
+    std::vector<char> moves(n, 0);  // movable, or inside a movable group (parents come first)
     for (size_t k = 0; k < n; ++k) {
+        const Entity& e = original.entities[k];
+        moves[k] = e.movable() || (e.parent >= 0 && moves[size_t(e.parent)]);
+        // An entity fixed in the world (a partless wrapper of movable groups) stays where
+        // the scene puts it: its anchor is a member that moves.
+        if (!moves[k]) {
+            world[k] = initialWorld[k];
+            continue;
+        }
         Transform rep = localTransform(flatLayout.placements[size_t(flat.representative[k])]);
         world[k] = rep * flat.entityFromRepresentative[k].inverse();
     }
