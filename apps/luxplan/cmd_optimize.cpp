@@ -214,8 +214,11 @@ int runOptimize(const OptimizeArgs& args) {
         if (best.lightingEvaluated && result.independentMeasurements > 0)
             std::cout << "\n  that C is a fresh measurement of the result, with " << reportPaths
                       << " paths per point and a seed of its own, so it differs from the progress line: the search "
-                      << "estimated C " << result.bestSearchEvaluation.cost << "; the result is the best of "
-                      << result.candidates.size() << " candidates re-measured (candidate " << result.chosenCandidate + 1 << ")";
+                      << "estimated C " << result.bestSearchEvaluation.cost
+                      << (result.candidates.size() > 1
+                              ? "; the result is the best of " + std::to_string(result.candidates.size()) +
+                                    " candidates re-measured (candidate " + std::to_string(result.chosenCandidate + 1) + ")"
+                              : std::string("; the one candidate"));
     }
     else
         std::cout << "; no layout passed the geometric rules";

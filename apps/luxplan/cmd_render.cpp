@@ -49,7 +49,9 @@ void addPictureOptions(CLI::App* cmd, PictureArgs& args, int& threads) {
         ->check(wholeNumber(1));
     cmd->add_option("--threads", threads, "Worker threads (default: all cores)")->check(wholeNumber(0));
     addSeedOption(cmd, args.seed);
-    auto* camera = cmd->add_option("--camera", args.camera, "render.png from the scene's camera of that name (\"cameras\")");
+    auto* camera = cmd->add_option("--camera", args.camera, "render.png from the scene's camera of that name (\"cameras\")")
+                       ->check(CLI::Validator([](std::string& name) { return name.empty() ? "expected a camera's name, got \"\"" : ""; },
+                                              "NAME"));
     auto* eye = cmd->add_option("--eye", args.eye, "render.png from this point: X,Y,Z in metres (with --target)")
                     ->delimiter(',')->expected(3);
     auto* target = cmd->add_option("--target", args.target, "... looking at this point: X,Y,Z in metres")->delimiter(',')->expected(3);

@@ -79,6 +79,9 @@ TEST(Cli, OptionValuesAreCheckedAndSeedsReadExactly) {
     Result r = run("render " + kDemo + " --cell 0 -o x");
     EXPECT_EQ(r.exitCode, 2) << r.output;
     EXPECT_NE(r.output.find("--cell: must be a finite number > 0, got 0"), std::string::npos) << r.output;
+    r = run("render " + kDemo + " --camera \"\" -o x");
+    EXPECT_EQ(r.exitCode, 2) << r.output;
+    EXPECT_NE(r.output.find("--camera: expected a camera's name, got \"\""), std::string::npos) << r.output;
     test::TempDir dir;
     auto file = dir.write("lit.json", R"({"luxplan": 1, "materials": {"m": {"type": "diffuse", "reflectance": 0.5}},
         "luminaires": [{"name": "l", "shape": "rect", "center": [0,0,3], "normal": [0,0,-1], "size": [1,1], "flux_lm": 1000}],
@@ -363,7 +366,7 @@ TEST(Cli, RenderReportAndOptimizeWriteTheirPictures) {
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_EQ(expectPng(render / "render.png"), std::pair(48, 32));
     EXPECT_EQ(expectPng(render / "render_luminance.png"), std::pair(48 + 90, 140));  // the view and its legend
-    EXPECT_NE(r.output.find("pictures: rendering 48 x 32 px at 1 samples per pixel"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("pictures: rendering 48 x 32 px at 1 sample per pixel"), std::string::npos) << r.output;
     expectPng(render / "plan.png");
     expectGlb(render / "scene.glb");
     EXPECT_FALSE(std::filesystem::exists(render / "report.html"));

@@ -91,6 +91,11 @@ TEST_F(OptimizerTest, NoLightingHookMeansLZero) {
     EXPECT_EQ(r.bestEvaluation.lighting, 0);
     EXPECT_FALSE(r.bestEvaluation.lightingEvaluated);
     EXPECT_DOUBLE_EQ(r.bestEvaluation.cost, 0.5 * r.bestEvaluation.geometry);
+    // report.json's report_measurement is there for scripts, null: no light was measured.
+    const nlohmann::json j = nlohmann::json::parse(reportJson(scene, r));
+    EXPECT_TRUE(j["report_measurement"]["seed"].is_null()) << j["report_measurement"];
+    EXPECT_TRUE(j["report_measurement"]["paths_per_point"].is_null());
+    EXPECT_TRUE(j["L"].is_null());  // the scene has samplers, but nothing measured them
 }
 
 TEST_F(OptimizerTest, DeterministicForAFixedSeed) {

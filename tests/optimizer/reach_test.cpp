@@ -34,6 +34,10 @@ TEST(Reach, Verdicts) {
     EXPECT_EQ(low.reach, Reach::OutOfReach);
     EXPECT_EQ(low.reason, "at most 180 lx over the 3 layouts the search measured, below the target's minimum of 300 lx: "
                           "nowhere the search tried gets enough light; add or move light, or widen the regions");
+    // One layout only (nothing moves): no regions to widen.
+    EXPECT_EQ(reachVerdict(s, seen(s, {{120, 5}}), 120).reason,
+              "at most 120 lx in the one layout the search measured, below the target's minimum of 300 lx: nowhere the "
+              "search tried gets enough light; add or move light");
     ReachVerdict high = reachVerdict(s, seen(s, {{900, 10}, {2000, 20}}), 950);
     EXPECT_EQ(high.reach, Reach::OutOfReach);
     EXPECT_NE(high.reason.find("at least 900 lx over the 2 layouts the search measured, above the target's maximum of "

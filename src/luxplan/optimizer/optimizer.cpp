@@ -556,9 +556,10 @@ void Optimizer::chooseResult(OptimizerResult& r) {
     }
     std::vector<Candidate>& all = candidates_.all();
     size_t chosen = 0;
-    if (w > 0) {
+    if (w > 0 && all.size() > 1) {
         // The winner's curse: the lowest of many noisy estimates is low by luck. Each
-        // candidate is measured again (stream 1), and the lowest of those is chosen.
+        // candidate is measured again (stream 1), and the lowest of those is chosen (a
+        // lone candidate, as when nothing moves, is chosen without).
         for (size_t i = 0; i < all.size(); ++i) {
             if (!all[i].independent) all[i].independent = measure(all[i].layout, all[i].search, kSelectionStream);
             if (all[i].independent->cost < all[chosen].independent->cost) chosen = i;

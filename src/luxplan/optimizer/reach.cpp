@@ -42,7 +42,10 @@ const char* reachName(Reach reach) {
 
 ReachVerdict reachVerdict(const LightSamplerSpec& s, const SamplerRange& range, double value) {
     if (value >= s.targetMin && value <= s.targetMax) return {Reach::Met, ""};
-    const std::string over = " over the " + std::to_string(range.layouts) + " layouts the search measured";
+    const std::string over = range.layouts == 1 ? " in the one layout the search measured"
+                                                 : " over the " + std::to_string(range.layouts) + " layouts the search measured";
+    // Wider regions help only where there are regions: a scene may move nothing.
+    const std::string widen = range.layouts == 1 ? "" : ", or widen the regions";
     if (range.layouts == 0)
         return {Reach::NotMeasured, "the search measured no layout's light (lighting weight 0, or no layout passed the "
                                     "geometric rules)"};
@@ -51,12 +54,12 @@ ReachVerdict reachVerdict(const LightSamplerSpec& s, const SamplerRange& range, 
     if (belowEverywhere)
         return {Reach::OutOfReach, "at most " + amount(range.highest, s) + over + ", below the target's minimum of " +
                                        amount(s.targetMin, s) +
-                                       ": nowhere the search tried gets enough light; add or move light, or widen the regions"};
+                                       ": nowhere the search tried gets enough light; add or move light" + widen};
     if (aboveEverywhere)
         return {Reach::OutOfReach, "at least " + amount(range.lowest, s) + over + ", above the target's maximum of " +
                                        amount(s.targetMax, s) +
                                        ": everywhere the search tried gets too much light (daylight or luminaires); "
-                                       "shade or dim it, or widen the regions"};
+                                       "shade or dim it" + widen};
     const std::string seen = "it read " + amount(range.lowest, s) + " to " + amount(range.highest, s);
     if (range.met > 0)
         return {Reach::Reached, "met in " + std::to_string(range.met) + " of the " + std::to_string(range.layouts) +

@@ -101,6 +101,8 @@ std::string reportJson(const Scene& scene, const OptimizerResult& r) {
     }
     j["candidates"] = candidates;
     // `measure --layout layout.json --seed S --paths N` repeats the report's measurement.
+    // Null where no light was measured (no samplers): always present, for scripts.
+    j["report_measurement"] = {{"seed", nullptr}, {"paths_per_point", nullptr}};
     if (r.reportSeed != 0) {
         int paths = 0;
         for (const SamplerResult& m : best.samplers.samplers) paths = std::max(paths, m.pathsPerPoint);

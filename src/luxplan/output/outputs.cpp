@@ -116,7 +116,8 @@ RunOutputs writeRunOutputs(const std::filesystem::path& folder, const Scene& sce
     if (stopped()) return finish();
     if (options.render) {
         begin("rendering " + std::to_string(options.renderWidth) + " x " + std::to_string(options.renderHeight) + " px at " +
-              std::to_string(options.renderSamplesPerPixel) + " samples per pixel");
+              std::to_string(options.renderSamplesPerPixel) + (options.renderSamplesPerPixel == 1 ? " sample" : " samples") +
+              " per pixel");
         RenderOptions ro;
         ro.width = options.renderWidth;
         ro.height = options.renderHeight;
