@@ -76,9 +76,9 @@ struct OptimizeArgs {
 // One status line, redrawn in place on a terminal, printed every few seconds
 // otherwise; and once, the moment the first layout passes the rules (the cost then
 // starts to include the light).
-void showProgress(const Progress& p, bool tty) {
+// `feasibleSeen`: whether a layout within every rule's limit has been seen (the start's).
+void showProgress(const Progress& p, bool tty, bool& feasibleSeen) {
     static auto lastPrint = std::chrono::steady_clock::now() - std::chrono::hours(1);
-    static bool feasibleSeen = false;
     auto now = std::chrono::steady_clock::now();
     if (p.feasible && !feasibleSeen && p.iteration > 0) {
         feasibleSeen = true;
@@ -188,7 +188,9 @@ int runOptimize(const OptimizeArgs& args) {
     if (drew && tty) std::cerr << "\n";
     Layout start = optimizer.current();  // the comparison picture's left side
     ProgressCallback progress;
-    if (!args.quiet) progress = [tty](const Progress& p) { showProgress(p, tty); };
+    // The start within every rule's limit: no "by iteration N: a layout keeps every rule" line.
+    bool feasibleSeen = !optimizer.currentEvaluation().rejected;
+    if (!args.quiet) progress = [tty, &feasibleSeen](const Progress& p) { showProgress(p, tty, feasibleSeen); };
     OptimizerResult result = optimizer.run(progress, &interrupted);
     if (tty) std::cerr << "\n";
     if (result.stop == StopReason::Cancelled) std::cerr << "interrupted: writing the best layout found so far\n";
@@ -211,7 +213,9 @@ int runOptimize(const OptimizeArgs& args) {
         std::cout << "; best C " << best.cost;
         if (best.costError > 0) std::cout << " +- " << best.costError;
         std::cout << " (L " << best.lighting << ", G " << best.geometry << ") at iteration " << result.bestIteration;
-        if (best.lightingEvaluated && result.independentMeasurements > 0)
+        if (best.lightingEvaluated && scene.objective.lightingWeight == 0)
+            std::cout << "\n  lighting weight 0: C is G, exact; L was measured for the report only";
+        else if (best.lightingEvaluated && result.independentMeasurements > 0)
             std::cout << "\n  that C is a fresh measurement of the result, with " << reportPaths
                       << " paths per point and a seed of its own, so it differs from the progress line: the search "
                       << "estimated C " << result.bestSearchEvaluation.cost

@@ -245,6 +245,12 @@ TEST(Cli, OptimizeFlatRunsTheGrouplessBaselineAndItsLayoutsReadBack) {
     for (const auto& c : report["constraints"])
         cohesion += c["json_path"].get<std::string>().find("(cohesion with set.table)") != std::string::npos;
     EXPECT_EQ(cohesion, 4);
+    // The scene's constraint on the group names the group, not its anchor the table.
+    for (const auto& c : report["constraints"]) {
+        if (c["json_path"] == "/constraints/0") {
+            EXPECT_EQ(c["a"], "set") << c.dump();
+        }
+    }
     // layout.json is in the scene's hierarchy and validates against it; layout_flat.json
     // measures (--flat) exactly as the report did.
     auto layout = nlohmann::json::parse(std::ifstream(out / "layout.json"));

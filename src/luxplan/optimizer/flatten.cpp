@@ -185,6 +185,7 @@ FlatScene flattenScene(const Scene& scene) {
         for (int m : info.geometrySubtree(e)) g.members.push_back(flat.flatOf[size_t(m)]);
         g.entityFromGroup = flat.entityFromRepresentative[size_t(e)].inverse();
         g.fronts = entities[size_t(e)].fronts;
+        g.path = entities[size_t(e)].path;
         return g;
     };
     for (auto& c : out.constraints) {

@@ -32,6 +32,7 @@ struct GroupEnd {
     std::vector<int> members;   // flat entities whose own geometry the box holds
     Transform entityFromGroup;  // the group's frame in the representative's
     std::vector<Vec2> fronts;   // the group's fronts, group frame
+    std::string path;           // the former group's path, which reports name the end by
 };
 
 // The kind of a constraint flattening wrote: the kind it wraps (the scene's, or a

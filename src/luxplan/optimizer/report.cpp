@@ -12,6 +12,7 @@
 #include <luxplan/core/error.h>
 #include <luxplan/constraints/penalty.h>
 #include <luxplan/lightsamplers/sampler_type.h>
+#include <luxplan/optimizer/flatten.h>
 #include <luxplan/optimizer/reach.h>
 #include <luxplan/optimizer/sampler_report.h>
 
@@ -55,8 +56,10 @@ Json termJson(const Scene& scene, const PenaltyTerm& t) {
         const ConstraintSpec& c = scene.constraints[t.constraint];
         if (!c.name.empty()) j["name"] = c.name;
         j["json_path"] = c.jsonPath;
-        j["a"] = scene.entities[t.a].path;
-        j["b"] = t.b == kRoomEntity ? std::string("room") : scene.entities[t.b].path;
+        // A flat scene's constraint on a former group names the group, as the scene does.
+        const auto* flat = dynamic_cast<const FlatConstraint*>(c.kind.get());
+        j["a"] = flat && flat->groupA() ? flat->groupA()->path : scene.entities[t.a].path;
+        j["b"] = t.b == kRoomEntity ? std::string("room") : flat && flat->groupB() ? flat->groupB()->path : scene.entities[t.b].path;
         t.kind->report(t, j);
     }
     j["penalty"] = number(t.penalty);
