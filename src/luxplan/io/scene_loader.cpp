@@ -1215,30 +1215,26 @@ private:
         checkGlareSources();
     }
 
-    // A glare eye surveys every luminaire, and a DGP eye every sun disk, as a source of
-    // its own (lightsamplers/glare_sources.h).
+    // A glare eye surveys its sources one by one (SamplerType::glareSources): a DGP eye
+    // every luminaire and every sun disk, counted here only when one asks.
     void checkGlareSources() {
         const int64_t luminaires = int64_t(scene_.emitters.size());
         std::optional<int64_t> sunDisks;
         for (const LightSamplerSpec& s : scene_.samplers) {
-            const std::string type = s.type->name();
-            if (type != "ugr" && type != "dgp") continue;
-            int64_t sources = luminaires;
-            std::string what = std::to_string(luminaires) + (luminaires == 1 ? " luminaire" : " luminaires");
-            if (type == "dgp") {
-                if (!sunDisks) {
-                    sunDisks = 0;
-                    if (scene_.daylight)
-                        for (const DaylightInstant& i : daylightInstants(*scene_.daylight, scene_.site)) *sunDisks += i.sunUp();
-                }
-                sources += *sunDisks;
-                what += " and " + std::to_string(*sunDisks) + " sun disks (one per daylight step with the sun up)";
+            const bool seesSuns = s.type->glareSources(0, 1) > 0;
+            if (seesSuns && !sunDisks) {
+                sunDisks = 0;
+                if (scene_.daylight)
+                    for (const DaylightInstant& i : daylightInstants(*scene_.daylight, scene_.site)) *sunDisks += i.sunUp();
             }
-            if (sources > limits::kMaxGlareSources)
-                sink_.error(s.jsonPath, "a " + type + " sampler surveys each " + (type == "dgp" ? "luminaire and sun disk" : "luminaire") +
-                                            " as a glare source of its own: " + what + " exceed the limit of " +
-                                            std::to_string(limits::kMaxGlareSources) +
-                                            (type == "dgp" && *sunDisks > 0 ? "; a longer \"step_minutes\" or a shorter period has fewer" : ""));
+            const int64_t suns = seesSuns ? *sunDisks : 0;
+            if (s.type->glareSources(luminaires, suns) <= limits::kMaxGlareSources) continue;
+            std::string what = std::to_string(luminaires) + (luminaires == 1 ? " luminaire" : " luminaires");
+            if (seesSuns) what += " and " + std::to_string(suns) + " sun disks (one per daylight step with the sun up)";
+            sink_.error(s.jsonPath, std::string("a ") + s.type->name() + " sampler surveys each " +
+                                        (seesSuns ? "luminaire and sun disk" : "luminaire") + " as a glare source of its own: " +
+                                        what + " exceed the limit of " + std::to_string(limits::kMaxGlareSources) +
+                                        (suns > 0 ? "; a longer \"step_minutes\" or a shorter period has fewer" : ""));
         }
     }
 

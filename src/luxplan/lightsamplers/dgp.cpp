@@ -32,6 +32,7 @@ public:
         s->direction = t.applyVector(direction);
         return s;
     }
+    int64_t glareSources(int64_t luminaires, int64_t sunDisks) const override { return luminaires + sunDisks; }
     std::string describe() const override {
         const int n = grid->cellsPerSide();
         return "daylight glare probability, sources above " + json::formatNumber(thresholdNits) + " cd/m2, " +

@@ -200,6 +200,10 @@ public:
     // Whether it gathers light from every direction (cylindrical, volume), so that on
     // the room's shell half of what it sees lies outside, whichever way it is turned.
     virtual bool looksAllRound() const { return false; }
+    // How many glare sources its eye surveys one by one in a scene of `luminaires` and
+    // `sunDisks` (ugr: the luminaires; dgp: the sun disks too), for the limit on them
+    // (limits::kMaxGlareSources); 0 for a kind that surveys none.
+    virtual int64_t glareSources(int64_t /*luminaires*/, int64_t /*sunDisks*/) const { return 0; }
     // Its points as an nx x ny grid (planar), for reports; none otherwise.
     virtual std::optional<std::array<int, 2>> pointGrid() const { return std::nullopt; }
     // The sampler fitted to where the loader found it, which its reader cannot see

@@ -27,6 +27,7 @@ public:
         return s;
     }
     std::string describe() const override { return "unified glare rating of the luminaires in view (CIE 117)"; }
+    int64_t glareSources(int64_t luminaires, int64_t) const override { return luminaires; }
 };
 
 }  // namespace
