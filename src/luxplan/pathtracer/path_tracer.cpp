@@ -38,13 +38,22 @@ struct PatchOrigin {
     bool faces(const Vec3& beamEnd) const { return translucent || dot(ng, beamEnd - p) > 0; }
 };
 
+// `n` with its zero components +0. Touching parts (a lamp shade's four walls) have
+// coincident faces: the same plane with opposite normals. A ray that meets the plane
+// hits either face, as the order of the BVH of the moment decides, and turned to the
+// side the path came from the two normals agree but in the signs of their zeros, which
+// Frame::fromNormal reads (its basis turns half a turn). With +0 the path scatters the
+// same whichever face it hit, and so a path kept by the path cache matches the one
+// traced afresh after a move has rebuilt the BVH (lightsamplers/path_cache.h).
+Vec3 positiveZeros(const Vec3& n) { return n + Vec3(0, 0, 0); }  // -0 + 0 = +0
+
 // The vertex at a surface hit, seen from direction wo (unit, away from the surface).
 Vertex surfaceVertex(const Hit& hit, const Bsdf& bsdf, const Vec3& wo) {
     Vertex v;
     v.p = hit.point;
     v.bsdf = &bsdf;
-    v.ng = dot(hit.geometricNormal, wo) >= 0 ? hit.geometricNormal : -hit.geometricNormal;
-    Vec3 ns = dot(hit.shadingNormal, v.ng) >= 0 ? hit.shadingNormal : -hit.shadingNormal;
+    v.ng = positiveZeros(dot(hit.geometricNormal, wo) >= 0 ? hit.geometricNormal : -hit.geometricNormal);
+    Vec3 ns = positiveZeros(dot(hit.shadingNormal, v.ng) >= 0 ? hit.shadingNormal : -hit.shadingNormal);
     v.shading = Frame::fromNormal(ns);
     v.wo = v.shading.toLocal(wo);
     if (v.wo.z <= 0) v.wo = normalize(Vec3(v.wo.x, v.wo.y, 1e-6));  // shading normal tilted away
