@@ -304,7 +304,7 @@ void registerOptimizeCommand(CLI::App& app, int& threads) {
         ->check(CLI::IsMember({"on", "off"}));
     cmd->add_flag("--full-evaluation", args->fullEvaluation,
                   "Trace every path of every evaluated layout (default: only the paths a move can change are "
-                  "traced again; the numbers are the same)");
+                  "traced again; the numbers are the same but where a ray meets coincident faces of two materials)");
     cmd->add_flag("--fresh-noise", args->freshNoise,
                   "Draw every lighting estimate anew and test with the penalty method: the chain then follows the "
                   "true costs, at twice the evaluations and without the path cache (default: common random numbers)");
