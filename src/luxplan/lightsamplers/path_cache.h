@@ -17,8 +17,9 @@
 // bit for bit, as measuring the same layout from scratch (tests/lightsamplers/
 // path_cache_test.cpp), but where a ray meets coincident faces of different materials
 // (a glass top resting on wooden legs): which one it hits is the order of the BVH of
-// the moment (docs/light-transport.md, "What is left"). What a measurement traces goes to a pending delta: commit()
-// makes it the committed state (the optimizer accepted the layout), discard() drops it.
+// the moment (docs/light-transport.md, "What is left"). What a measurement traces goes
+// to a pending delta: commit() makes it the committed state (the optimizer accepted the
+// layout), discard() drops it.
 #pragma once
 
 #include <array>

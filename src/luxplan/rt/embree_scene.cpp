@@ -203,6 +203,18 @@ void commitOnOneThread(RTCScene scene) {
     one.execute([&] { rtcCommitScene(scene); });
 }
 
+// Robust traversal: a box test that rounds the wrong way can skip the triangle a few
+// ulps nearer than the one found, and whether it does depends on the BVH of the
+// moment; the path cache needs a ray that missed every move to meet what it met
+// before (lightsamplers/path_cache.h). About 2% of the search's time.
+constexpr RTCSceneFlags kTraversal = RTC_SCENE_FLAG_ROBUST;
+
+RTCScene newSubScene(RTCDevice device) {
+    RTCScene scene = rtcNewScene(device);
+    rtcSetSceneFlags(scene, kTraversal);
+    return scene;
+}
+
 }  // namespace
 
 void EmbreeScene::finishSubScene(SubScene& sub) {
@@ -222,11 +234,7 @@ EmbreeScene::EmbreeScene(const Scene& scene, const Layout& layout, std::shared_p
     worldFromEntity_ = worldTransforms(scene, layout);
     emitterMeshes_.resize(scene.emitters.size());
     top_ = rtcNewScene(dev);
-    // Robust traversal: a box test that rounds the wrong way can skip the triangle a
-    // few ulps nearer than the one found, and whether it does depends on the BVH of
-    // the moment; the path cache needs a ray that missed every move to meet what it
-    // met before (lightsamplers/path_cache.h). About 2% of the search's time.
-    rtcSetSceneFlags(top_, RTC_SCENE_FLAG_DYNAMIC | RTC_SCENE_FLAG_ROBUST);
+    rtcSetSceneFlags(top_, RTC_SCENE_FLAG_DYNAMIC | kTraversal);
     rtcSetSceneBuildQuality(top_, RTC_BUILD_QUALITY_LOW);
     flat_.scene = top_;
     flat_.flat = true;
@@ -249,8 +257,7 @@ EmbreeScene::EmbreeScene(const Scene& scene, const Layout& layout, std::shared_p
             continue;
         }
         SubScene sub;
-        sub.scene = rtcNewScene(dev);
-        rtcSetSceneFlags(sub.scene, RTC_SCENE_FLAG_ROBUST);
+        sub.scene = newSubScene(dev);
         attachMesh(sub, item.mesh, HitKind::Static, int(i));
         subScenes_.push_back(std::move(sub));
     }
@@ -271,8 +278,7 @@ EmbreeScene::EmbreeScene(const Scene& scene, const Layout& layout, std::shared_p
             continue;
         }
         SubScene sub;
-        sub.scene = rtcNewScene(dev);
-        rtcSetSceneFlags(sub.scene, RTC_SCENE_FLAG_ROBUST);
+        sub.scene = newSubScene(dev);
         sub.entity = int(i);
         attachMesh(sub, e.mesh, HitKind::Entity, int(i));
         for (int em : e.emitters) attachEmitter(sub, scene.emitters[em], em);
