@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.h"
+#include "daylight_progress.h"
 #include "option_checks.h"
 #include <luxplan/checks/scene_warnings.h>
 #include <luxplan/constraints/geometry_cost.h>
@@ -72,9 +73,9 @@ void runMeasure(const MeasureArgs& args) {
         // The same warning as a scene whose period is that instant: after sunset.
         for (const Diagnostic& w : darkDaylight(instant))
             std::cerr << scene.file.string() << ": --at " << args.at << ": warning: " << w.message << "\n";
-        daylight = buildDaylight(*instant.daylight, scene.site);
+        daylight = bakeDaylight(*instant.daylight, scene.site);
     } else if (scene.daylight) {
-        daylight = buildDaylight(*scene.daylight, scene.site);
+        daylight = bakeDaylight(*scene.daylight, scene.site);
     }
     EmbreeScene rt(scene, layout);
     PathTracerOptions tracing;

@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "commands.h"
+#include "daylight_progress.h"
 #include "option_checks.h"
 #include "picture_progress.h"
 #include <luxplan/constraints/penalty.h>
@@ -103,7 +104,7 @@ void runPictures(const PictureArgs& args, bool report) {
     Layout initial = initialLayout(scene);
     Layout layout = args.layout.empty() ? initial : io::readLayout(args.layout, scene);
     std::optional<DaylightEnvironment> daylight;
-    if (scene.daylight) daylight = buildDaylight(*scene.daylight, scene.site);
+    if (scene.daylight) daylight = bakeDaylight(*scene.daylight, scene.site);
 
     OutputOptions options = outputOptions(args, scene);
     options.initialLabel = "scene placement";

@@ -126,6 +126,22 @@ TEST(Cli, MeasureJsonFollowsTheContract) {
     EXPECT_EQ(nlohmann::json::parse(again.output)["samplers"], json["samplers"]);
 }
 
+// A long daylight period (five days at five-minute steps, about 700 with the sun up)
+// takes seconds to bake: measure says how far it is, and how long it took.
+TEST(Cli, ALongDaylightBakeReportsItsProgress) {
+    test::TempDir dir;
+    auto file = dir.write("days.json", R"({"luxplan": 1, "site": {"latitude": 37.98, "longitude": 23.73},
+        "daylight": {"sky": {"model": "preetham", "turbidity": 3}, "sun": true,
+                     "from": "2026-06-21T00:00+03:00", "to": "2026-06-26T00:00+03:00", "step_minutes": 5},
+        "materials": {"m": {"type": "diffuse", "reflectance": 0.5}},
+        "samplers": [{"name": "p", "type": "planar", "center": [0,0,1], "size": [1,1], "grid": [1,1], "target": [10, null]}]})");
+    Result r = run("measure " + file.string() + " --paths 2 --threads 2");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_TRUE(std::regex_search(r.output, std::regex(R"(daylight: the sky of \d+ of \d+ time steps baked \(\d+s left\))")))
+        << r.output;
+    EXPECT_NE(r.output.find("daylight: baked in "), std::string::npos) << r.output;
+}
+
 // One path per point can estimate no error, and a directional sampler cannot hold a
 // fold out to choose its brightest stratum: a warning, and n/a in the table.
 TEST(Cli, OnePathPerPointWarnsThatItHasNoErrorAndNoCrossFittedMax) {
@@ -294,6 +310,35 @@ TEST(Cli, OptimizeFindsTheLitRegionAndWritesItsOutputs) {
     auto again = dir.path() / "again";
     ASSERT_EQ(run("optimize " + scene.string() + " -o " + again.string() + " --threads 2 -q --no-pictures").exitCode, 0);
     EXPECT_EQ(nlohmann::json::parse(std::ifstream(again / "layout.json")), layout);
+}
+
+// --check-cache: every path the path cache reads back is traced again and compared;
+// the numbers, and so the layout, are those of the run without it (the chairs' moves
+// leave the table's paths that miss them to the cache). It needs the cache.
+TEST(Cli, OptimizeChecksItsPathCacheAgainstFreshTraces) {
+    test::TempDir dir;
+    auto scene = dir.write("scene.json", kDiningSet);
+    auto plain = dir.path() / "plain", checked = dir.path() / "checked";
+    const std::string common = " --threads 2 -q --no-pictures --iterations 60";
+    ASSERT_EQ(run("optimize " + scene.string() + " -o " + plain.string() + common).exitCode, 0);
+    Result r = run("optimize " + scene.string() + " -o " + checked.string() + common + " --check-cache");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("reused paths traced again from scratch gave the same numbers, bit for bit"), std::string::npos)
+        << r.output;
+    auto report = nlohmann::json::parse(std::ifstream(checked / "report.json"));
+    ASSERT_TRUE(report.contains("path_cache_check")) << report.dump();
+    EXPECT_GT(report["path_cache_check"]["checked"].get<uint64_t>(), 0u);
+    EXPECT_EQ(report["path_cache_check"]["differing"], 0);
+    EXPECT_TRUE(report["path_cache_check"]["first"].empty());
+    EXPECT_FALSE(nlohmann::json::parse(std::ifstream(plain / "report.json")).contains("path_cache_check"));
+    EXPECT_EQ(nlohmann::json::parse(std::ifstream(checked / "layout.json")),
+              nlohmann::json::parse(std::ifstream(plain / "layout.json")));
+    for (const char* other : {"--full-evaluation", "--fresh-noise"}) {
+        Result bad = run("optimize " + scene.string() + " -o " + (dir.path() / "bad").string() + common +
+                         " --check-cache " + other);
+        EXPECT_NE(bad.exitCode, 0) << other;
+        EXPECT_NE(bad.output.find("--check-cache"), std::string::npos) << bad.output;
+    }
 }
 
 // --snapshots N: snapshots.json holds the best layout at N checkpoints with its wall

@@ -109,6 +109,21 @@ TEST(DaylightInstants, StepsFromFromToToInclusive) {
     EXPECT_NEAR(length(noon.sunDirection), 1.0, 1e-12);
 }
 
+// The bake's progress: one call per time step with the sun up (the dark one bakes
+// nothing), in order, and the same map as without it.
+TEST(DaylightBake, SaysHowManyOfItsStepsAreBaked) {
+    DaylightParams p = preethamDay("2026-06-21T05:00+03:00", "2026-06-21T11:00+03:00", 120);
+    std::vector<std::pair<int, int>> calls;
+    DaylightBakeOptions options = kSmall;
+    options.onStep = [&](int baked, int total) { calls.emplace_back(baked, total); };
+    const DaylightEnvironment told = buildDaylight(p, kAthens, options);
+    EXPECT_EQ(calls, (std::vector<std::pair<int, int>>{{1, 3}, {2, 3}, {3, 3}}));
+    const DaylightEnvironment silent = buildDaylight(p, kAthens, kSmall);
+    ASSERT_EQ(told.skyMap().pixels().size(), silent.skyMap().pixels().size());
+    for (size_t k = 0; k < told.skyMap().pixels().size(); ++k)
+        ASSERT_EQ(luminance(told.skyMap().pixels()[k]), luminance(silent.skyMap().pixels()[k]));
+}
+
 TEST(DaylightAverage, EqualsTheMeanOfItsInstants) {
     // 05:00..11:00 every 2 h in Athens (sunrise ~06:02): the 05:00 step is dark, the others not.
     DaylightParams p = preethamDay("2026-06-21T05:00+03:00", "2026-06-21T11:00+03:00", 120);

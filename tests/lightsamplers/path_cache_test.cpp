@@ -204,6 +204,67 @@ TEST(PathCache, MovesEqualFromScratchWithAFootOverATaskPoint) {
     EXPECT_GE(openLayouts, 5);
 }
 
+// MeasureOptions::checkCache traces every reused path again: through moves, all agree
+// and the numbers are the check-free ones.
+TEST(PathCache, TheCheckTracesEveryReusedPathAgain) {
+    SceneLab lab(studio());
+    MeasureOptions o = sequenceOptions(true, 32);
+    PathCache cache(lab.scene);
+    Layout committed = initialLayout(lab.scene);
+    commitFirst(lab, o, cache, committed);
+    o.checkCache = true;
+    Rng rng(31);
+    uint64_t checked = 0;
+    for (int m = 0; m < 8; ++m) {
+        Layout proposed = committed;
+        randomMove(lab.scene, proposed, rng);
+        lab.rt->setLayout(proposed);
+        lab.tracer->updateLayout();
+        const MeasureResult r = measureSamplers(*lab.tracer, o, &cache);
+        EXPECT_TRUE(r.cacheCheck.on);
+        EXPECT_EQ(r.cacheCheck.checked, r.reusedPaths);
+        EXPECT_EQ(r.cacheCheck.differing, 0u);
+        FromScratch fresh(lab.scene, proposed, &*lab.daylight);
+        MeasureOptions plain = o;
+        plain.checkCache = false;
+        expectSame(r, measureSamplers(*fresh.tracer, plain), "checked, move " + std::to_string(m));
+        checked += r.cacheCheck.checked;
+        cache.commit();
+        committed = proposed;
+    }
+    EXPECT_GT(checked, 0u);
+    // Without a cache there is nothing to check.
+    EXPECT_FALSE(measureSamplers(*lab.tracer, o).cacheCheck.on);
+}
+
+// A cache whose paths are not what a fresh trace gives (here: kept by a tracer with
+// daylight, read back by one without, which a caller must not do) is caught: every
+// difference counted, the first ones named with where the rays part.
+TEST(PathCache, TheCheckFindsPathsThatAFreshTraceGivesOtherwise) {
+    SceneLab lab(studio());
+    MeasureOptions o;
+    o.pathsPerPoint = 16;
+    PathCache cache(lab.scene);
+    const MeasureResult kept = measureSamplers(*lab.tracer, o, &cache);
+    cache.commit();
+    PathTracer other(*lab.rt, nullptr);
+    o.checkCache = true;
+    const MeasureResult r = measureSamplers(other, o, &cache);
+    EXPECT_EQ(r.reusedPaths, r.paths);
+    EXPECT_EQ(r.cacheCheck.checked, r.paths);
+    EXPECT_GT(r.cacheCheck.differing, 0u);
+    EXPECT_LT(r.cacheCheck.differing, r.cacheCheck.checked);  // paths that met no daylight agree
+    ASSERT_EQ(r.cacheCheck.first.size(), std::min<size_t>(CacheCheck::kKept, r.cacheCheck.differing));
+    const Bounds3 room({-0.01, -0.01, -0.01}, {6.01, 4.01, 3.01});
+    for (const CacheDifference& d : r.cacheCheck.first) {
+        ASSERT_TRUE(d.where.has_value());  // no shadow rays towards the sun and sky
+        EXPECT_TRUE(room.contains(*d.where)) << d.where->x << " " << d.where->y << " " << d.where->z;
+        EXPECT_GE(d.sampler, 0);
+        EXPECT_LT(d.sampler, int(lab.scene.samplers.size()));
+    }
+    expectSame(r, kept, "the check reads the cache's numbers");
+}
+
 TEST(PathCache, AnUnmovedLayoutReusesEveryPath) {
     SceneLab lab(studio());
     MeasureOptions o;

@@ -192,6 +192,8 @@ DaylightEnvironment buildDaylight(const DaylightParams& p, const Site& site, con
         const double l = *p.luminanceNits;
         map.accumulate([&](double) { return [&](const Vec3&) { return Vec3(l, l, l); }; }, 1.0, 1, 0, skyRows);
     } else {
+        int total = 0, baked = 0;
+        for (const DaylightInstant& i : instants) total += i.hasSunPosition && i.sunAltitudeDeg >= 0;
         for (const DaylightInstant& i : instants) {
             if (!i.hasSunPosition || i.sunAltitudeDeg < 0) continue;
             if (p.model == SkyModelType::Preetham) {
@@ -204,6 +206,7 @@ DaylightEnvironment buildDaylight(const DaylightParams& p, const Site& site, con
                     [&](double) { return [&](const Vec3& w) { double l = sky.luminance(w); return Vec3(l, l, l); }; },
                     weight, ss, 0, skyRows);
             }
+            if (options.onStep) options.onStep(++baked, total);
         }
     }
 

@@ -4,6 +4,7 @@
 // the ISO 15469 general skies. See docs/daylight.md.
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -23,6 +24,9 @@ struct DaylightBakeOptions {
     int width = 512;
     int height = 256;
     int supersample = 2;
+    // Called after each time step's sky is baked, with how many of how many (the skies
+    // that follow the sun: Preetham, CIE general); a long period takes a while.
+    std::function<void(int baked, int total)> onStep;
 };
 
 // Every problem with params and site, with JSON paths into the scene ("/daylight/sky/turbidity",

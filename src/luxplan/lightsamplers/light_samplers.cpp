@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
+#include <span>
 #include <stdexcept>
 
 #include <luxplan/core/confidence.h>
@@ -30,6 +32,7 @@ struct alignas(64) WorkResult {  // a cache line of its own: two threads trace n
     uint64_t finite[kFolds] = {};  // paths kept, per fold
     uint64_t dropped = 0;
     RayStats stats;
+    CacheCheck check;  // MeasureOptions::checkCache (its rays are not counted in `stats`)
 };
 
 }  // namespace
@@ -159,6 +162,15 @@ int nextLook(const LightSamplerSpec& spec, const Estimate& value, int paths, int
     return int(std::ceil(want / batch)) * batch;
 }
 
+// The kept path's point where a fresh trace of it first differs (MeasureOptions::checkCache).
+std::optional<Vec3> wherePathsPart(std::span<const Segment> kept, const std::vector<Segment>& fresh) {
+    auto point = [](const std::array<float, 3>& p) { return Vec3{p[0], p[1], p[2]}; };
+    for (size_t q = 0; q < kept.size(); ++q)
+        if (q >= fresh.size() || kept[q].from != fresh[q].from || kept[q].to != fresh[q].to) return point(kept[q].from);
+    if (fresh.size() > kept.size()) return point(fresh[kept.size()].from);
+    return std::nullopt;
+}
+
 }  // namespace
 
 MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& options, PathCache* cache,
@@ -205,17 +217,20 @@ MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& op
             for (int g = 0; g < (folds ? kFolds : 1); ++g)
                 sequences.emplace_back(hashValues({options.seed, kSequenceTag, uint64_t(w.sampler), uint64_t(w.item),
                                                    folds ? uint64_t(g) : uint64_t(kFolds)}));
+        auto samplesOf = [&](int path, Rng& rng) {
+            return options.lowDiscrepancy ? PathSamples(rng, sequences[folds ? size_t(path % kFolds) : 0],
+                                                        uint32_t(folds ? path / kFolds : path))
+                                          : PathSamples(rng);
+        };
+        auto rngOf = [&](int path) { return Rng(hashValues({options.seed, uint64_t(w.sampler), uint64_t(w.item), uint64_t(path)})); };
         PathFootprint scratch;  // a path's footprint as it is traced
         PathContributions traced(w.item);  // ... and what it added
         for (int path = from; path < to; ++path) {
             const PathContributions* cached = cache ? cache->reuse(index, path) : nullptr;
             if (!cached) {
                 traced = PathContributions(w.item);
-                Rng rng(hashValues({options.seed, uint64_t(w.sampler), uint64_t(w.item), uint64_t(path)}));
-                PathSamples samples = options.lowDiscrepancy
-                                          ? PathSamples(rng, sequences[folds ? size_t(path % kFolds) : 0],
-                                                        uint32_t(folds ? path / kFolds : path))
-                                          : PathSamples(rng);
+                Rng rng = rngOf(path);
+                PathSamples samples = samplesOf(path, rng);
                 if (cache) {
                     scratch.clear();
                     r.stats.footprint = &scratch;
@@ -223,6 +238,18 @@ MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& op
                 sampler.sample(*tracerOf[size_t(w.sampler)], w.item, samples, r.stats, traced);
                 r.stats.footprint = nullptr;
                 if (cache) cache->keep(index, path, traced, scratch);
+            } else if (options.checkCache) {
+                PathContributions fresh(w.item);
+                Rng rng = rngOf(path);
+                PathSamples samples = samplesOf(path, rng);
+                RayStats uncounted;
+                scratch.clear();
+                uncounted.footprint = &scratch;
+                sampler.sample(*tracerOf[size_t(w.sampler)], w.item, samples, uncounted, fresh);
+                ++r.check.checked;
+                if (!fresh.sameAs(*cached))
+                    r.check.note({0, w.sampler, w.item, path, cached->sum(), fresh.sum(),
+                                  wherePathsPart(cache->segmentsOf(index, path), scratch.segments)});
             }
             const PathContributions& c = cached ? *cached : traced;
             if (!c.finite()) {  // the path is dropped whole (core/estimator.h's policy)
@@ -303,6 +330,8 @@ MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& op
     // Reduce per sampler, in a fixed order.
     MeasureResult result;
     if (cache) result.reusedPaths = cache->reused();
+    result.cacheCheck.on = cache && options.checkCache;
+    for (const WorkResult& w : done) result.cacheCheck.add(w.check);
     result.samplers.resize(samplers);
     for (size_t k = 0; k < samplers; ++k) {
         SamplerResult& r = result.samplers[k];

@@ -8,6 +8,7 @@
 #include <memory>
 #include <vector>
 
+#include <luxplan/lightsamplers/cache_check.h>
 #include <luxplan/lightsamplers/path_cache.h>
 #include <luxplan/lightsamplers/sampler_result.h>
 #include <luxplan/lightsamplers/sampler_type.h>
@@ -48,6 +49,11 @@ struct MeasureOptions {
     // scrambled sequence (one per fold for types that compare folds,
     // PlacedSampler::independentFolds). Off: PCG only.
     bool lowDiscrepancy = true;
+    // With a cache: every path read from it is traced again from scratch as well and
+    // compared with it bit for bit (MeasureResult::cacheCheck). A diagnostic of the
+    // cache's exactness: the numbers stay the cache's, and a measurement costs what one
+    // without the cache does, and more.
+    bool checkCache = false;
 };
 
 struct MeasureResult {
@@ -56,6 +62,7 @@ struct MeasureResult {
     uint64_t paths = 0;             // traced, over all samplers
     uint64_t droppedNonFinite = 0;  // over all samplers
     uint64_t reusedPaths = 0;       // read from the path cache instead of traced (in `paths`)
+    CacheCheck cacheCheck;          // MeasureOptions::checkCache (differences in work order: sampler, item, path)
 };
 
 // Measures every sampler of the scene for the path tracer's current layout. Each path is

@@ -242,6 +242,12 @@ bool PathCache::reserve(Pending& p, size_t n) {
     return true;
 }
 
+std::span<const Segment> PathCache::segmentsOf(size_t work, int path) const {
+    const Paths& committed = committed_[work];
+    const Record& r = committed.records[size_t(path)];
+    return {committed.segments.data() + r.firstSegment, r.segmentCount};
+}
+
 uint64_t PathCache::reused() const {
     if (!measuring_) return reusedLast_;
     uint64_t sum = 0;

@@ -25,6 +25,7 @@
 #include <array>
 #include <atomic>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include <luxplan/lightsamplers/sampler_type.h>
@@ -60,6 +61,10 @@ public:
     // Back to the committed layout's paths, with the paths the measurement traced
     // beyond them that the move missed.
     void discard();
+
+    // The segments of the committed path that reuse(work, path) just returned (valid
+    // until the next commit or discard).
+    std::span<const Segment> segmentsOf(size_t work, int path) const;
 
     // Paths the measurement in progress, or else the last one, reused.
     uint64_t reused() const;

@@ -6,7 +6,9 @@
 #pragma once
 
 #include <array>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -58,6 +60,19 @@ public:
         for (int k = 0; k < count_; ++k)
             if (!std::isfinite(values_[k])) return false;
         return true;
+    }
+    // The same items and values, bit for bit (a NaN equals the same NaN).
+    bool sameAs(const PathContributions& o) const {
+        if (count_ != o.count_) return false;
+        for (int k = 0; k < count_; ++k)
+            if (items_[k] != o.items_[k] || std::bit_cast<uint64_t>(values_[k]) != std::bit_cast<uint64_t>(o.values_[k]))
+                return false;
+        return true;
+    }
+    double sum() const {
+        double s = 0;
+        for (int k = 0; k < count_; ++k) s += values_[k];
+        return s;
     }
 
 private:

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <vector>
 
+#include <luxplan/lightsamplers/cache_check.h>
 #include <luxplan/lightsamplers/sampler_result.h>
 #include <luxplan/scene/layout.h>
 
@@ -46,6 +47,8 @@ public:
     // Paths traced so far over every evaluation and measurement (not those a cache
     // reused); 0 for an evaluator that traces none.
     virtual uint64_t tracedPaths() const { return 0; }
+    // What checking the evaluator's cache against fresh traces found (off: no check).
+    virtual CacheCheck cacheCheck() const { return {}; }
     // The chain accepted (commit) or refused (revert) the layout last evaluated: an
     // evaluator that keeps work between layouts (the path cache) keeps it for the
     // accepted layout only. Evaluations measure against the last committed layout.

@@ -178,6 +178,7 @@ struct OptimizerResult {
     std::vector<TracePoint> trace;
     std::vector<Snapshot> snapshots;  // OptimizerOptions::snapshots
     int64_t lightingEvaluations = 0;  // by the chain (not the final measurements)
+    CacheCheck cacheCheck;  // the lighting evaluator's, when it checked its cache
     OptimizerOptions options;
 };
 

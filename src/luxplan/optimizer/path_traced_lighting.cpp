@@ -53,6 +53,8 @@ double PathTracedLighting::measure(PathTracer& tracer, const std::vector<Transfo
     ++evaluations_;
     rays_ += last_.rays;
     reusedPaths_ += last_.reusedPaths;
+    for (CacheDifference& d : last_.cacheCheck.first) d.evaluation = int64_t(evaluations_);
+    check_.add(last_.cacheCheck);
     tracedPaths_ += last_.paths - last_.reusedPaths;
     if (out) out->samplers = last_.samplers;
     return scene_.samplers.empty() ? 0.0 : lightingCostOfResults(scene_, last_.samplers);

@@ -30,6 +30,10 @@ public:
     // Whether evaluations reuse the paths a move cannot change (on by default; the
     // numbers are the same either way, lightsamplers/path_cache.h).
     void setIncremental(bool on) { incremental_ = on; }
+    // Every path the cache reads back is traced again and compared (MeasureOptions::
+    // checkCache): a diagnostic, at the cost of a full evaluation and more.
+    void setCheckCache(bool on) { options_.checkCache = on; }
+    CacheCheck cacheCheck() const override { return check_; }
     // Fresh noise: every evaluation draws its own seed (from the seed and a count of
     // evaluations, so a run still repeats), without the path cache. The optimizer then
     // measures its current layout again before each test and uses the penalty method:
@@ -63,6 +67,7 @@ private:
     uint64_t evaluations_ = 0;
     RayStats rays_;
     uint64_t tracedPaths_ = 0, reusedPaths_ = 0;
+    CacheCheck check_;
 };
 
 }  // namespace luxplan

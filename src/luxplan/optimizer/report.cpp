@@ -167,6 +167,15 @@ std::string reportJson(const Scene& scene, const OptimizerResult& r) {
     }
     j["moves"] = moves;
     j["levels"] = levels;
+    if (r.cacheCheck.on) {  // optimize --check-cache
+        Json first = Json::array();
+        for (const CacheDifference& d : r.cacheCheck.first)
+            first.push_back({{"evaluation", d.evaluation},
+                             {"sampler", d.sampler < int(scene.samplers.size()) ? scene.samplers[size_t(d.sampler)].name : ""},
+                             {"item", d.item}, {"path", d.path}, {"cached", number(d.cached)}, {"fresh", number(d.fresh)},
+                             {"parts_at", d.where ? Json{d.where->x, d.where->y, d.where->z} : Json(nullptr)}});
+        j["path_cache_check"] = {{"checked", r.cacheCheck.checked}, {"differing", r.cacheCheck.differing}, {"first", first}};
+    }
 
     const OptimizerOptions& o = r.options;
     j["settings"] = {
