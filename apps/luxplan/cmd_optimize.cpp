@@ -130,9 +130,9 @@ void printCacheCheck(const Scene& scene, const CacheCheck& check) {
         return;
     }
     std::cerr << "warning: path cache check: " << check.differing << " of " << check.checked
-              << " reused paths traced again from scratch differ (a ray meeting coincident faces of two materials, "
-                 "which the BVH of the moment decides: separate the parts by 0.1 mm; docs/light-transport.md, "
-                 "\"What is left\"). The first (report.json, path_cache_check):\n";
+              << " reused paths traced again from scratch differ (a ray meeting two entities' faces of different "
+                 "materials in one plane, which the BVH of the moment decides: separate them by 0.1 mm; "
+                 "docs/light-transport.md, \"What is left\"). The first (report.json, path_cache_check):\n";
     for (size_t k = 0; k < check.first.size() && k < 3; ++k) {
         const CacheDifference& d = check.first[k];
         std::cerr << "  evaluation " << d.evaluation << ", sampler \"" << scene.samplers[size_t(d.sampler)].name
@@ -327,7 +327,8 @@ void registerOptimizeCommand(CLI::App& app, int& threads) {
         ->check(CLI::IsMember({"on", "off"}));
     auto* full = cmd->add_flag("--full-evaluation", args->fullEvaluation,
                   "Trace every path of every evaluated layout (default: only the paths a move can change are "
-                  "traced again; the numbers are the same but where a ray meets coincident faces of two materials)");
+                  "traced again; the numbers are the same but where two entities' faces of different materials "
+                  "overlap in one plane)");
     auto* check = cmd->add_flag("--check-cache", args->checkCache,
                                 "Trace every path the path cache reads back again from scratch and compare the two bit "
                                 "for bit (a diagnostic of the incremental evaluation, at more than --full-evaluation's "

@@ -15,9 +15,11 @@
 //     luminaire by flux / distance^2, so every light sample's probability changes).
 // Every other path reads as it did, so measuring with the cache gives the same numbers,
 // bit for bit, as measuring the same layout from scratch (tests/lightsamplers/
-// path_cache_test.cpp), but where a ray meets coincident faces of different materials
-// (a glass top resting on wooden legs): which one it hits is the order of the BVH of
-// the moment (docs/light-transport.md, "What is left"). What a measurement traces goes
+// path_cache_test.cpp): where a ray meets coincident faces, which one it hits is the
+// first in a fixed order, not the BVH of the moment (EmbreeScene::intersect), but for
+// faces of two entities' different materials that overlap in one plane and that a path
+// meets before any see-through surface (docs/light-transport.md, "What is left",
+// optimize --check-cache finds them). What a measurement traces goes
 // to a pending delta: commit() makes it the committed state (the optimizer accepted the
 // layout), discard() drops it.
 #pragma once

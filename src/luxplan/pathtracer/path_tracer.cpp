@@ -194,7 +194,7 @@ double PathTracer::transmittance(const Vec3& origin, const Vec3& w, double tMax,
         ++stats.shadow;
         const double left = opaqueEnd - dot(p - origin, w);
         if (left <= 0) return T;
-        auto hit = rt_.intersect({p, w, 0, left, kGlassMask});
+        auto hit = rt_.intersect({p, w, 0, left, kGlassMask, crossings > 0});
         if (stats.footprint) stats.footprint->add(p, w, 0, hit ? hit->t : left);
         if (!hit) return T;
         T *= bsdfs_[hit->material].straightTransmittance(std::abs(dot(w, hit->geometricNormal)));
@@ -367,6 +367,12 @@ double PathTracer::sample(const Sensor& sensor, PathSamples& samples, RayStats& 
         L += contribution;
     };
 
+    // Once through a see-through surface, a path may run inside parts whose faces
+    // coincide with another material's (a glass top resting on a wooden leg, and so
+    // into the leg): its rays' ties then go by a fixed order, so that it is the same
+    // path after any move (EmbreeScene::intersect; a second query per ray, which paths
+    // that never meet glass or a translucent surface do not pay).
+    bool seeThrough = false;
     for (; depth < options_.maxDepth; ++depth) {
         samples.setDepth(depth);
         bool deltaVertex = v.isSurface() ? v.bsdf->isDelta() : sensor.isDelta();
@@ -417,7 +423,7 @@ double PathTracer::sample(const Sensor& sensor, PathSamples& samples, RayStats& 
                 const Vec3 from = spawn(v, s.wi);
                 ++stats.closest;
                 const unsigned blockers = kOpaqueMask | kEmitterMask;
-                const std::optional<Hit> z = rt_.intersect({from, s.wi, 0, kInf, blockers});
+                const std::optional<Hit> z = rt_.intersect({from, s.wi, 0, kInf, blockers, seeThrough});
                 if (stats.footprint) {
                     if (z) stats.footprint->add(from, s.wi, 0, z->t);
                     else stats.footprint->addOcclusion(from, s.wi, 0, kInf, blockers, false);
@@ -570,10 +576,11 @@ double PathTracer::sample(const Sensor& sensor, PathSamples& samples, RayStats& 
 
         // ---- follow the ray, passing through glass panes ----
         Vec3 o = spawn(v, d);
+        seeThrough = seeThrough || (v.isSurface() && v.bsdf->hasDiffuseTransmission());
         bool scattered = false;
         for (int crossings = 0; crossings < 32 && !scattered; ++crossings) {
             ++stats.closest;
-            auto hit = rt_.intersect({o, d});
+            auto hit = rt_.intersect({o, d, 0, kInf, kAllMask, seeThrough});
             if (stats.footprint) stats.footprint->add(o, d, 0, hit ? hit->t : kInf);
             if (!hit) {
                 if (daylight_) {
@@ -631,6 +638,7 @@ double PathTracer::sample(const Sensor& sensor, PathSamples& samples, RayStats& 
                     o = offsetAlong(hit->point, hit->geometricNormal, d);
                     lastDelta = true;
                 }
+                seeThrough = true;
                 continue;
             }
             // A scattering surface: the next vertex. Surfaces are two-sided.

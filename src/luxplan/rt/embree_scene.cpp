@@ -7,6 +7,7 @@
 
 #include <luxplan/core/error.h>
 #include <luxplan/emitters/emitter_shape.h>
+#include <luxplan/rt/coincident_faces.h>
 
 namespace luxplan {
 
@@ -99,8 +100,9 @@ void EmbreeScene::attachMesh(SubScene& sub, const TriangleMesh& mesh, HitKind ki
     auto transmissive = [&](uint32_t material) { return scene_.materials[material].type == MaterialType::Glass; };
     size_t glass = 0;
     for (uint32_t m : mesh.materials) glass += transmissive(m);
+    const std::vector<char> prone = coincidentFacesOfOtherMaterials(mesh);
     if (glass == 0) {
-        attachTriangles(sub, mesh, kind, index, kOpaqueMask);
+        attachTriangles(sub, mesh, kind, index, kOpaqueMask, prone);
         return;
     }
     // The room shell's glass is its openings' panes.
@@ -108,20 +110,24 @@ void EmbreeScene::attachMesh(SubScene& sub, const TriangleMesh& mesh, HitKind ki
     if (!panes) hasGlass_ = true;
     // Split, keeping vertices (and normals) whole: unused vertices cost nothing.
     TriangleMesh parts[2];
+    std::vector<char> partProne[2];
     for (auto& part : parts) part.positions = mesh.positions, part.normals = mesh.normals;
     for (size_t t = 0; t < mesh.triangles.size(); ++t) {
-        TriangleMesh& part = parts[transmissive(mesh.materials[t]) ? 1 : 0];
-        part.triangles.push_back(mesh.triangles[t]);
-        part.materials.push_back(mesh.materials[t]);
+        const int k = transmissive(mesh.materials[t]) ? 1 : 0;
+        parts[k].triangles.push_back(mesh.triangles[t]);
+        parts[k].materials.push_back(mesh.materials[t]);
+        partProne[k].push_back(prone[t]);
     }
     for (int k = 0; k < 2; ++k) {
         if (parts[k].empty()) continue;
         splitMeshes_.push_back(std::move(parts[k]));
-        attachTriangles(sub, splitMeshes_.back(), kind, index, k == 0 ? kOpaqueMask : (panes ? kPaneMask : kGlassMask));
+        attachTriangles(sub, splitMeshes_.back(), kind, index, k == 0 ? kOpaqueMask : (panes ? kPaneMask : kGlassMask),
+                        partProne[k]);
     }
 }
 
-unsigned EmbreeScene::attachTriangles(SubScene& sub, const TriangleMesh& mesh, HitKind kind, int index, unsigned mask) {
+unsigned EmbreeScene::attachTriangles(SubScene& sub, const TriangleMesh& mesh, HitKind kind, int index, unsigned mask,
+                                      const std::vector<char>& tieProne) {
     RTCGeometry g = rtcNewGeometry(device_->handle(), RTC_GEOMETRY_TYPE_TRIANGLE);
     rtcSetGeometryMask(g, mask);
     rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), mesh.positions.size());
@@ -129,7 +135,8 @@ unsigned EmbreeScene::attachTriangles(SubScene& sub, const TriangleMesh& mesh, H
         rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), mesh.triangles.size()));
     std::memcpy(idx, mesh.triangles.data(), mesh.triangles.size() * 3 * sizeof(unsigned));
     std::vector<TriangleFace>& faces = faces_.emplace_back(mesh.triangles.size());
-    for (size_t t = 0; t < faces.size(); ++t) faces[t] = {mesh.geometricNormal(t), mesh.materials[t]};
+    for (size_t t = 0; t < faces.size(); ++t)
+        faces[t] = {mesh.geometricNormal(t), mesh.materials[t], t < tieProne.size() && tieProne[t] != 0};
     GeometryInfo info;
     info.kind = kind, info.index = index, info.mesh = &mesh, info.faces = &faces;
     info.entity = sub.flat ? (kind == HitKind::Emitter ? scene_.emitters[size_t(index)].entity
@@ -150,7 +157,7 @@ void EmbreeScene::attachEmitter(SubScene& sub, const Emitter& e, int index) {
     if (prim.kind == EmitterPrimitive::Kind::Triangles) {
         TriangleMesh& m = emitterMeshes_[index];
         m = std::move(prim.triangles);
-        attachTriangles(sub, m, HitKind::Emitter, index, kEmitterMask);
+        attachTriangles(sub, m, HitKind::Emitter, index, kEmitterMask, {});
         return;
     }
     bool sphere = prim.kind == EmitterPrimitive::Kind::Sphere;
@@ -207,7 +214,8 @@ void commitOnOneThread(RTCScene scene) {
 // ulps nearer than the one found, and whether it does depends on the BVH of the
 // moment; the path cache needs a ray that missed every move to meet what it met
 // before (lightsamplers/path_cache.h). About 2% of the search's time.
-constexpr RTCSceneFlags kTraversal = RTC_SCENE_FLAG_ROBUST;
+// The context filter function: the second query that breaks ties (below).
+const RTCSceneFlags kTraversal = RTC_SCENE_FLAG_ROBUST | RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION;
 
 RTCScene newSubScene(RTCDevice device) {
     RTCScene scene = rtcNewScene(device);
@@ -329,6 +337,68 @@ void EmbreeScene::commit() {
     device_->check("scene commit");
 }
 
+namespace {
+
+// Which of the faces a ray meets at exactly the same distance it hits: the one first
+// in a fixed order (instance, geometry, triangle), not the one the BVH of the moment
+// visits first, which changes with moves elsewhere. Asked where the first hit is on a
+// face that coincides with another material's in its item (TriangleFace::tieProne: a
+// partition's glass flush with its wooden base, a glass top on a leg) and for rays
+// that ask (Ray::breakTies: from a path inside see-through parts, which may rest on
+// other entities, a glass box on the floor). A second query over a sliver of t around
+// the hit sees every candidate there, keeps the least and refuses them all.
+struct TieQuery {
+    RTCIntersectContext context;  // first: Embree hands the filter its address
+    float t = 0;
+    bool found = false;
+    RTCHit best;
+};
+
+bool before(const RTCHit& a, const RTCHit& b) {
+    if (a.instID[0] != b.instID[0]) return a.instID[0] + 1u < b.instID[0] + 1u;  // flat (invalid id) first
+    if (a.geomID != b.geomID) return a.geomID < b.geomID;
+    return a.primID < b.primID;
+}
+
+void keepTheFirstOfTheTied(const RTCFilterFunctionNArguments* args) {
+    auto* q = reinterpret_cast<TieQuery*>(args->context);
+    for (unsigned i = 0; i < args->N; ++i) {
+        if (args->valid[i] == 0) continue;
+        args->valid[i] = 0;  // refused: the traversal goes on to the others
+        if (RTCRayN_tfar(args->ray, args->N, i) != q->t) continue;
+        RTCHit h;
+        h.Ng_x = RTCHitN_Ng_x(args->hit, args->N, i), h.Ng_y = RTCHitN_Ng_y(args->hit, args->N, i);
+        h.Ng_z = RTCHitN_Ng_z(args->hit, args->N, i);
+        h.u = RTCHitN_u(args->hit, args->N, i), h.v = RTCHitN_v(args->hit, args->N, i);
+        h.primID = RTCHitN_primID(args->hit, args->N, i), h.geomID = RTCHitN_geomID(args->hit, args->N, i);
+        h.instID[0] = RTCHitN_instID(args->hit, args->N, i, 0);
+        if (!q->found || before(h, q->best)) q->best = h, q->found = true;
+    }
+}
+
+}  // namespace
+
+bool EmbreeScene::tieProne(const RTCHit& h) const {
+    const SubScene& sub = h.instID[0] == RTC_INVALID_GEOMETRY_ID ? flat_ : subScenes_[size_t(subSceneOfInstance_[h.instID[0]])];
+    const GeometryInfo& info = sub.geometries[h.geomID];
+    return info.faces && (*info.faces)[h.primID].tieProne;
+}
+
+RTCHit EmbreeScene::firstOfTheTied(const RTCRayHit& found, float tMin) const {
+    TieQuery q;
+    rtcInitIntersectContext(&q.context);
+    q.context.filter = keepTheFirstOfTheTied;
+    q.t = found.ray.tfar;
+    RTCRayHit again;
+    again.ray = found.ray;
+    again.ray.tnear = std::max(tMin, q.t * (1 - 1e-5f));
+    again.ray.tfar = q.t * (1 + 1e-5f);
+    again.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    again.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    rtcIntersect1(top_, &q.context, &again);
+    return q.found ? q.best : found.hit;
+}
+
 std::optional<Hit> EmbreeScene::intersect(const Ray& r) const {
     if (log_) log_->closest.push_back(r);
     RTCIntersectContext context;
@@ -339,6 +409,7 @@ std::optional<Hit> EmbreeScene::intersect(const Ray& r) const {
     rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
     rtcIntersect1(top_, &context, &rh);
     if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
+    if (r.breakTies || tieProne(rh.hit)) rh.hit = firstOfTheTied(rh, float(r.tMin));
 
     const SubScene& sub =
         rh.hit.instID[0] == RTC_INVALID_GEOMETRY_ID ? flat_ : subScenes_[size_t(subSceneOfInstance_[rh.hit.instID[0]])];

@@ -52,6 +52,13 @@ struct Ray {
     double tMin = 0;
     double tMax = kInf;
     unsigned mask = kAllMask;
+    // Closest hit only: of faces met at exactly the same t, the first in a fixed order
+    // (instance, geometry, triangle) instead of the one the BVH of the moment visits
+    // first (a second query, about 40% of a ray's cost). For rays that may run inside a
+    // see-through part, where its faces can coincide with another material's: a glass
+    // top resting on a wooden leg (lightsamplers/path_cache.h needs the same hit after
+    // any move).
+    bool breakTies = false;
 };
 
 // Every ray a scene traces, for replaying them through Embree alone (bench/): what
@@ -108,6 +115,9 @@ private:
     struct TriangleFace {
         Vec3 normal;  // unit, from the winding, in double (TriangleMesh::geometricNormal)
         uint32_t material = 0;
+        // In one plane with an overlapping face of another material of its item
+        // (rt/coincident_faces.h): a hit here breaks ties as Ray::breakTies does.
+        bool tieProne = false;
     };
     struct GeometryInfo {
         HitKind kind = HitKind::Static;
@@ -132,9 +142,16 @@ private:
 
     // Attaches a mesh as up to two geometries: opaque triangles and glass triangles.
     void attachMesh(SubScene& sub, const TriangleMesh& mesh, HitKind kind, int index);
-    unsigned attachTriangles(SubScene& sub, const TriangleMesh& mesh, HitKind kind, int index, unsigned mask);
+    // `tieProne`: per triangle, TriangleFace::tieProne (empty: none).
+    unsigned attachTriangles(SubScene& sub, const TriangleMesh& mesh, HitKind kind, int index, unsigned mask,
+                             const std::vector<char>& tieProne);
     void attachEmitter(SubScene& sub, const Emitter& emitter, int index);
     void finishSubScene(SubScene& sub);
+    // Whether a hit is on a TriangleFace::tieProne face.
+    bool tieProne(const RTCHit& hit) const;
+    // Of the faces `found`'s ray meets at exactly its distance, the first in a fixed
+    // order (instance, geometry, triangle): a second query over a sliver of t around it.
+    RTCHit firstOfTheTied(const RTCRayHit& found, float tMin) const;
     // Writes a flat geometry's vertices where worldFromEntity_ puts them.
     void place(RTCGeometry g, const GeometryInfo& info);
 
