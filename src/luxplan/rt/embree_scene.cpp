@@ -32,11 +32,14 @@ EmbreeDevice::EmbreeDevice() {
     rtcSetDeviceErrorFunction(device_, &EmbreeDevice::onError, this);
     // The tracer needs ray masks (shadow rays see opaque surfaces, panes and
     // luminaires apart) and two-sided triangles; an Embree built otherwise would give
-    // wrong light silently.
+    // wrong light silently. Filter functions break ties at coincident faces (intersect):
+    // without them the path cache could differ from a fresh trace, silently too.
     const char* missing = nullptr;
     if (rtcGetDeviceProperty(device_, RTC_DEVICE_PROPERTY_RAY_MASK_SUPPORTED) == 0) missing = "ray masks (EMBREE_RAY_MASK=ON)";
     else if (rtcGetDeviceProperty(device_, RTC_DEVICE_PROPERTY_BACKFACE_CULLING_ENABLED) != 0)
         missing = "two-sided triangles (EMBREE_BACKFACE_CULLING=OFF)";
+    else if (rtcGetDeviceProperty(device_, RTC_DEVICE_PROPERTY_FILTER_FUNCTION_SUPPORTED) == 0)
+        missing = "filter functions (EMBREE_FILTER_FUNCTION=ON)";
     if (missing) {
         rtcReleaseDevice(device_);
         throw EmbreeError(std::string("this Embree library was built without ") + missing + ", which luxplan needs");
