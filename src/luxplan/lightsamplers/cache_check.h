@@ -1,7 +1,8 @@
 // Checking the path cache against fresh traces (MeasureOptions::checkCache): every path
 // the cache reads back is traced again from scratch for the same layout and the two are
-// compared bit for bit. They agree but where a ray meets coincident faces of two
-// materials (path_cache.h); a difference names the path, so a user can find the faces.
+// compared bit for bit. They agree but where a path meets two entities' faces of
+// different materials flush in one plane before any see-through surface (path_cache.h);
+// a difference names the path and where it parts, so a user can find the faces.
 #pragma once
 
 #include <cstddef>

@@ -381,10 +381,9 @@ void keepTheFirstOfTheTied(const RTCFilterFunctionNArguments* args) {
 
 }  // namespace
 
-bool EmbreeScene::tieProne(const RTCHit& h) const {
+EmbreeScene::Met EmbreeScene::metBy(const RTCHit& h) const {
     const SubScene& sub = h.instID[0] == RTC_INVALID_GEOMETRY_ID ? flat_ : subScenes_[size_t(subSceneOfInstance_[h.instID[0]])];
-    const GeometryInfo& info = sub.geometries[h.geomID];
-    return info.faces && (*info.faces)[h.primID].tieProne;
+    return {&sub, &sub.geometries[h.geomID]};
 }
 
 RTCHit EmbreeScene::firstOfTheTied(const RTCRayHit& found, float tMin) const {
@@ -412,11 +411,14 @@ std::optional<Hit> EmbreeScene::intersect(const Ray& r) const {
     rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
     rtcIntersect1(top_, &context, &rh);
     if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
-    if (r.breakTies || tieProne(rh.hit)) rh.hit = firstOfTheTied(rh, float(r.tMin));
+    Met met = metBy(rh.hit);
+    if (r.breakTies || (met.info->faces && (*met.info->faces)[rh.hit.primID].tieProne)) {
+        rh.hit = firstOfTheTied(rh, float(r.tMin));
+        met = metBy(rh.hit);
+    }
 
-    const SubScene& sub =
-        rh.hit.instID[0] == RTC_INVALID_GEOMETRY_ID ? flat_ : subScenes_[size_t(subSceneOfInstance_[rh.hit.instID[0]])];
-    const GeometryInfo& info = sub.geometries[rh.hit.geomID];
+    const SubScene& sub = *met.sub;
+    const GeometryInfo& info = *met.info;
     Hit hit;
     hit.t = rh.ray.tfar;
     hit.point = r.origin + r.direction * hit.t;

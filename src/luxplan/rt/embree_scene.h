@@ -147,8 +147,12 @@ private:
                              const std::vector<char>& tieProne);
     void attachEmitter(SubScene& sub, const Emitter& emitter, int index);
     void finishSubScene(SubScene& sub);
-    // Whether a hit is on a TriangleFace::tieProne face.
-    bool tieProne(const RTCHit& hit) const;
+    // What a hit met: its sub-scene and geometry.
+    struct Met {
+        const SubScene* sub;
+        const GeometryInfo* info;
+    };
+    Met metBy(const RTCHit& hit) const;
     // Of the faces `found`'s ray meets at exactly its distance, the first in a fixed
     // order (instance, geometry, triangle): a second query over a sliver of t around it.
     RTCHit firstOfTheTied(const RTCRayHit& found, float tMin) const;
