@@ -11,7 +11,7 @@ namespace {
 DateTime at(const char* iso) { return parseIso8601(iso).value(); }
 
 const Site kAthens{37.98, 23.73, 0};
-const DaylightBakeOptions kSmall{64, 32, 2};
+const DaylightBakeOptions kSmall{64, 32, 2, {}};
 
 DaylightParams preethamDay(const char* from, const char* to, double step) {
     DaylightParams p;
@@ -198,7 +198,7 @@ TEST(DaylightPreetham, BakedZenithMatchesTheModel) {
     DaylightParams p;
     p.turbidity = 4;
     p.sunOverride = SunOverride{50, 200, std::nullopt};
-    DaylightEnvironment e = buildDaylight(p, Site{}, {512, 256, 2});
+    DaylightEnvironment e = buildDaylight(p, Site{}, {512, 256, 2, {}});
     // The top row averages a 0.7 deg cap; the zenith luminance varies slowly there.
     double yz = preethamZenithLuminance(4, radians(40));
     EXPECT_NEAR(e.Lv({0, 0, 1}), yz, 0.01 * yz);
@@ -221,7 +221,7 @@ TEST(DaylightCieGeneral, SkyGivesItsIlluminanceAndSunComesFromTurbidity) {
     p.cieSkyType = 12;
     p.horizontalIlluminanceLx = 15000;
     p.sunOverride = SunOverride{45, 180, std::nullopt};
-    DaylightEnvironment e = buildDaylight(p, Site{}, {256, 128, 2});
+    DaylightEnvironment e = buildDaylight(p, Site{}, {256, 128, 2, {}});
     EXPECT_NEAR(e.skyHorizontalIlluminance(), 15000, 0.01 * 15000);
     ASSERT_TRUE(e.hasSun());
     EXPECT_NEAR(e.sunDisks()[0].normalIlluminanceLx, preethamSunNormalIlluminance(3, radians(45)), 1e-9);

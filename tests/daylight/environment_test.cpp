@@ -29,7 +29,7 @@ DaylightEnvironment uniformSky(double nits, double rho, int w = 128, int h = 64)
     p.model = SkyModelType::Uniform;
     p.luminanceNits = nits;
     p.groundReflectance = rho;
-    return buildDaylight(p, Site{}, {w, h, 1});
+    return buildDaylight(p, Site{}, {w, h, 1, {}});
 }
 
 DaylightEnvironment overcastSky(double lux, double rho) {
@@ -37,7 +37,7 @@ DaylightEnvironment overcastSky(double lux, double rho) {
     p.model = SkyModelType::CieOvercast;
     p.horizontalIlluminanceLx = lux;
     p.groundReflectance = rho;
-    return buildDaylight(p, Site{}, {256, 128, 2});
+    return buildDaylight(p, Site{}, {256, 128, 2, {}});
 }
 
 DaylightEnvironment preethamSky(int w = 64, int h = 32) {
@@ -45,7 +45,7 @@ DaylightEnvironment preethamSky(int w = 64, int h = 32) {
     p.turbidity = 3;
     p.sunOverride = SunOverride{35, 200, std::nullopt};
     p.groundReflectance = 0.2;
-    return buildDaylight(p, Site{}, {w, h, 2});
+    return buildDaylight(p, Site{}, {w, h, 2, {}});
 }
 
 // Monte Carlo estimate of the illuminance on the open horizontal plane by sampling the sky
@@ -181,7 +181,7 @@ DaylightEnvironment threeSuns() {
     p.luminanceNits = 0;
     p.groundReflectance = 0;
     p.sun = false;
-    DaylightEnvironment sky = buildDaylight(p, Site{}, {16, 8, 1});
+    DaylightEnvironment sky = buildDaylight(p, Site{}, {16, 8, 1, {}});
     std::vector<SunDisk> disks;
     auto disk = [&](double alt, double az, double en) {
         disks.push_back(sunDisk(alt, az, 1.0 / 3, en));
@@ -332,7 +332,7 @@ DaylightEnvironment blackSkyWithoutSun() {
     p.model = SkyModelType::Uniform;
     p.luminanceNits = 0;
     p.sun = false;
-    return buildDaylight(p, Site{}, {16, 8, 1});
+    return buildDaylight(p, Site{}, {16, 8, 1, {}});
 }
 
 // sunLe and sunPdf look disks up by direction; they must find exactly the disks a scan

@@ -27,7 +27,9 @@ TEST(CoincidentFacesOfOtherMaterials, AFlushCoreFlagsTheTopsItShares) {
     EXPECT_EQ(flaggedOf(mesh, flags, 1), 4);
     EXPECT_EQ(flaggedOf(mesh, flags, 0), 4);
     for (size_t t = 0; t < flags.size(); ++t)
-        if (flags[t]) EXPECT_NEAR(std::abs(mesh.geometricNormal(t).z), 1.0, 1e-12);
+        if (flags[t]) {
+            EXPECT_NEAR(std::abs(mesh.geometricNormal(t).z), 1.0, 1e-12);
+        }
 }
 
 TEST(CoincidentFacesOfOtherMaterials, OnlyTwoMaterialsOverlappingInAPlaneAreFlagged) {
