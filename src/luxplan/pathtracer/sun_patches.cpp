@@ -31,7 +31,8 @@ SunPatches::SunPatches(const Scene& scene, bool enabled) : enabled_(enabled) {
         const Rect3 rect = openingQuad(room->box, o);
         Vec3 n = rect.normal();
         if (dot(n, rect.center() - centre) < 0) n = -n;
-        openings_.push_back({RectTarget(rect), n, rect.area()});
+        const double lengthU = length(rect.edgeU), lengthV = length(rect.edgeV);
+        openings_.push_back({RectTarget(rect), n, rect.area(), rect.edgeU / lengthU, rect.edgeV / lengthV, lengthU, lengthV});
     }
 }
 
@@ -93,12 +94,13 @@ bool SunPatches::shadesCone(const Vec3& p, double offset, const Vec3& axis, doub
         // Where the axis from p meets the plane, and how far the cone's rays from any q
         // meet it from there: |w / (n.w) - axis / (n.axis)| <= delta / least + delta / (least nc),
         // and a start moved by `offset` moves the meeting by at most offset (1 + 1 / least).
-        const Vec3 hit = p + axis * (depth / nc);
-        const double spread = depth * delta * (1 / least + 1 / (least * nc)) + offset * (1 + 1 / least);
+        // (Two divisions, independent of each other: this runs at most surface vertices.)
+        const double overNc = 1 / nc, overLeast = 1 / least;
+        const Vec3 hit = p + axis * (depth * overNc);
+        const double spread = (depth * delta * (1 + overNc) + offset * (least + 1)) * overLeast;
         const double margin = spread * (1 + 1e-6) + 1e-7 * (1 + std::abs(hit.x) + std::abs(hit.y) + std::abs(hit.z));
-        const double lenU = length(r.edgeU), lenV = length(r.edgeV);
-        const double a = dot(hit - r.corner, r.edgeU) / lenU, b = dot(hit - r.corner, r.edgeV) / lenV;
-        if (a < -margin || a > lenU + margin || b < -margin || b > lenV + margin) continue;  // misses it
+        const double a = dot(hit - r.corner, o.unitU), b = dot(hit - r.corner, o.unitV);
+        if (a < -margin || a > o.lengthU + margin || b < -margin || b > o.lengthV + margin) continue;  // misses it
         return false;
     }
     return true;

@@ -59,6 +59,8 @@ private:
         RectTarget target;
         Vec3 outward;  // unit
         double area = 0;
+        Vec3 unitU, unitV;  // the rectangle's edges as unit vectors, and their lengths
+        double lengthU = 0, lengthV = 0;
     };
     std::vector<Entrance> openings_;
     Bounds3 room_;
