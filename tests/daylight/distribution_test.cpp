@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
+#include <vector>
 
 #include <luxplan/core/rng.h>
 #include <luxplan/daylight/distribution.h>
@@ -165,6 +167,44 @@ TEST(Distribution2D, SamplesMatchCellPdfs) {
     EXPECT_EQ(observed[2 * nx + 3], 0);
     auto r = test::chi2Test(observed, expected);
     EXPECT_GT(r.pValue, 0.01) << r.table;
+}
+
+// Rows equal to the row before them (a sky map's ground half) share one distribution:
+// every sample, pdf and cell pdf is bit for bit what a distribution of its own per row
+// gives (the marginal and a Distribution1D of the chosen row, built afresh).
+TEST(Distribution2D, RowsThatRepeatSampleAsTheirOwnWould) {
+    const int nx = 9, ny = 8;
+    std::vector<double> values(nx * ny);
+    for (int iy = 0; iy < ny; ++iy)
+        for (int ix = 0; ix < nx; ++ix) values[iy * nx + ix] = iy < 3 ? 1.0 + (ix * (iy + 2)) % 7 : iy < 7 ? 0.75 : 2.0;
+    std::vector<double> xe(nx + 1), ye(ny + 1);
+    for (int ix = 0; ix <= nx; ++ix) xe[ix] = 0.3 * ix + 0.01 * ix * ix;
+    for (int iy = 0; iy <= ny; ++iy) ye[iy] = -1 + 0.25 * iy;
+    const Distribution2D d(values, xe, ye);
+    ASSERT_EQ(d.ny(), size_t(ny));
+    std::vector<double> rowIntegrals;
+    std::vector<Distribution1D> rows;
+    for (int iy = 0; iy < ny; ++iy) {
+        rows.emplace_back(std::span<const double>(values).subspan(size_t(iy) * nx, nx), xe);
+        rowIntegrals.push_back(rows.back().integral());
+    }
+    const Distribution1D marginal(rowIntegrals, ye);
+    Rng rng(4);
+    for (int k = 0; k < 20000; ++k) {
+        const Vec2 u{rng.uniform(), rng.uniform()};
+        const auto s = d.sample(u);
+        double pdfY = 0, pdfX = 0;
+        size_t iy = 0, ix = 0;
+        const double y = marginal.sampleContinuous(u.y, &pdfY, &iy);
+        const double x = rows[iy].sampleContinuous(u.x, &pdfX, &ix);
+        ASSERT_EQ(s.iy, iy);
+        ASSERT_EQ(s.ix, ix);
+        ASSERT_EQ(s.p.x, x);
+        ASSERT_EQ(s.p.y, y);
+        ASSERT_EQ(s.pdf, pdfX * pdfY);
+        ASSERT_EQ(d.cellPdf(ix, iy), marginal.binPdf(iy) * rows[iy].binPdf(ix));
+        ASSERT_EQ(d.pdf(s.p), s.pdf);
+    }
 }
 
 }  // namespace

@@ -92,10 +92,13 @@ Distribution2D::Distribution2D(std::span<const double> values, std::span<const d
     const size_t nx = xEdges.size() - 1, ny = yEdges.size() - 1;
     if (xEdges.size() < 2 || yEdges.size() < 2 || values.size() != nx * ny)
         throw std::invalid_argument("Distribution2D: values must have (xEdges-1)*(yEdges-1) entries");
-    conditional_.reserve(ny);
     std::vector<double> rowIntegrals(ny);
+    rowOf_.reserve(ny);
     for (size_t iy = 0; iy < ny; ++iy) {
-        conditional_.emplace_back(values.subspan(iy * nx, nx), xEdges);
+        const std::span<const double> rowValues = values.subspan(iy * nx, nx);
+        if (iy == 0 || !std::equal(rowValues.begin(), rowValues.end(), values.begin() + std::ptrdiff_t((iy - 1) * nx)))
+            conditional_.emplace_back(rowValues, xEdges);
+        rowOf_.push_back(uint32_t(conditional_.size() - 1));
         rowIntegrals[iy] = conditional_.back().integral();
     }
     marginal_ = Distribution1D(rowIntegrals, yEdges);
@@ -105,20 +108,20 @@ Distribution2D::Sample Distribution2D::sample(Vec2 u) const {
     Sample s;
     double pdfY = 0, pdfX = 0;
     s.p.y = marginal_.sampleContinuous(u.y, &pdfY, &s.iy);
-    s.p.x = conditional_[s.iy].sampleContinuous(u.x, &pdfX, &s.ix);
+    s.p.x = row(s.iy).sampleContinuous(u.x, &pdfX, &s.ix);
     s.pdf = pdfX * pdfY;
     return s;
 }
 
 double Distribution2D::cellPdf(size_t ix, size_t iy) const {
-    return marginal_.binPdf(iy) * conditional_[iy].binPdf(ix);
+    return marginal_.binPdf(iy) * row(iy).binPdf(ix);
 }
 
 double Distribution2D::pdf(Vec2 p) const {
     if (p.y < marginal_.lower() || p.y > marginal_.upper()) return 0;
-    const Distribution1D& row = conditional_[marginal_.binOf(p.y)];
-    if (p.x < row.lower() || p.x > row.upper()) return 0;
-    return cellPdf(row.binOf(p.x), marginal_.binOf(p.y));
+    const Distribution1D& conditional = row(marginal_.binOf(p.y));
+    if (p.x < conditional.lower() || p.x > conditional.upper()) return 0;
+    return cellPdf(conditional.binOf(p.x), marginal_.binOf(p.y));
 }
 
 }  // namespace luxplan

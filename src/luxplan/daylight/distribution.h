@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -69,10 +70,15 @@ public:
     double integral() const { return marginal_.integral(); }
     bool allZero() const { return marginal_.allZero(); }
     size_t nx() const { return conditional_.empty() ? 0 : conditional_.front().size(); }
-    size_t ny() const { return conditional_.size(); }
+    size_t ny() const { return rowOf_.size(); }
 
 private:
+    const Distribution1D& row(size_t iy) const { return conditional_[rowOf_[iy]]; }
+
+    // Rows equal to the row before them share its distribution (a sky map's ground
+    // half: one row's cdf in the cache instead of 128 of them, the same numbers).
     std::vector<Distribution1D> conditional_;
+    std::vector<uint32_t> rowOf_;  // per row, its distribution in conditional_
     Distribution1D marginal_;
 };
 

@@ -214,7 +214,7 @@ EnvironmentSample DaylightEnvironment::sampleSky(Vec2 u) const {
     int ix, iy;
     map_.pixelOf(s.wi, ix, iy);
     s.pdf = skyDistribution_.cellPdf(size_t(ix), size_t(iy));
-    s.Le = map_.at(ix, iy);
+    s.Le = s.wi.z <= 0 ? ground_ : map_.at(ix, iy);  // as Le(): the ground's rows hold ground_
     return s;
 }
 
