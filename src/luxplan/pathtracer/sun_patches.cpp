@@ -94,7 +94,7 @@ bool SunPatches::shadesCone(const Vec3& p, double offset, const Vec3& axis, doub
         // Where the axis from p meets the plane, and how far the cone's rays from any q
         // meet it from there: |w / (n.w) - axis / (n.axis)| <= delta / least + delta / (least nc),
         // and a start moved by `offset` moves the meeting by at most offset (1 + 1 / least).
-        // (Two divisions, independent of each other: this runs at most surface vertices.)
+        // (Two divisions, independent of each other: this runs at nearly every surface vertex.)
         const double overNc = 1 / nc, overLeast = 1 / least;
         const Vec3 hit = p + axis * (depth * overNc);
         const double spread = (depth * delta * (1 + overNc) + offset * (least + 1)) * overLeast;
