@@ -28,7 +28,7 @@ def main():
         sys.exit(__doc__)
     old, new = sys.argv[1], sys.argv[2]
     paths = int(sys.argv[3]) if len(sys.argv) > 3 else 256
-    scenes = ["scenes/demo/office.json"] + sorted(s for s in glob.glob("scenes/paper/*.json") if not s.endswith("-layout.json"))
+    scenes = ["scenes/demo/office.json"] + sorted(glob.glob("scenes/paper/*.json"))
     print("| scene | rays new/old | directional: median se^2 new/old | others: median se^2 new/old |")
     print("|---|---|---|---|")
     for scene in scenes:

@@ -66,8 +66,7 @@ def main():
         names, options = ("sobol", "random"), {"sobol": ["--sampling", "sobol"], "random": ["--sampling", "random"]}
     binaries = binaries or {m: binary for m in names}
     first, second = names
-    scenes = chosen or ["scenes/demo/office.json"] + sorted(
-        s for s in glob.glob("scenes/paper/*.json") if not s.endswith("-layout.json"))
+    scenes = chosen or ["scenes/demo/office.json"] + sorted(glob.glob("scenes/paper/*.json"))
     print(f"{paths} paths per point, {seeds} seeds")
     print(f"| scene | rays {first}/{second} | time {first}/{second} | directional: median var {first}/{second} "
           f"| others: median var {first}/{second} |")

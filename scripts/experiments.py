@@ -487,11 +487,11 @@ FIG8_SEEDS = 4
 def fig8(r, out):
     scene = paper("fig8-lab")
     paths = load(scene)["optimizer"]["report_paths_per_point"]
-    sym = load(paper("fig8-lab-symmetric-layout"))
+    sym = load(paper("layouts/fig8-lab-symmetric"))
     turned = copy.deepcopy(sym)
     for name in ("i1", "i2", "i3", "i4"):
         turned["entities"][name]["rotation"] = 90
-    layouts = {"symmetric, desks facing the windows (0°)": paper("fig8-lab-symmetric-layout"),
+    layouts = {"symmetric, desks facing the windows (0°)": paper("layouts/fig8-lab-symmetric"),
                "symmetric, islands turned 90°": os.path.join(out, "fig8", "symmetric-90.json")}
     write_json(layouts["symmetric, islands turned 90°"], turned)
 
@@ -521,7 +521,7 @@ def fig8_page(rows):
     lines = ["## Figure 8: the computer lab against its symmetric arrangements", "",
              "`fig8-lab.json` (8 desks, 8 screens, low November sun through three south windows) optimized "
              "with seeds 1–%d at its own settings, against the usual 2 × 2 grid of islands in both "
-             "symmetric orientations (`fig8-lab-symmetric-layout.json`, and the same islands turned 90°). "
+             "symmetric orientations (`layouts/fig8-lab-symmetric.json`, and the same islands turned 90°). "
              "Each layout measured with seed + %d at 512 paths per point." % (FIG8_SEEDS, REMEASURE_OFFSET), "",
              "| layout | peak glare (cd/m², max over 8 screens) | mean glare (cd/m²) | desks in 300–500 lx | screens < 100 cd/m² | C |",
              "|---|---|---|---|---|---|"]

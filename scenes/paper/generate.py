@@ -430,10 +430,12 @@ def fig8_lab():
         for s, sgn, rot in (("a", -1, 0), ("b", 1, 180)):
             layout["entities"][f"{n}.monitor_{s}"] = {
                 "position": [0.0, 0.2 * sgn, 0.75], "rotation": rot, "region": 0}
-    with open(os.path.join(HERE, "fig8-lab-symmetric-layout.json"), "w") as f:
+    # Beside the scenes, not among them: a layout file is no scene (validate refuses it).
+    os.makedirs(os.path.join(HERE, "layouts"), exist_ok=True)
+    with open(os.path.join(HERE, "layouts", "fig8-lab-symmetric.json"), "w") as f:
         json.dump(layout, f, indent=1)
         f.write("\n")
-    print("wrote fig8-lab-symmetric-layout.json")
+    print("wrote layouts/fig8-lab-symmetric.json")
 
 
 # ---------------------------------------------------------------------------

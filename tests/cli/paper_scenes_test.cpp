@@ -29,7 +29,7 @@ std::vector<std::string> paperScenes() {
     for (const auto& entry : fs::directory_iterator(kPaperScenes)) {
         std::string name = entry.path().filename().string();
         // Hidden files are scratch (scripts/adaptive-stops.py writes its scenes there).
-        if (entry.path().extension() == ".json" && name.find("-layout") == std::string::npos && name[0] != '.')
+        if (entry.path().extension() == ".json" && name[0] != '.')
             names.push_back(entry.path().stem().string());
     }
     std::sort(names.begin(), names.end());
@@ -74,7 +74,7 @@ INSTANTIATE_TEST_SUITE_P(Bundled, PaperScene, ::testing::ValuesIn(paperScenes())
 TEST(PaperScenes, AllTwelveAreBundledAndTheLabLayoutReadsBack) {
     EXPECT_EQ(paperScenes().size(), 12u);
     test::CliResult r = test::runCli("validate " + (kPaperScenes / "fig8-lab.json").string() + " --layout " +
-                                     (kPaperScenes / "fig8-lab-symmetric-layout.json").string());
+                                     (kPaperScenes / "layouts" / "fig8-lab-symmetric.json").string());
     EXPECT_EQ(r.exitCode, 0) << r.output;
 }
 

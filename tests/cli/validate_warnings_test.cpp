@@ -49,8 +49,7 @@ TEST(ValidateWarnings, NoneForTheBundledScenes) {
     namespace fs = std::filesystem;
     std::vector<fs::path> scenes = {fs::path(LUXPLAN_SOURCE_DIR) / "scenes" / "demo" / "office.json"};
     for (const auto& entry : fs::directory_iterator(fs::path(LUXPLAN_SOURCE_DIR) / "scenes" / "paper"))
-        if (entry.path().extension() == ".json" && entry.path().string().find("-layout") == std::string::npos)
-            scenes.push_back(entry.path());
+        if (entry.path().extension() == ".json") scenes.push_back(entry.path());
     for (const fs::path& scene : scenes) {
         test::CliResult r = test::runCli("validate " + scene.string());
         EXPECT_EQ(r.exitCode, 0) << r.output;
