@@ -12,13 +12,13 @@
 namespace luxplan {
 namespace {
 
-struct Office {
+struct DaylitOffice {
     Scene scene = io::loadScene(std::string(LUXPLAN_SOURCE_DIR) + "/scenes/demo/office.json");
     DaylightEnvironment daylight = buildDaylight(*scene.daylight, scene.site);
 };
 
-Office& office() {
-    static Office o;
+DaylitOffice& daylitOffice() {
+    static DaylitOffice o;
     return o;
 }
 
@@ -33,7 +33,7 @@ void report(benchmark::State& state, const OptimizerResult& r, int64_t iteration
 }
 
 void BM_OptimizeGeometryOnly(benchmark::State& state) {
-    Office& o = office();
+    DaylitOffice& o = daylitOffice();
     OptimizerOptions options = optimizerOptions(o.scene);
     options.iterations = 5000;
     options.stopAtZeroCost = false;
@@ -49,7 +49,7 @@ void BM_OptimizeGeometryOnly(benchmark::State& state) {
 BENCHMARK(BM_OptimizeGeometryOnly)->Unit(benchmark::kMillisecond);
 
 void BM_OptimizeWithLighting(benchmark::State& state) {
-    Office& o = office();
+    DaylitOffice& o = daylitOffice();
     OptimizerOptions options = optimizerOptions(o.scene);
     options.iterations = 200;
     // The argument is the thread count, limited as luxplan's main() does for --threads.
@@ -73,7 +73,7 @@ BENCHMARK(BM_OptimizeWithLighting)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond
 // One geometric evaluation (all constraints and the overlap of the moved entities)
 // after moving one workstation.
 void BM_GeometricEvaluation(benchmark::State& state) {
-    Office& o = office();
+    DaylitOffice& o = daylitOffice();
     GeometryEvaluator geometry(o.scene);
     Layout layout = initialLayout(o.scene);
     geometry.evaluate(worldTransforms(o.scene, layout));

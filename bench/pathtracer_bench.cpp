@@ -12,8 +12,8 @@ namespace luxplan {
 namespace {
 
 // `measure`'s estimator by default; the search's (no sunlit patches) for the moves.
-struct Office {
-    explicit Office(const PathTracerOptions& tracing = {}) : tracer(rt, &daylight, tracing) {}
+struct TracedOffice {
+    explicit TracedOffice(const PathTracerOptions& tracing = {}) : tracer(rt, &daylight, tracing) {}
     Scene scene = io::loadScene(std::string(LUXPLAN_SOURCE_DIR) + "/scenes/demo/office.json");
     DaylightEnvironment daylight = buildDaylight(*scene.daylight, scene.site);
     EmbreeScene rt{scene, initialLayout(scene)};
@@ -26,15 +26,15 @@ PathTracerOptions searchTracing() {
     return o;
 }
 
-Office& office() {
-    static Office o;
+TracedOffice& tracedOffice() {
+    static TracedOffice o;
     return o;
 }
 
 // The same measurement (same seed: the same rays) every iteration, so that
 // BM_ReplayOfficeRays replays exactly its rays.
 void BM_MeasureOffice(benchmark::State& state) {
-    Office& o = office();
+    TracedOffice& o = tracedOffice();
     tbb::global_control oneThread(tbb::global_control::max_allowed_parallelism, 1);
     MeasureOptions options;
     options.pathsPerPoint = int(state.range(0));
@@ -56,7 +56,7 @@ BENCHMARK(BM_MeasureOffice)->Arg(64)->Unit(benchmark::kMillisecond);
 // Embree alone: the time the path tracer would take if rays were all it cost. The
 // ratio of the two benchmarks' times is the tracer's overhead on the same rays.
 void BM_ReplayOfficeRays(benchmark::State& state) {
-    Office& o = office();
+    TracedOffice& o = tracedOffice();
     tbb::global_control oneThread(tbb::global_control::max_allowed_parallelism, 1);
     static RayLog log = [&] {
         RayLog l;
@@ -85,7 +85,7 @@ BENCHMARK(BM_ReplayOfficeRays)->Unit(benchmark::kMillisecond);
 // what incremental re-evaluation saves on the paper's kind of move. The range's
 // second argument is the paths per point.
 void BM_OfficeWorkstationMove(benchmark::State& state) {
-    static Office o(searchTracing());  // its own: the layout changes
+    static TracedOffice o(searchTracing());  // its own: the layout changes
     tbb::global_control oneThread(tbb::global_control::max_allowed_parallelism, 1);
     const bool incremental = state.range(0) != 0;
     MeasureOptions options;

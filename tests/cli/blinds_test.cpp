@@ -32,11 +32,11 @@ nlohmann::json room() {
     })");
 }
 
-struct Value {
+struct FloorReading {
     double value = 0, error = 0;
 };
 
-Value measureFloor(const nlohmann::json& scene) {
+FloorReading measureFloor(const nlohmann::json& scene) {
     test::TempDir dir;
     const auto file = dir.write("blind.json", scene.dump());
     test::CliResult r = test::runCli("measure " + file.string() + " --json --paths 20000 --seed 4 --threads 2");
@@ -48,9 +48,9 @@ Value measureFloor(const nlohmann::json& scene) {
 
 TEST(Blinds, ADeployedTranslucentBlindPassesHalfItsTransmittance) {
     nlohmann::json scene = room();
-    const Value with = measureFloor(scene);
+    const FloorReading with = measureFloor(scene);
     scene["geometry"][0]["openings"][0]["blind"]["deployed"] = false;
-    const Value open = measureFloor(scene);
+    const FloorReading open = measureFloor(scene);
     ASSERT_GT(open.value, 0);
     const double ratio = with.value / open.value;
     const double sigma = ratio * std::hypot(with.error / with.value, open.error / open.value);

@@ -19,11 +19,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Value {
+struct SamplerReading {
     double value = 0, error = 0;
 };
 
-Value sampler(const fs::path& scene, const std::string& name) {
+SamplerReading sampler(const fs::path& scene, const std::string& name) {
     test::CliResult r = test::runCli("measure " + scene.string() + " --json --paths 2048 --seed 1 --threads 2");
     EXPECT_EQ(r.exitCode, 0) << r.output;
     const nlohmann::json measured = nlohmann::json::parse(r.output);
@@ -46,7 +46,7 @@ TEST(Fig9Lamps, TheStandLampsLightTheRoom) {
     test::TempDir dir;
     const fs::path dark = dir.write("no-lamps.json", scene.dump());
     for (const char* name : {"dining.table", "reading.book"}) {
-        Value with = sampler(night, name), without = sampler(dark, name);
+        SamplerReading with = sampler(night, name), without = sampler(dark, name);
         double sigma = std::hypot(with.error, without.error);
         EXPECT_GT(with.value - without.value, 5 * sigma) << name << ": " << with.value << " +- " << with.error << " lx with the lamps, "
                                                          << without.value << " +- " << without.error << " without";

@@ -13,7 +13,7 @@ namespace {
 
 // A 0.1 x 0.1 m panel of 20000 cd/m2 2 m ahead of and 1 m above an eye, under a
 // uniform sky; a second eye looks away from it.
-const char* kScene = R"({"luxplan": 1,
+const char* kGlareScene = R"({"luxplan": 1,
   "daylight": {"sky": {"model": "uniform", "luminance_nits": 1000}, "ground_reflectance": 0},
   "luminaires": [{"name": "panel", "shape": "rect", "center": [2, 0, 1], "normal": [0, 0, -1], "up": [0, 1, 0],
                   "size": [0.1, 0.1], "flux_lm": 628.3185}],
@@ -25,7 +25,7 @@ const char* kScene = R"({"luxplan": 1,
 
 TEST(GlareCli, MeasureGivesTheSourcesFound) {
     test::TempDir dir;
-    auto file = dir.write("scene.json", kScene);
+    auto file = dir.write("scene.json", kGlareScene);
     test::CliResult r = test::runCli("measure " + file.string() + " --paths 200 --threads 2 --json");
     ASSERT_EQ(r.exitCode, 0) << r.output;
     const auto samplers = nlohmann::json::parse(r.output)["samplers"];

@@ -24,7 +24,7 @@
 namespace luxplan {
 namespace {
 
-const std::string kScene = test::smallRoomScene();
+const std::string kSmallRoomScene = test::smallRoomScene();
 
 std::string readAll(const std::filesystem::path& p) {
     std::ifstream in(p, std::ios::binary);
@@ -89,7 +89,7 @@ pid_t startOptimize(const std::string& scene, const std::string& out, const std:
 
 TEST(OutputSafety, KillNineAtAnyMomentLeavesWholeFilesOrNone) {
     test::TempDir dir;
-    const std::string scene = dir.write("scene.json", kScene).string();
+    const std::string scene = dir.write("scene.json", kSmallRoomScene).string();
     // How long a whole run takes here, to spread the kills over it.
     const auto start = std::chrono::steady_clock::now();
     {
@@ -218,7 +218,7 @@ FullDiskRun runOnFullDisk(const std::string& scene, size_t freeBytes, const std:
 
 TEST(OutputSafety, AFullDiskIsAClearErrorAndLeavesNoPartialFile) {
     test::TempDir dir;
-    const std::string scene = dir.write("scene.json", kScene).string();
+    const std::string scene = dir.write("scene.json", kSmallRoomScene).string();
     std::filesystem::create_directories(dir.path() / "disk");
     int failed = 0;
     for (size_t freeBytes : {size_t(0), size_t(2000), size_t(6000), size_t(20000)}) {

@@ -11,15 +11,15 @@
 namespace luxplan {
 namespace {
 
-const std::string kScene = std::string(LUXPLAN_SOURCE_DIR) + "/scenes/photometry/downlights.json";
+const std::string kDownlightsScene = std::string(LUXPLAN_SOURCE_DIR) + "/scenes/photometry/downlights.json";
 
 TEST(PhotometryScene, ValidatesMeasuresAndDescribesItsLuminaires) {
-    auto v = test::runCli("validate " + kScene);
+    auto v = test::runCli("validate " + kDownlightsScene);
     EXPECT_EQ(v.exitCode, 0) << v.output;
-    auto info = test::runCli("info " + kScene);
+    auto info = test::runCli("info " + kDownlightsScene);
     EXPECT_NE(info.output.find("dl4 (disk): disk of radius 0.075 m, photometric (downlight.ies), 1200 lm"), std::string::npos)
         << info.output;
-    auto m = test::runCli("measure " + kScene + " --paths 32 --threads 2 --json");
+    auto m = test::runCli("measure " + kDownlightsScene + " --paths 32 --threads 2 --json");
     ASSERT_EQ(m.exitCode, 0) << m.output;
     auto j = nlohmann::json::parse(m.output);
     for (const auto& s : j["samplers"]) EXPECT_GT(s["value"].get<double>(), 100) << s["name"];

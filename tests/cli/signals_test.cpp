@@ -19,7 +19,7 @@
 namespace luxplan {
 namespace {
 
-const std::string kScene = std::string(LUXPLAN_SOURCE_DIR) + "/scenes/paper/fig7-office-morning.json";  // never reaches C = 0
+const std::string kLongRunScene = std::string(LUXPLAN_SOURCE_DIR) + "/scenes/paper/fig7-office-morning.json";  // never reaches C = 0
 
 // An endless search writing to `out`, started in a child process; returns once it
 // catches its stop signals (it makes the output folder after that), at whatever
@@ -30,7 +30,7 @@ pid_t startSearch(const std::string& out, Extra... extra) {
     if (pid == 0) {
         std::freopen("/dev/null", "w", stdout);
         std::freopen("/dev/null", "w", stderr);
-        execl(LUXPLAN_CLI, "luxplan", "optimize", kScene.c_str(), "-o", out.c_str(), "--iterations", "100000000", "--paths", "4",
+        execl(LUXPLAN_CLI, "luxplan", "optimize", kLongRunScene.c_str(), "-o", out.c_str(), "--iterations", "100000000", "--paths", "4",
               "--threads", "1", "-q", extra..., static_cast<char*>(nullptr));
         _exit(127);
     }
@@ -89,7 +89,7 @@ TEST(CliSignals, AnUnwritableOutputFolderIsRefusedFirst) {
     test::TempDir dir;
     const auto file = dir.write("a-file", "x");
     const auto started = std::chrono::steady_clock::now();
-    test::CliResult r = test::runCli("optimize " + kScene + " -o " + (file / "out").string() + " --iterations 100000000 -q");
+    test::CliResult r = test::runCli("optimize " + kLongRunScene + " -o " + (file / "out").string() + " --iterations 100000000 -q");
     EXPECT_EQ(r.exitCode, 1);
     EXPECT_NE(r.output.find((file / "out").string() + ": cannot create the output folder"), std::string::npos) << r.output;
     EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count(), 30.0);

@@ -18,7 +18,7 @@ using Result = test::CliResult;
 
 // A 2000 lm bulb 2 m above a 5 x 4 m plane in a black void; the plane's EN 12464-1
 // grid (9 x 7) carries a U0 and a min goal; a volume and a directional sampler.
-const char* kScene = R"({"luxplan": 1,
+const char* kStatisticsScene = R"({"luxplan": 1,
   "luminaires": [{"name": "bulb", "shape": "sphere", "center": [0, 0, 2.8], "radius": 0.01, "flux_lm": 2000}],
   "samplers": [
     {"name": "work", "type": "planar", "center": [0, 0, 0.8], "size": [5, 4], "grid": "en12464", "target": [10, null],
@@ -29,7 +29,7 @@ const char* kScene = R"({"luxplan": 1,
 
 TEST(StatisticsCli, MeasureJsonGivesStatsTermsAndTheGrid) {
     test::TempDir dir;
-    auto file = dir.write("scene.json", kScene);
+    auto file = dir.write("scene.json", kStatisticsScene);
     Result r = test::runCli("measure " + file.string() + " --paths 16 --threads 2 --json");
     ASSERT_EQ(r.exitCode, 0) << r.output;
     const auto samplers = nlohmann::json::parse(r.output)["samplers"];
@@ -63,7 +63,7 @@ TEST(StatisticsCli, MeasureJsonGivesStatsTermsAndTheGrid) {
 
 TEST(StatisticsCli, MeasureTableListsEmEminEmaxU0AndEachGoal) {
     test::TempDir dir;
-    auto file = dir.write("scene.json", kScene);
+    auto file = dir.write("scene.json", kStatisticsScene);
     Result r = test::runCli("measure " + file.string() + " --paths 16 --threads 2");
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_NE(r.output.find("    Em "), std::string::npos) << r.output;
@@ -77,7 +77,7 @@ TEST(StatisticsCli, MeasureTableListsEmEminEmaxU0AndEachGoal) {
 
 TEST(StatisticsCli, ReportJsonAndHtmlListTheStatistics) {
     test::TempDir dir;
-    auto file = dir.write("scene.json", kScene);
+    auto file = dir.write("scene.json", kStatisticsScene);
     auto out = dir.path() / "out";
     Result r = test::runCli("optimize " + file.string() + " -o " + out.string() + " --iterations 2 --paths 8 --threads 2 -q --no-pictures");
     ASSERT_EQ(r.exitCode, 0) << r.output;

@@ -14,7 +14,7 @@
 namespace luxplan {
 namespace {
 
-const std::string kScene = std::string(LUXPLAN_SOURCE_DIR) + "/scenes/paper/fig4-presenter.json";
+const std::string kPresenterScene = std::string(LUXPLAN_SOURCE_DIR) + "/scenes/paper/fig4-presenter.json";
 
 std::string readAll(const std::filesystem::path& p) {
     std::ifstream in(p);
@@ -35,9 +35,9 @@ std::string measured(const std::string& scene, int threads) {
 }
 
 TEST(ThreadCount, MeasureIsTheSameAtAnyThreadCount) {
-    const std::string first = measured(kScene, 1);
+    const std::string first = measured(kPresenterScene, 1);
     ASSERT_FALSE(first.empty());
-    for (int threads : {2, 3, 7}) EXPECT_EQ(measured(kScene, threads), first) << threads << " threads";
+    for (int threads : {2, 3, 7}) EXPECT_EQ(measured(kPresenterScene, threads), first) << threads << " threads";
 }
 
 TEST(ThreadCount, MeasureOfAHallIsTheSameAtAnyThreadCountRunAfterRun) {
@@ -55,7 +55,7 @@ TEST(ThreadCount, OptimizeFindsTheSameLayoutAtAnyThreadCount) {
     std::string first;
     for (int threads : {1, 3, 7}) {
         const auto out = dir.path() / (std::string("t").append(std::to_string(threads)));
-        test::CliResult r = test::runCli("optimize " + kScene + " -o " + out.string() + " --iterations 150 --paths 4 -q --no-pictures --threads " +
+        test::CliResult r = test::runCli("optimize " + kPresenterScene + " -o " + out.string() + " --iterations 150 --paths 4 -q --no-pictures --threads " +
                                          std::to_string(threads));
         ASSERT_EQ(r.exitCode, 0) << r.output;
         const std::string layout = readAll(out / "layout.json");

@@ -12,7 +12,7 @@
 namespace luxplan {
 namespace {
 
-Scene makeScene() {
+Scene footprintScene() {
     return test::SceneBuilder()
         .material("m", test::diffuse(0.5))
         .room({0, 0, 0}, {6, 6, 3}, "m", "m", "m")
@@ -28,7 +28,7 @@ Scene makeScene() {
 class Footprint : public ::testing::Test {
 protected:
     void SetUp() override {
-        scene = makeScene();
+        scene = footprintScene();
         layout = initialLayout(scene);
     }
     int id(const char* name) { return scene.findEntity(name); }

@@ -13,7 +13,7 @@
 namespace luxplan {
 namespace {
 
-Scene makeScene() {
+Scene overlapScene() {
     return test::SceneBuilder()
         .material("m", test::diffuse(0.5))
         .room({0, 0, 0}, {6, 6, 3}, "m", "m", "m")
@@ -33,7 +33,7 @@ Scene makeScene() {
 class Overlap : public ::testing::Test {
 protected:
     void SetUp() override {
-        scene = makeScene();
+        scene = overlapScene();
         layout = initialLayout(scene);
     }
     int id(const char* name) { return scene.findEntity(name); }

@@ -14,7 +14,7 @@ namespace luxplan {
 namespace {
 
 // desk and chair are the same height, so centre distances are horizontal.
-Scene makeScene() {
+Scene relationalScene() {
     return test::SceneBuilder()
         .material("m", test::diffuse(0.5))
         .entity("desk", {2, 2, 0}).part({1.0, 0.5, 0.75}, "m").end()
@@ -37,7 +37,7 @@ Scene makeScene() {
 class Relational : public ::testing::Test {
 protected:
     void SetUp() override {
-        scene = makeScene();
+        scene = relationalScene();
         layout = initialLayout(scene);
         desk = scene.findEntity("desk"), chair = scene.findEntity("chair");
     }

@@ -4,11 +4,12 @@
 
 #include <luxplan/daylight/daylight.h>
 #include <luxplan/daylight/preetham.h>
+#include "support/iso_time.h"
 
 namespace luxplan {
 namespace {
 
-DateTime at(const char* iso) { return parseIso8601(iso).value(); }
+using test::at;
 
 const Site kAthens{37.98, 23.73, 0};
 const DaylightBakeOptions kSmall{64, 32, 2, {}};

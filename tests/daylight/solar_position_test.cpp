@@ -3,16 +3,12 @@
 #include <gtest/gtest.h>
 
 #include <luxplan/daylight/solar_position.h>
+#include "support/iso_time.h"
 
 namespace luxplan {
 namespace {
 
-DateTime at(const char* iso) {
-    std::string err;
-    auto t = parseIso8601(iso, &err);
-    EXPECT_TRUE(t) << err;
-    return t.value_or(DateTime{});
-}
+using test::at;
 
 // Golden, Colorado: the site of NREL's example (REFERENCES.md 1.1).
 SolarObserver golden() {

@@ -11,6 +11,7 @@
 #include <luxplan/constraints/constraint_type.h>
 #include <luxplan/core/error.h>
 #include <luxplan/io/scene_loader.h>
+#include "support/load_problems.h"
 #include "support/temp_files.h"
 
 namespace luxplan {
@@ -35,17 +36,7 @@ std::vector<std::string> readerKeys(const ConstraintKindEntry& k) {
     return luxplan::json::probeKeys([&](const luxplan::json::Fields& f) { k.read(f); });
 }
 
-std::vector<std::string> problems(const json& scene) {
-    test::TempDir dir;
-    try {
-        io::loadScene(dir.write("scene.json", scene.dump()));
-    } catch (const SceneError& e) {
-        std::vector<std::string> out;
-        for (const auto& d : e.diagnostics()) out.push_back(d.jsonPath + ": " + d.message);
-        return out;
-    }
-    return {};
-}
+using test::problems;
 
 std::string article(const std::string& noun) { return (std::string("aeiou").find(noun[0]) != std::string::npos ? "an " : "a ") + noun; }
 

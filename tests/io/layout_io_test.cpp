@@ -12,7 +12,7 @@
 namespace luxplan {
 namespace {
 
-const char* kScene = R"({
+const char* kLayoutScene = R"({
   "luxplan": 1,
   "materials": {"m": {"type": "diffuse", "reflectance": 0.5}},
   "entities": [
@@ -27,7 +27,7 @@ const char* kScene = R"({
 
 TEST(LayoutIo, RoundTrip) {
     test::TempDir dir;
-    Scene s = io::loadScene(dir.write("scene.json", kScene));
+    Scene s = io::loadScene(dir.write("scene.json", kLayoutScene));
     Layout layout = initialLayout(s);
     ASSERT_EQ(layout.placements.size(), 3u);
     EXPECT_EQ(layout.placements[0].region, 0);
@@ -53,7 +53,7 @@ TEST(LayoutIo, RoundTrip) {
 
 TEST(LayoutIo, ErrorsNameThePath) {
     test::TempDir dir;
-    Scene s = io::loadScene(dir.write("scene.json", kScene));
+    Scene s = io::loadScene(dir.write("scene.json", kLayoutScene));
     auto check = [&](const std::string& text, const std::string& expected) {
         auto file = dir.write("layout.json", text);
         try {

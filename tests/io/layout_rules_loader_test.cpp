@@ -31,10 +31,7 @@ json scene() {
 
 Scene load(const json& s, test::TempDir& dir) { return io::loadScene(dir.write("scene.json", s.dump())); }
 
-std::vector<std::string> problems(const json& s) {
-    test::TempDir dir;
-    return test::loadProblems(s.dump(), dir);
-}
+using test::problems;
 
 TEST(LayoutRulesLoader, Defaults) {
     test::TempDir dir;

@@ -11,23 +11,24 @@
 #include <luxplan/io/scene_loader.h>
 #include "support/scene_lab.h"
 #include "support/temp_files.h"
+#include "support/test_data.h"
 
 namespace luxplan {
 namespace {
 
 using nlohmann::json;
 
-const std::string kData = std::string(LUXPLAN_TEST_DATA) + "/photometry/";
+using test::kPhotometryFiles;
 constexpr double kDeg = kPi / 180;
 
 // A scene of the given luminaires (and entities) in a black void.
-Scene load(const json& luminaires, test::TempDir& dir, const json& entities = json::array()) {
+Scene loadLuminaires(const json& luminaires, test::TempDir& dir, const json& entities = json::array()) {
     json s = {{"luxplan", 1}, {"luminaires", luminaires}, {"entities", entities}};
     return io::loadScene(dir.write("scene.json", s.dump(2)));
 }
-std::vector<std::string> problems(const json& luminaires, test::TempDir& dir) {
+std::vector<std::string> luminaireProblems(const json& luminaires, test::TempDir& dir) {
     try {
-        load(luminaires, dir);
+        loadLuminaires(luminaires, dir);
     } catch (const SceneError& e) {
         std::vector<std::string> out;
         for (const auto& d : e.diagnostics()) out.push_back(d.jsonPath + ": " + d.message);
@@ -39,7 +40,7 @@ std::vector<std::string> problems(const json& luminaires, test::TempDir& dir) {
 // A 2 mm downlight opening at (0, 0, 3), C 0 towards +x (so C 90 towards +y).
 json downlight(const std::string& file) {
     return {{"name", "dl"}, {"shape", "disk"}, {"center", {0, 0, 3}}, {"normal", {0, 0, -1}}, {"radius", 0.002},
-            {"c0", {1, 0, 0}}, {"photometry", kData + file}};
+            {"c0", {1, 0, 0}}, {"photometry", kPhotometryFiles + file}};
 }
 
 // Unit direction of (C, gamma) for that downlight.
@@ -90,7 +91,7 @@ Truth checkInverseSquare(const Scene& scene, const std::vector<double>& cs, cons
 
 TEST(PhotometricLuminaire, InverseSquareFromAnAsymmetricIesFile) {
     test::TempDir dir;
-    Scene s = load(json::array({downlight("asymmetric.ies")}), dir);
+    Scene s = loadLuminaires(json::array({downlight("asymmetric.ies")}), dir);
     // The file's candela (x 0.5) by plane, at gamma 0, 30, 60, 90.
     std::map<double, std::vector<double>> file = {
         {0, {1000, 800, 400, 0}}, {90, {1000, 600, 200, 0}}, {180, {1000, 500, 100, 0}}, {270, {1000, 700, 300, 0}}};
@@ -110,7 +111,7 @@ TEST(PhotometricLuminaire, InverseSquareFromAnAsymmetricIesFile) {
 
 TEST(PhotometricLuminaire, InverseSquareFromAnAsymmetricEulumdatFile) {
     test::TempDir dir;
-    Scene s = load(json::array({downlight("asymmetric.ldt")}), dir);
+    Scene s = loadLuminaires(json::array({downlight("asymmetric.ldt")}), dir);
     // cd/klm x 2000 lm / 1000.
     std::map<double, std::vector<double>> file = {
         {0, {1000, 800, 400, 0}}, {90, {1000, 500, 150, 0}}, {180, {1000, 700, 300, 0}}, {270, {1000, 900, 500, 0}}};
@@ -124,13 +125,13 @@ TEST(PhotometricLuminaire, FluxComesFromTheFileOrScalesToFluxLm) {
     json a = downlight("asymmetric.ies"), b = downlight("asymmetric.ies");
     b["name"] = "scaled";
     b["flux_lm"] = 1200;
-    Scene s = load(json::array({a, b}), dir);
+    Scene s = loadLuminaires(json::array({a, b}), dir);
     auto* luminaire = dynamic_cast<const PhotometricEmitter*>(s.emitters[0].shape.get());
     ASSERT_NE(luminaire, nullptr);
     const double fileFlux = luminaire->distribution().flux();
     EXPECT_DOUBLE_EQ(s.emitters[0].fluxLm, fileFlux);
     EXPECT_DOUBLE_EQ(s.emitters[1].fluxLm, 1200);
-    EXPECT_EQ(s.emitters[0].shape->describe(), "disk of radius 0.002 m, photometric (" + kData + "asymmetric.ies)");
+    EXPECT_EQ(s.emitters[0].shape->describe(), "disk of radius 0.002 m, photometric (" + kPhotometryFiles + "asymmetric.ies)");
     EmitterSet set(s, {}, EmitterSelection::PowerDistance);
     Vec3 w = -towards(90, 30);
     EXPECT_NEAR(set.emitted(1, w) / set.emitted(0, w), 1200 / fileFlux, 1e-12);
@@ -143,7 +144,7 @@ TEST(PhotometricLuminaire, CarriedEmitterTurnsWithItsEntity) {
     json lamp = downlight("asymmetric.ies");
     lamp["center"] = {0, 0, 2};
     json entity = {{"name", "lamp"}, {"position", {1, 1}}, {"rotation", 90}, {"emitters", json::array({lamp})}};
-    Scene s = load(json::array(), dir, json::array({entity}));
+    Scene s = loadLuminaires(json::array(), dir, json::array({entity}));
     ASSERT_EQ(s.emitters.size(), 1u);
     EXPECT_EQ(s.emitters[0].entity, 0);
     test::SceneLab lab(s);
@@ -165,10 +166,10 @@ TEST(PhotometricLuminaire, CarriedEmitterTurnsWithItsEntity) {
 TEST(PhotometricLuminaire, RectAndSphereOpenings) {
     test::TempDir dir;
     json rect = {{"name", "panel"}, {"shape", "rect"}, {"center", {0, 0, 3}}, {"size", {0.6, 0.3}},
-                 {"photometry", kData + "asymmetric.ies"}};
+                 {"photometry", kPhotometryFiles + "asymmetric.ies"}};
     json sphere = {{"name", "bulb"}, {"shape", "sphere"}, {"center", {2, 0, 2}}, {"radius", 0.05},
-                   {"normal", {0, 0, 1}}, {"photometry", kData + "asymmetric.ldt"}, {"flux_lm", 500}};
-    Scene s = load(json::array({rect, sphere}), dir);
+                   {"normal", {0, 0, 1}}, {"photometry", kPhotometryFiles + "asymmetric.ldt"}, {"flux_lm", 500}};
+    Scene s = loadLuminaires(json::array({rect, sphere}), dir);
     auto* panel = dynamic_cast<const PhotometricEmitter*>(s.emitters[0].shape.get());
     auto* bulb = dynamic_cast<const PhotometricEmitter*>(s.emitters[1].shape.get());
     ASSERT_TRUE(panel && bulb);
@@ -184,25 +185,25 @@ TEST(PhotometricLuminaire, ErrorsNameTheFileAndTheJsonPath) {
     test::TempDir dir;
     json missing = downlight("asymmetric.ies");
     missing["photometry"] = "lum/none.ies";
-    EXPECT_EQ(problems(json::array({missing}), dir),
+    EXPECT_EQ(luminaireProblems(json::array({missing}), dir),
               std::vector<std::string>{"/luminaires/0/photometry: " + (dir.path() / "lum/none.ies").string() + ": no such file"});
     dir.write("lum/bad.ies", "IESNA:LM-63-2002\n[TEST] bad\nTILT=NONE\n1 -1 1 3 1 2 2 0 0 0\n1 1 0\n0 45 90\n0\n1 2 3\n");
     json bad = downlight("asymmetric.ies");
     bad["photometry"] = "lum/bad.ies";
-    EXPECT_EQ(problems(json::array({bad}), dir),
+    EXPECT_EQ(luminaireProblems(json::array({bad}), dir),
               std::vector<std::string>{"/luminaires/0/photometry: " + (dir.path() / "lum/bad.ies").string() +
                                        ":4: photometric type 2 (type B) is not supported: only type C (1)"});
     json noPhotometry = {{"name", "l"}, {"shape", "disk"}, {"center", {0, 0, 3}}, {"radius", 0.1}, {"c0", {1, 0, 0}}};
-    EXPECT_EQ(problems(json::array({noPhotometry}), dir),
+    EXPECT_EQ(luminaireProblems(json::array({noPhotometry}), dir),
               (std::vector<std::string>{"/luminaires/0: missing required key \"flux_lm\"",
                                         "/luminaires/0/c0: \"c0\" orients a photometric luminaire: it needs \"photometry\""}));
     json parallel = downlight("asymmetric.ies");
     parallel["c0"] = {0, 0, 2};
-    EXPECT_EQ(problems(json::array({parallel}), dir),
+    EXPECT_EQ(luminaireProblems(json::array({parallel}), dir),
               std::vector<std::string>{"/luminaires/0/c0: \"c0\" is parallel to the luminaire's normal (gamma = 0)"});
     // A sphere takes "normal" only as a photometric luminaire's axis.
     json sphere = {{"name", "b"}, {"shape", "sphere"}, {"center", {0, 0, 2}}, {"radius", 0.1}, {"normal", {0, 0, 1}}, {"flux_lm", 100}};
-    auto p = problems(json::array({sphere}), dir);
+    auto p = luminaireProblems(json::array({sphere}), dir);
     ASSERT_EQ(p.size(), 1u);
     EXPECT_EQ(p[0].rfind("/luminaires/0/normal: \"normal\" does not apply to a sphere emitter", 0), 0u) << p[0];
 }

@@ -7,19 +7,20 @@
 #include <luxplan/io/photometry_io.h>
 #include <luxplan/json/fields.h>
 #include "support/temp_files.h"
+#include "support/test_data.h"
 
 namespace luxplan {
 namespace {
 
-const std::string kData = std::string(LUXPLAN_TEST_DATA) + "/photometry/";
+using test::kPhotometryFiles;
 
 // An IES file: `header` (version line and keywords, up to and with TILT), then the
 // numbers; lateral angles `c`, vertical {0, 45, 90}, plane i's candela i+1, i+2, i+3.
 std::string ies(const std::string& header, const std::vector<double>& c, double lumens = 1000, double multiplier = 1,
                 const std::string& ballast = "1 1 10") {
-    std::string s = header + "\n1 " + json::formatNumber(lumens) + " " + json::formatNumber(multiplier) + " 3 " +
+    std::string s = header + "\n1 " + luxplan::json::formatNumber(lumens) + " " + luxplan::json::formatNumber(multiplier) + " 3 " +
                     std::to_string(c.size()) + " 1 2 0.1 0.1 0\n" + ballast + "\n0 45 90\n";
-    for (double a : c) s += json::formatNumber(a) + " ";
+    for (double a : c) s += luxplan::json::formatNumber(a) + " ";
     s += "\n";
     for (size_t i = 0; i < c.size(); ++i)
         s += std::to_string(i + 1) + " " + std::to_string(i + 2) + " " + std::to_string(i + 3) + "\n";
@@ -121,7 +122,7 @@ TEST(IesReader, ReportsEachProblemWithItsLine) {
 }
 
 TEST(EulumdatReader, ReadsTheAsymmetricFileWithDecimalCommas) {
-    auto d = io::loadPhotometry(kData + "asymmetric.ldt");
+    auto d = io::loadPhotometry(kPhotometryFiles + "asymmetric.ldt");
     // cd/klm x 2000 lm / 1000: C 90 is 500 250 75 0 cd/klm.
     EXPECT_DOUBLE_EQ(d->intensity(PhotometricAngles{kPi / 2, kPi / 6}), 500);
     EXPECT_DOUBLE_EQ(d->intensity(PhotometricAngles{kPi, kPi / 3}), 300);
@@ -131,11 +132,11 @@ TEST(EulumdatReader, ReadsTheAsymmetricFileWithDecimalCommas) {
 // An EULUMDAT file: Isym, Mc planes every 360 / Mc degrees, gammas {0, 45, 90},
 // stored plane k's intensities (k+1) * {3, 2, 1} cd/klm, one set of 1000 lm lamps.
 std::string ldt(int isym, int mc, int stored) {
-    std::vector<std::string> l = {"company", "1", std::to_string(isym), std::to_string(mc), json::formatNumber(360.0 / mc), "3", "45",
+    std::vector<std::string> l = {"company", "1", std::to_string(isym), std::to_string(mc), luxplan::json::formatNumber(360.0 / mc), "3", "45",
                                   "r", "n", "1", "f.ldt", "d", "100", "100", "10", "100", "100", "0", "0", "0", "0", "100",
                                   "100", "1", "0", "1", "1", "LED", "1000", "3000", "80", "10"};
     for (int i = 0; i < 10; ++i) l.push_back("0,5");
-    for (int i = 0; i < mc; ++i) l.push_back(json::formatNumber(360.0 * i / mc));
+    for (int i = 0; i < mc; ++i) l.push_back(luxplan::json::formatNumber(360.0 * i / mc));
     for (const char* g : {"0", "45", "90"}) l.push_back(g);
     for (int k = 0; k < stored; ++k)
         for (int g = 0; g < 3; ++g) l.push_back(std::to_string((k + 1) * (3 - g)));
@@ -211,7 +212,7 @@ TEST(PhotometryLimits, AnIntensityAboveTheLimitIsRefusedWithItsLine) {
 }
 
 TEST(PhotometryFile, ChosenByExtensionAndRefusedWithItsName) {
-    auto file = io::loadPhotometry(kData + "asymmetric.ies");
+    auto file = io::loadPhotometry(kPhotometryFiles + "asymmetric.ies");
     EXPECT_DOUBLE_EQ(file->intensity(PhotometricAngles{kPi / 2, kPi / 6}), 600);
     test::TempDir dir;
     auto upper = dir.write("LUM.IES", ies(k2002, {0}));

@@ -26,13 +26,7 @@ json smallScene() {
     return json::parse(test::smallRoomScene("", 0));
 }
 
-// The single problem's text, failing the test if there is not exactly one.
-std::string onlyProblem(const json& scene) {
-    test::TempDir dir;
-    auto p = test::loadProblems(scene.dump(), dir);
-    EXPECT_EQ(p.size(), 1u) << (p.empty() ? "no problems" : p.front() + (p.size() > 1 ? " | " + p[1] : ""));
-    return p.empty() ? "" : p.front();
-}
+using test::onlyProblem;
 
 TEST(SceneLimits, DeepChildrenAreRefusedQuickly) {
     // 10^4 levels of children (a 330 kB file) once took 2.8 GB and overflowed the stack.

@@ -46,13 +46,7 @@ json validScene() {
 
 std::vector<std::string> problems(const json& scene, test::TempDir& dir) { return test::loadProblems(scene.dump(2), dir); }
 
-// The single problem's text, failing the test if there is not exactly one.
-std::string onlyProblem(const json& scene) {
-    test::TempDir dir;
-    auto p = problems(scene, dir);
-    EXPECT_EQ(p.size(), 1u) << (p.empty() ? "no problems" : p.front());
-    return p.empty() ? "" : p.front();
-}
+using test::onlyProblem;
 
 bool startsWith(const std::string& s, const std::string& prefix) { return s.rfind(prefix, 0) == 0; }
 

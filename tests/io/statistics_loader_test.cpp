@@ -33,10 +33,7 @@ Scene load(const json& scene) {
     return io::loadScene(dir.write("scene.json", scene.dump()));
 }
 
-std::vector<std::string> problems(const json& scene) {
-    test::TempDir dir;
-    return test::loadProblems(scene.dump(), dir);
-}
+using test::problems;
 
 TEST(StatisticsLoader, GoalsInTheOrderMinMaxU0WithTheirDefaults) {
     const Scene s = load(roomWith(json::parse(R"({"statistics": {

@@ -46,16 +46,8 @@ json workstations(int copies) {
 
 Scene load(const json& scene, test::TempDir& dir) { return io::loadScene(dir.write("scene.json", scene.dump(2))); }
 
-std::vector<std::string> problems(const json& scene) {
-    test::TempDir dir;
-    return test::loadProblems(scene.dump(2), dir);
-}
-
-std::string onlyProblem(const json& scene) {
-    auto p = problems(scene);
-    EXPECT_EQ(p.size(), 1u) << (p.empty() ? "no problems" : p.front() + " | " + p.back());
-    return p.empty() ? "" : p.front();
-}
+using test::onlyProblem;
+using test::problems;
 
 std::vector<std::string> samplerNames(const Scene& s) {
     std::vector<std::string> names;

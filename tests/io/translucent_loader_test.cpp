@@ -17,10 +17,7 @@ json scene(const json& material) {
     return j;
 }
 
-std::vector<std::string> problems(const json& s) {
-    test::TempDir dir;
-    return test::loadProblems(s.dump(), dir);
-}
+using test::problems;
 
 TEST(TranslucentLoader, ReadsReflectanceAndTransmittance) {
     test::TempDir dir;

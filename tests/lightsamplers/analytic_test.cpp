@@ -30,7 +30,8 @@ std::shared_ptr<const SamplerType> point(Vec3 center, Vec3 normal = {0, 0, 1}, V
 std::shared_ptr<const SamplerType> plane(Vec3 center, Vec3 normal, Vec3 up, Vec2 size, std::array<int, 2> grid) {
     return planarSampler(center, normal, up, size, grid);
 }
-const Vec3 kUp(0, 1, 0), kZ(0, 0, 1);
+const Vec3 kUp(0, 1, 0);
+using test::kZ;
 
 void expectWithin(const SamplerResult& r, double expected, double relativeSystematic, const std::string& what) {
     double tolerance = 4 * r.standardError + relativeSystematic * std::abs(expected);

@@ -21,7 +21,7 @@ namespace {
 
 using test::SceneBuilder;
 using test::SceneLab;
-const Vec3 kZ(0, 0, 1);
+using test::kZ;
 
 // The plane-area of one of strata x strata cells at unit distance.
 double cellArea(double fovDeg, int strata) {

@@ -15,7 +15,7 @@ namespace {
 
 using test::SceneBuilder;
 using test::SceneLab;
-const Vec3 kZ(0, 0, 1);
+using test::kZ;
 
 struct Spread {
     double mean = 0, rms = 0, reportedError = 0;  // rms about the truth

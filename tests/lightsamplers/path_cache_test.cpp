@@ -16,7 +16,7 @@ namespace {
 
 using test::SceneBuilder;
 using test::SceneLab;
-const Vec3 kZ(0, 0, 1);
+using test::kZ;
 
 // A glazed, sunlit 6 x 4 m room with a ceiling panel: a desk carrying a task plane and
 // a lamp (its own entity, with a shade emitter), a chair, a cabinet; a fixed plane on

@@ -10,20 +10,16 @@
 #include <luxplan/core/rng.h>
 #include <luxplan/materials/bsdf.h>
 #include "support/chi2.h"
+#include "support/directions.h"
 
 namespace luxplan {
 namespace {
 
-Vec3 direction(double thetaDeg, double phiDeg) {
-    double t = radians(thetaDeg), p = radians(phiDeg);
-    return {std::sin(t) * std::cos(p), std::sin(t) * std::sin(p), std::cos(t)};
-}
+using test::direction;
 
 // Family-wise false-failure rate of each group of tests.
 constexpr double kFamilyAlpha = 0.01;
-// For mean-value checks: |estimate - truth| <= kSigmas * stddev / sqrt(n). P(|z| > 5) is
-// 5.7e-7 per check, so the few hundred checks below fail spuriously with p < 1e-3.
-constexpr double kSigmas = 5;
+using test::kSigmas;  // a few hundred checks below
 
 // 6-point Gauss-Legendre on [-1, 1], to integrate the pdf over each chi-square cell.
 constexpr double kGaussX[6] = {-0.9324695142031521, -0.6612093864662645, -0.2386191860831969,

@@ -6,14 +6,12 @@
 
 #include <luxplan/core/rng.h>
 #include <luxplan/materials/microfacet.h>
+#include "support/directions.h"
 
 namespace luxplan {
 namespace {
 
-Vec3 direction(double thetaDeg, double phiDeg) {
-    double t = radians(thetaDeg), p = radians(phiDeg);
-    return {std::sin(t) * std::cos(p), std::sin(t) * std::sin(p), std::cos(t)};
-}
+using test::direction;
 
 // int over the upper hemisphere of g(h) dh, in GGX slope coordinates
 // tan(theta) = alpha tan(pi v / 2) (spreads the peak evenly), midpoint rule in (v, phi).

@@ -7,6 +7,7 @@
 #include <luxplan/core/rng.h>
 #include <luxplan/materials/bsdf.h>
 #include <luxplan/materials/microfacet.h>
+#include "support/directions.h"
 
 namespace luxplan {
 namespace {
@@ -34,10 +35,7 @@ PaneResponse simulatePane(double cosTheta, double ior, double tau0) {
     return total;
 }
 
-Vec3 direction(double thetaDeg, double phiDeg) {
-    double t = radians(thetaDeg), p = radians(phiDeg);
-    return {std::sin(t) * std::cos(p), std::sin(t) * std::sin(p), std::cos(t)};
-}
+using test::direction;
 
 TEST(ThinGlass, NormalTransmittanceIsExactlyTheGivenOne) {
     for (double t0 : {0.0, 0.05, 0.3, 0.6, 0.8, 0.88, 0.9, 0.9183, 0.93, 0.97, 0.999, 1.0}) {

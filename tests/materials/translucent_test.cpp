@@ -7,16 +7,14 @@
 
 #include <luxplan/core/rng.h>
 #include <luxplan/materials/bsdf.h>
+#include "support/directions.h"
 
 namespace luxplan {
 namespace {
 
-Vec3 direction(double thetaDeg, double phiDeg) {
-    double t = radians(thetaDeg), p = radians(phiDeg);
-    return {std::sin(t) * std::cos(p), std::sin(t) * std::sin(p), std::cos(t)};
-}
+using test::direction;
 
-constexpr double kSigmas = 5;
+using test::kSigmas;
 
 TEST(Translucent, TwoLambertianLobes) {
     Bsdf b = Bsdf::translucent({0.5, 0.4, 0.3}, {0.2, 0.3, 0.4});

@@ -12,7 +12,7 @@ namespace luxplan {
 namespace {
 
 using test::SceneBuilder;
-const Vec3 kZ(0, 0, 1);
+using test::kZ;
 
 std::string named(const char* prefix, int i) {
     std::string s(prefix);

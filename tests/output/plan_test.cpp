@@ -7,6 +7,7 @@
 #include <luxplan/output/plan.h>
 #include "support/scene_builder.h"
 #include "support/scene_lab.h"
+#include "support/pixels.h"
 #include "support/temp_files.h"
 #include "support/threads.h"
 
@@ -33,9 +34,7 @@ Scene roomWithTable() {
 bool isGreen(Rgb p) { return p.g > 140 && p.r < 40 && p.b < 100; }
 bool isRed(Rgb p) { return p.r > 200 && p.g < 50 && p.b < 50; }
 
-int count(const Image& image, bool (*test)(Rgb)) {
-    return int(std::count_if(image.pixels().begin(), image.pixels().end(), test));
-}
+using test::countPixels;
 
 TEST(Plan, FurnitureAndSamplersShowWhereTheyAre) {
     test::SceneLab lab(roomWithTable());
@@ -55,14 +54,14 @@ TEST(Plan, FurnitureAndSamplersShowWhereTheyAre) {
     layout.placements[0].position = {2.5, 2.0, layout.placements[0].position.z};
     Image moved = renderPlan(lab.scene, layout, options, pass);
     EXPECT_EQ(moved.at(tx, ty), moved.at(fx, fy));
-    EXPECT_GT(count(image, isGreen), 100);
-    EXPECT_EQ(count(image, isRed), 0);
+    EXPECT_GT(countPixels(image, isGreen), 100);
+    EXPECT_EQ(countPixels(image, isRed), 0);
 
     PlanData fail = pass;
     (*fail.samplers)[0].value = 120;
     Image red = renderPlan(lab.scene, initialLayout(lab.scene), options, fail);
-    EXPECT_GT(count(red, isRed), 100);
-    EXPECT_EQ(count(red, isGreen), 0);
+    EXPECT_GT(countPixels(red, isRed), 100);
+    EXPECT_EQ(countPixels(red, isGreen), 0);
 
     test::TempDir dir;
     writePng(image, dir.path() / "plan.png");

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <luxplan/output/plot.h>
+#include "support/pixels.h"
 
 namespace luxplan {
 namespace {
@@ -10,9 +11,7 @@ namespace {
 bool isBest(Rgb p) { return p == Rgb{30, 90, 200}; }
 bool isCurrent(Rgb p) { return p == Rgb{150, 150, 150}; }
 
-int count(const Image& image, bool (*test)(Rgb)) {
-    return int(std::count_if(image.pixels().begin(), image.pixels().end(), test));
-}
+using test::countPixels;
 
 std::vector<TracePoint> syntheticTrace(double scale) {
     std::vector<TracePoint> trace;
@@ -35,8 +34,8 @@ TEST(Plot, DrawsCurrentAndBestCosts) {
     Image image = plotConvergence(syntheticTrace(1), options);
     EXPECT_EQ(image.width(), 600);
     EXPECT_EQ(image.height(), 300);
-    EXPECT_GT(count(image, isBest), 300);
-    EXPECT_GT(count(image, isCurrent), 300);
+    EXPECT_GT(countPixels(image, isBest), 300);
+    EXPECT_GT(countPixels(image, isCurrent), 300);
     // Nothing drawn left of the first feasible point (x = 70 + 50/1000 * 510 = 95.5),
     // apart from the key and the axes.
     for (int y = 60; y < 250; ++y)
@@ -59,12 +58,12 @@ TEST(Plot, LogAxisWhenCostsSpanDecades) {
 
 TEST(Plot, EmptyAndInfeasibleTracesStillDraw) {
     Image empty = plotConvergence({});
-    EXPECT_EQ(count(empty, isBest), 0);
+    EXPECT_EQ(countPixels(empty, isBest), 0);
     std::vector<TracePoint> infeasible(5);
     for (int i = 0; i < 5; ++i) infeasible[size_t(i)] = {i * 10, 3.0, kInf, false};
     Image none = plotConvergence(infeasible);
-    EXPECT_EQ(count(none, isBest), 0);
-    EXPECT_EQ(count(none, isCurrent) > 0, true);  // the "no data" note
+    EXPECT_EQ(countPixels(none, isBest), 0);
+    EXPECT_EQ(countPixels(none, isCurrent) > 0, true);  // the "no data" note
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <luxplan/core/error.h>
 #include <luxplan/io/scene_loader.h>
@@ -29,6 +30,19 @@ inline std::vector<std::string> loadProblems(const std::string& text, TempDir& d
         return out;
     }
     return {};
+}
+
+// The same for a scene given as JSON.
+inline std::vector<std::string> problems(const nlohmann::json& scene) {
+    TempDir dir;
+    return loadProblems(scene.dump(2), dir);
+}
+
+// The one problem the loader finds in `scene`; the test fails unless there is exactly one.
+inline std::string onlyProblem(const nlohmann::json& scene) {
+    const auto p = problems(scene);
+    EXPECT_EQ(p.size(), 1u) << (p.empty() ? "no problems" : p.front() + (p.size() > 1 ? " | " + p[1] : ""));
+    return p.empty() ? "" : p.front();
 }
 
 }  // namespace luxplan::test

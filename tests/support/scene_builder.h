@@ -21,6 +21,8 @@
 
 namespace luxplan::test {
 
+inline const Vec3 kZ(0, 0, 1);  // up, in every scene
+
 Material diffuse(double reflectance);
 Material glossy(double reflectance, double roughness, double base);
 Material glossy(double reflectance, double roughness, Vec3 base);

@@ -4,6 +4,7 @@
 
 #include <luxplan/constraints/penalty.h>
 #include <luxplan/constraints/relational.h>
+#include <luxplan/json/fields.h>
 
 namespace luxplan {
 namespace {
@@ -29,9 +30,9 @@ public:
                " and " + describeNumber(t.parts[1]) + ", distance penalty " + describeNumber(t.parts[2]);
     }
     void report(const PenaltyTerm& t, nlohmann::ordered_json& j) const override {
-        j["value"] = reportNumber(t.value);
+        j["value"] = json::numberOrNull(t.value);
         j["unit"] = "m";
-        j["range"] = {reportNumber(range_.min), reportNumber(range_.max)};
+        j["range"] = {json::numberOrNull(range_.min), json::numberOrNull(range_.max)};
         j["tolerance_deg"] = toleranceDeg_;
         j["focus_ab"] = t.parts[0];
         j["focus_ba"] = t.parts[1];

@@ -4,6 +4,7 @@
 
 #include <luxplan/constraints/penalty.h>
 #include <luxplan/constraints/relational.h>
+#include <luxplan/json/fields.h>
 
 namespace luxplan {
 namespace {
@@ -29,9 +30,9 @@ public:
         return describeNumber(t.value) + " m, " + describeRange(range_);
     }
     void report(const PenaltyTerm& t, nlohmann::ordered_json& j) const override {
-        j["value"] = reportNumber(t.value);
+        j["value"] = json::numberOrNull(t.value);
         j["unit"] = "m";
-        j["range"] = {reportNumber(range_.min), reportNumber(range_.max)};
+        j["range"] = {json::numberOrNull(range_.min), json::numberOrNull(range_.max)};
     }
 
 private:

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include <luxplan/constraints/penalty.h>
+#include <luxplan/json/fields.h>
 
 namespace luxplan {
 
@@ -89,7 +90,7 @@ std::string AngleConstraint::describe(const PenaltyTerm& t) const {
 }
 
 void AngleConstraint::report(const PenaltyTerm& t, nlohmann::ordered_json& j) const {
-    j["value"] = reportNumber(degrees(t.value));
+    j["value"] = json::numberOrNull(degrees(t.value));
     j["unit"] = "deg";
     j["tolerance"] = toleranceDeg_;
 }
@@ -128,10 +129,6 @@ std::string describeNumber(double v) {
     char buffer[32];
     std::snprintf(buffer, sizeof buffer, "%.4g", v);
     return buffer;
-}
-
-nlohmann::ordered_json reportNumber(double v) {
-    return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json(nullptr);
 }
 
 std::string describeRange(const DistanceRange& range) {

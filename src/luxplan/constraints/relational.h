@@ -86,10 +86,9 @@ protected:
 PenaltyTerm evaluateRelational(const Scene& scene, const EntityInfo& info, const std::vector<Transform>& world,
                                int constraintIndex);
 
-// How the kinds write numbers: "%.4g" in descriptions; in report.json infinite or
-// undefined as null.
+// How the kinds write numbers in descriptions: "%.4g" (in report.json:
+// json::numberOrNull).
 std::string describeNumber(double v);
-nlohmann::ordered_json reportNumber(double v);
 // "range [0.5, 3] m" and "tolerance 10 deg", as the kinds' describe() print them.
 std::string describeRange(const DistanceRange& range);
 std::string describeTolerance(double toleranceDeg);

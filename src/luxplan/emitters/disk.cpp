@@ -7,7 +7,6 @@ namespace luxplan {
 namespace {
 
 constexpr int kMeshSegments = 48;  // of the glTF mesh
-constexpr int kOutlinePoints = 32;
 
 class Disk final : public EmitterShape {
 public:

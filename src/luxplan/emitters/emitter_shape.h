@@ -76,6 +76,7 @@ public:
     virtual std::unique_ptr<const FromPoint> from(const Vec3& p) const;
     virtual EmitterPrimitive primitive() const = 0;
     virtual std::vector<Vec3> outline() const = 0;  // a closed polygon on the shape, for plans
+    static constexpr int kOutlinePoints = 32;       // a round outline's
     virtual EmitterMesh mesh() const = 0;
     // One line for people: "0.6 x 0.6 m rect".
     virtual std::string describe() const = 0;

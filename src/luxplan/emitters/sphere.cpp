@@ -10,7 +10,6 @@ namespace luxplan {
 namespace {
 
 constexpr int kMeshSubdivisions = 2;  // of the glTF icosphere: 320 triangles
-constexpr int kOutlinePoints = 32;
 
 // The unit icosahedron with every triangle split in four, `levels` times, wound
 // counter-clockwise seen from outside.

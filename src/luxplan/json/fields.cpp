@@ -1,6 +1,7 @@
 #include <luxplan/json/fields.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <limits>
 
@@ -21,6 +22,8 @@ std::string pointer(const std::string& base, const std::string& key) {
 }
 
 std::string pointer(const std::string& base, size_t index) { return base + "/" + std::to_string(index); }
+
+nlohmann::ordered_json numberOrNull(double v) { return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json(nullptr); }
 
 std::string formatNumber(double v) {
     if (std::isinf(v)) return v > 0 ? "inf" : "-inf";

@@ -34,6 +34,9 @@ struct DiagnosticSink {
 std::string pointer(const std::string& base, const std::string& key);
 std::string pointer(const std::string& base, size_t index);
 
+// A number for the files luxplan writes: infinite or undefined ones as null.
+nlohmann::ordered_json numberOrNull(double v);
+
 // An inclusive or exclusive numeric range, with the unit for messages.
 struct Range {
     double lo = -kInf, hi = kInf;

@@ -11,6 +11,7 @@
 #include <luxplan/core/atomic_file.h>
 #include <luxplan/core/error.h>
 #include <luxplan/constraints/penalty.h>
+#include <luxplan/json/fields.h>
 #include <luxplan/lightsamplers/sampler_type.h>
 #include <luxplan/optimizer/flatten.h>
 #include <luxplan/optimizer/reach.h>
@@ -21,8 +22,6 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-// Infinite or undefined numbers are written as null.
-Json number(double v) { return std::isfinite(v) ? Json(v) : Json(nullptr); }
 
 const char* targetName(OverlapTarget t) {
     switch (t) {
@@ -49,7 +48,7 @@ Json termJson(const Scene& scene, const PenaltyTerm& t) {
         if (t.target == OverlapTarget::Entity) j["b"] = scene.entities[t.b].path;
         else if (t.target == OverlapTarget::Static) j["b"] = scene.geometry[t.b].name;
         else j["b"] = "walls";
-        j["value"] = number(t.value);
+        j["value"] = json::numberOrNull(t.value);
         j["unit"] = "m3";
         j["reference"] = t.reference;
     } else {
@@ -62,7 +61,7 @@ Json termJson(const Scene& scene, const PenaltyTerm& t) {
         j["b"] = t.b == kRoomEntity ? std::string("room") : flat && flat->groupB() ? flat->groupB()->path : scene.entities[t.b].path;
         t.kind->report(t, j);
     }
-    j["penalty"] = number(t.penalty);
+    j["penalty"] = json::numberOrNull(t.penalty);
     j["weight"] = t.weight;
     j["rejects"] = t.rejects;
     return j;
@@ -77,10 +76,10 @@ std::string reportJson(const Scene& scene, const OptimizerResult& r) {
     j["file"] = scene.file.string();
     // A layout past a hard limit has no cost (rejected_by says which); L is null where
     // the light was not measured.
-    j["C"] = best.rejected ? Json(nullptr) : number(best.cost);
-    j["C_std_error"] = best.rejected ? Json(nullptr) : number(best.costError);
-    j["L"] = best.lightingEvaluated || scene.samplers.empty() ? number(best.lighting) : Json(nullptr);
-    j["G"] = best.rejected ? Json(nullptr) : number(best.geometry);
+    j["C"] = best.rejected ? Json(nullptr) : json::numberOrNull(best.cost);
+    j["C_std_error"] = best.rejected ? Json(nullptr) : json::numberOrNull(best.costError);
+    j["L"] = best.lightingEvaluated || scene.samplers.empty() ? json::numberOrNull(best.lighting) : Json(nullptr);
+    j["G"] = best.rejected ? Json(nullptr) : json::numberOrNull(best.geometry);
     j["lighting_weight"] = scene.objective.lightingWeight;
     j["lighting_evaluated"] = best.lightingEvaluated;
     j["feasible"] = r.feasible;
@@ -90,15 +89,15 @@ std::string reportJson(const Scene& scene, const OptimizerResult& r) {
     j["zero_cost_confirmations"] = r.confirmations;
     // How the result was chosen: the search's estimate of it, and every candidate with
     // its independent re-measure (the result is measured once more for C above).
-    j["search_estimate"] = {{"C", number(r.bestSearchEvaluation.cost)}, {"L", number(r.bestSearchEvaluation.lighting)},
-                            {"C_std_error", number(r.bestSearchEvaluation.costError)}};
+    j["search_estimate"] = {{"C", json::numberOrNull(r.bestSearchEvaluation.cost)}, {"L", json::numberOrNull(r.bestSearchEvaluation.lighting)},
+                            {"C_std_error", json::numberOrNull(r.bestSearchEvaluation.costError)}};
     Json candidates = Json::array();
     for (size_t i = 0; i < r.candidates.size(); ++i) {
         const Candidate& c = r.candidates[i];
-        Json e = {{"iteration", c.iteration}, {"search_C", number(c.search.cost)}, {"chosen", int(i) == r.chosenCandidate}};
+        Json e = {{"iteration", c.iteration}, {"search_C", json::numberOrNull(c.search.cost)}, {"chosen", int(i) == r.chosenCandidate}};
         if (c.independent) {
-            e["remeasured_C"] = number(c.independent->cost);
-            e["remeasured_C_std_error"] = number(c.independent->costError);
+            e["remeasured_C"] = json::numberOrNull(c.independent->cost);
+            e["remeasured_C_std_error"] = json::numberOrNull(c.independent->costError);
         }
         candidates.push_back(e);
     }
@@ -114,9 +113,9 @@ std::string reportJson(const Scene& scene, const OptimizerResult& r) {
     j["seconds"] = r.seconds;
     j["stop_reason"] = stopReasonName(r.stop);
     const Evaluation& start = r.startEvaluation;
-    j["start"] = {{"C", start.rejected ? Json(nullptr) : number(start.cost)},
-                  {"L", start.lightingEvaluated || scene.samplers.empty() ? number(start.lighting) : Json(nullptr)},
-                  {"G", start.rejected ? Json(nullptr) : number(start.geometry)}, {"feasible", r.startFeasible}};
+    j["start"] = {{"C", start.rejected ? Json(nullptr) : json::numberOrNull(start.cost)},
+                  {"L", start.lightingEvaluated || scene.samplers.empty() ? json::numberOrNull(start.lighting) : Json(nullptr)},
+                  {"G", start.rejected ? Json(nullptr) : json::numberOrNull(start.geometry)}, {"feasible", r.startFeasible}};
 
     Json constraints = Json::array();
     Json pairs = Json::array();
@@ -131,15 +130,15 @@ std::string reportJson(const Scene& scene, const OptimizerResult& r) {
         const SamplerResult& m = best.samplers.samplers[k];
         const LightSamplerSpec& s = scene.samplers[k];
         Json e = {{"name", s.name}, {"type", s.type->name()}, {"description", s.type->describe()}, {"unit", s.type->unit()},
-                  {"value", number(m.value)}, {"std_error", number(m.standardError)}, {"target", {number(s.targetMin), number(s.targetMax)}},
-                  {"tolerance", s.tolerance}, {"weight", s.weight}, {"penalty", number(lightingPenalty(s, m.value))}};
+                  {"value", json::numberOrNull(m.value)}, {"std_error", json::numberOrNull(m.standardError)}, {"target", {json::numberOrNull(s.targetMin), json::numberOrNull(s.targetMax)}},
+                  {"tolerance", s.tolerance}, {"weight", s.weight}, {"penalty", json::numberOrNull(lightingPenalty(s, m.value))}};
         if (!m.points.empty()) e["points"] = m.points;
         if (k < r.samplerRanges.size()) {
             const SamplerRange& range = r.samplerRanges[k];
             const ReachVerdict verdict = reachVerdict(s, range, m);
             e["reach"] = {{"verdict", reachName(verdict.reach)},
-                          {"lowest_seen", number(range.lowest)},
-                          {"highest_seen", number(range.highest)},
+                          {"lowest_seen", json::numberOrNull(range.lowest)},
+                          {"highest_seen", json::numberOrNull(range.highest)},
                           {"layouts_measured", range.layouts}};
             if (!verdict.reason.empty()) e["reach"]["reason"] = verdict.reason;
         }
@@ -172,7 +171,7 @@ std::string reportJson(const Scene& scene, const OptimizerResult& r) {
         for (const CacheDifference& d : r.cacheCheck.first)
             first.push_back({{"evaluation", d.evaluation},
                              {"sampler", d.sampler < int(scene.samplers.size()) ? scene.samplers[size_t(d.sampler)].name : ""},
-                             {"item", d.item}, {"path", d.path}, {"cached", number(d.cached)}, {"fresh", number(d.fresh)},
+                             {"item", d.item}, {"path", d.path}, {"cached", json::numberOrNull(d.cached)}, {"fresh", json::numberOrNull(d.fresh)},
                              {"parts_at", d.where ? Json{d.where->x, d.where->y, d.where->z} : Json(nullptr)}});
         j["path_cache_check"] = {{"checked", r.cacheCheck.checked}, {"differing", r.cacheCheck.differing}, {"first", first}};
     }

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <string_view>
 
+#include <luxplan/json/fields.h>
 #include <luxplan/lightsamplers/sampler_type.h>
 
 namespace luxplan {
@@ -11,7 +12,6 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-Json number(double v) { return std::isfinite(v) ? Json(v) : Json(nullptr); }
 
 std::string fixed(double v, int decimals) {
     char text[64];
@@ -39,7 +39,7 @@ Json samplerStatisticsJson(const LightSamplerSpec& sampler, const SamplerResult&
         terms.push_back({{"statistic", statisticNames().name(t.statistic)},
                          {"value", t.value},
                          {"std_error", t.standardError},
-                         {"target", {number(t.targetMin), number(t.targetMax)}},
+                         {"target", {json::numberOrNull(t.targetMin), json::numberOrNull(t.targetMax)}},
                          {"tolerance", t.tolerance},
                          {"penalty", t.penalty}});
     j["terms"] = terms;
