@@ -12,24 +12,13 @@
 #include <luxplan/rt/embree_scene.h>
 #include <luxplan/scene/layout.h>
 #include "support/scene_builder.h"
+#include "support/two_window_room.h"
 
 namespace luxplan {
 namespace {
 
 using test::SceneBuilder;
-
-// A 6 x 4 x 3 m room lit through a south and an east window, a door closed by an
-// opaque panel on the west wall (not an entrance for the sun).
-Scene twoWindowRoom() {
-    return SceneBuilder()
-        .material("wall", test::diffuse(0.5))
-        .material("glass", test::glass(0.8))
-        .room({0, 0, 0}, {6, 4, 3}, "wall", "wall", "wall")
-        .window(Wall::South, 1, 2, 1, 1, "glass")
-        .window(Wall::East, 1, 1.5, 0.8, 1.2)
-        .window(Wall::West, 1, 1, 0, 2.1, "wall")
-        .build();
-}
+using test::twoWindowRoom;
 
 TEST(SunPatches, BeamPointsLandWithTheDensityTheyClaim) {
     const Scene scene = twoWindowRoom();

@@ -116,6 +116,8 @@ public:
     EnvironmentSample sampleSun(double uDisk, Vec2 u) const { return sampleSunDisk(sunDiskOf(uDisk), u); }
     // sampleSun's two steps: the disk uDisk chooses, then a direction in it (u).
     size_t sunDiskOf(double uDisk) const;
+    // The probability with which sunDiskOf chooses disk k.
+    double sunDiskProbability(size_t k) const { return sunDistribution_.pmf(k); }
     EnvironmentSample sampleSunDisk(size_t k, Vec2 u) const;
     double sunPdf(const Vec3& w) const;
     // sunLe(w) and sunPdf(w) from one lookup.

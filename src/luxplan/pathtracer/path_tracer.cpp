@@ -62,12 +62,16 @@ Vertex surfaceVertex(const Hit& hit, const Bsdf& bsdf, const Vec3& wo) {
 
 // The power heuristic for the sun's light at a vertex y reached from a surface vertex
 // x, among three strategies for the same path x -> y -> sun: BSDF sampling at x then
-// the sun sampled at y (densities a * pSun), the sunlit patch sampled from x (b *
-// pSun), BSDF sampling at x then at y (a * pBsdf), with a the area density of x's
-// BSDF sample at y and b the patch's (sun_patches.h). `own` is the numerator's pair.
-double sunWeight(double ownFirst, double ownSecond, double a, double b, double pSun, double pBsdf) {
+// the sun sampled at y (densities a * pSunAtY), the sunlit patch sampled from x (b *
+// pSun, the period's own density: the patch draws its sun from all the disks), BSDF
+// sampling at x then at y (a * pBsdf), with a the area density of x's BSDF sample at y
+// and b the patch's (sun_patches.h). pSunAtY is y's own sun density, which counts only
+// the disks the shell lets through from y (open_sun_disks.h). `own` is the numerator's
+// pair. The same for the sky's light at a surface outside the room, with the portal's
+// density as b and the sky's as both light densities.
+double sunWeight(double ownFirst, double ownSecond, double a, double b, double pSunAtY, double pSun, double pBsdf) {
     const double own = ownFirst * ownSecond;
-    const double sum = (a * pSun) * (a * pSun) + (b * pSun) * (b * pSun) + (a * pBsdf) * (a * pBsdf);
+    const double sum = (a * pSunAtY) * (a * pSunAtY) + (b * pSun) * (b * pSun) + (a * pBsdf) * (a * pBsdf);
     return sum > 0 ? own * own / sum : 0;
 }
 
@@ -122,6 +126,7 @@ PathTracer::PathTracer(const EmbreeScene& rt, const DaylightEnvironment* dayligh
       // Glass inside the room would bend no beam but would have to be crossed one hit
       // at a time both ways; such scenes keep BSDF sampling alone for the patches.
       patches_(rt.scene(), options.sunPatches && daylight && daylight->hasSun() && !rt.hasGlass()),
+      sunDisks_(options.openSunDisks ? OpenSunDisks(daylight, patches_) : OpenSunDisks()),
       panes_(rt.scene()) {
     for (const Material& m : rt.scene().materials) bsdfs_.push_back(makeBsdf(m));
     exteriorSun_ = options.exteriorSun && options.portals && daylight && daylight->hasSun() && daylight->hasSky() &&
@@ -261,6 +266,9 @@ double PathTracer::sample(const Sensor& sensor, PathSamples& samples, RayStats& 
     }
     bool lastDelta = false;
     double lastPdf = 0;
+    // The share of the sun's disks open from this vertex and the last non-delta one
+    // (OpenSunDisks; 1 where no sun sample was asked for: no sun light can come there).
+    double sunOpen = 1, lastSunOpen = 1;
     Vec3 lastPoint = origin;
     bool lastAtSensor = true;  // lastPoint is the sensor's (its emitter view applies)
     const bool sky = sky_.active();
@@ -306,6 +314,7 @@ double PathTracer::sample(const Sensor& sensor, PathSamples& samples, RayStats& 
         Vec3 entry, beamEnd;
         std::optional<Hit> hit;
         double density = 0, toSun = -1;  // toSun < 0: not asked yet
+        double openAtY = 0;  // the open disks' share at y (OpenSunDisks), once asked
     } patch;
     int depth = 0;
     auto patchesHere = [&]() { return patches_.active() && v.isSurface(); };
@@ -347,7 +356,10 @@ double PathTracer::sample(const Sensor& sensor, PathSamples& samples, RayStats& 
         if (maxComponent(fy) <= 0) return;
         const double b = patch.density, pSun = patch.sun.pdf;
         const double cosY = std::abs(dot(y.ng, wi));
-        const double w = sunWeight(b, pSun, pdfOf(v, wi) * cosY / d2, b, pSun, pdfOf(y, ws));
+        // y's own sun sample would count only the disks the shell lets through from y
+        // (from its side of the surface, which a path from any vertex that faces it shares).
+        if (!(patch.openAtY > 0)) patch.openAtY = sunDisks_.at(y.p, &y.ng, kRayEpsilon).share;
+        const double w = sunWeight(b, pSun, pdfOf(v, wi) * cosY / d2, b, pSun / patch.openAtY, pSun, pdfOf(y, ws));
         if (!(w > 0)) return;
         if (patch.toSun < 0) {
             patch.toSun = transmittance(spawn(y, ws), ws, kInf, -1, stats);
@@ -378,6 +390,7 @@ double PathTracer::sample(const Sensor& sensor, PathSamples& samples, RayStats& 
         bool deltaVertex = v.isSurface() ? v.bsdf->isDelta() : sensor.isDelta();
 
         // ---- next-event estimation (skipped at delta vertices) ----
+        sunOpen = 1;
         if (!deltaVertex) {
             // `throughShell`: the direction must leave through an opening (the sun's: a
             // direction that leaves the box through an opaque wall is blocked whatever the
@@ -398,9 +411,9 @@ double PathTracer::sample(const Sensor& sensor, PathSamples& samples, RayStats& 
                 double w = powerHeuristic(1, lightPdf, 1, bsdfPdf);
                 if (source == LightBudget::kSun && arrivalDensity > 0) {
                     const double b = otherSunDensity(wi);
-                    if (b > 0) w = sunWeight(arrivalDensity, lightPdf, arrivalDensity, b, lightPdf, bsdfPdf);
+                    if (b > 0) w = sunWeight(arrivalDensity, lightPdf, arrivalDensity, b, lightPdf, lightPdf * sunOpen, bsdfPdf);
                 } else if (source == LightBudget::kSky && outsideDensity > 0) {
-                    w = sunWeight(arrivalDensity, lightPdf, arrivalDensity, outsideDensity, lightPdf, bsdfPdf);
+                    w = sunWeight(arrivalDensity, lightPdf, arrivalDensity, outsideDensity, lightPdf, lightPdf, bsdfPdf);
                 }
                 Vec3 contribution = throughput * f * Le * (T * w / lightPdf);
                 if (stats.budget) stats.budget->credit(source, depth, luminance(contribution));
@@ -449,7 +462,8 @@ double PathTracer::sample(const Sensor& sensor, PathSamples& samples, RayStats& 
                         if (maxComponent(fz) <= 0) return;
                         const double V = transmittance(spawn(outside, wl), wl, kInf, -1, stats);
                         if (V <= 0) return;
-                        const double w = sunWeight(s.pdf, pl, a, s.pdf, pl, pdfOf(outside, wl));
+                        // z lies outside the room: every disk is open from it.
+                        const double w = sunWeight(s.pdf, pl, a, s.pdf, pl, pl, pdfOf(outside, wl));
                         contribution += throughput * f * fz * Le * (T * V * w / (s.pdf * pl));
                     };
                     // The sun (this vertex's sun sample), then the sky and the ground, which
@@ -500,36 +514,50 @@ double PathTracer::sample(const Sensor& sensor, PathSamples& samples, RayStats& 
             const bool skyHere = sky && (v.isSurface() || sky_.seenBy(*view, sensor));
             const bool outside = skyHere && exteriorSun_ && view->active;  // the sky's sample lights z with the sun's
             const bool sunHere = v.isSurface() || sensorSeesSun;
-            EnvironmentSample sun;
+            EnvironmentSample sun, sunAtZ;
             if (daylight_ && daylight_->hasSun() && (sunHere || outside)) {
                 const double uDisk = samples.get1D(PathSamples::SunDisk);
                 const Vec2 uPoint = samples.get2D(PathSamples::SunPoint);
+                // The exterior strategy lights the surface outside with the period's own
+                // choice of disk (every disk is open from out there).
+                if (outside) sunAtZ = daylight_->sampleSun(uDisk, uPoint);
                 // A surface that only reflects, with every sun direction behind it, would
                 // find the sample unlit (evalCos): its numbers are drawn all the same, so
                 // that every later one stays, but the direction is not.
                 const bool behind = v.isSurface() && !v.bsdf->hasDiffuseTransmission() && daylight_->sunBehind(v.ng);
-                if (outside || !behind) {
-                    // Nor where the shell's walls block every direction of the chosen disk
-                    // from the shadow ray's origin: the sample would find no opening
-                    // (addLight's shadedByShell), and none is made. At a surface whose plane
-                    // the disk's cone does not cross, that origin is spawn()'s, the same for
-                    // every direction of the disk (a point of the floor or a wall: on the
-                    // shell itself, its origin is just inside); else within kRayEpsilon.
-                    const size_t disk = daylight_->sunDiskOf(uDisk);
-                    const Vec3& axis = daylight_->sunDisks()[disk].direction;
-                    const double halfAngle = kSunHalfAngle * (1 + 1e-6) + 1e-9;
-                    Vec3 from = v.p;
-                    double within = kRayEpsilon;
-                    if (v.isSurface() && std::abs(dot(axis, v.ng)) > halfAngle) from = offsetAlong(v.p, v.ng, axis), within = 0;
-                    const bool walled = !outside && patches_.shadesCone(from, within, axis, halfAngle);
-                    if (!walled) sun = daylight_->sampleSunDisk(disk, uPoint);
+                if (sunHere && !behind) {
+                    // The disk among those the shell may let through from the shadow ray's
+                    // origin (OpenSunDisks), and its density over their share. At a
+                    // surface whose plane the disk's cone does not cross, that origin is
+                    // spawn()'s, the same for every direction of the disk (a point of the
+                    // floor or a wall: on the shell itself, its origin is just inside);
+                    // else within kRayEpsilon.
+                    const OpenSunDisks::Open open = sunDisks_.at(v.p, v.isSurface() ? &v.ng : nullptr, kRayEpsilon);
+                    sunOpen = open.share;
+                    const size_t disk = sunDisks_.active() ? sunDisks_.choose(open, uDisk) : daylight_->sunDiskOf(uDisk);
+                    bool walled = disk == OpenSunDisks::kNone;
+                    if (!walled && (!sunDisks_.active() || sunDisks_.grouped(disk))) {
+                        // Its own cone untested: where the shell blocks it whole, no
+                        // direction is made (the sample would find no opening:
+                        // addLight's shadedByShell).
+                        const Vec3& axis = daylight_->sunDisks()[disk].direction;
+                        const double halfAngle = kSunHalfAngle * (1 + 1e-6) + 1e-9;
+                        Vec3 from = v.p;
+                        double within = kRayEpsilon;
+                        if (v.isSurface() && std::abs(dot(axis, v.ng)) > halfAngle) from = offsetAlong(v.p, v.ng, axis), within = 0;
+                        walled = patches_.shadesCone(from, within, axis, halfAngle);
+                    }
+                    if (!walled) {
+                        sun = daylight_->sampleSunDisk(disk, uPoint);
+                        sun.pdf /= open.share;
+                    }
+                    addLight(sun.wi, sun.Le, sun.pdf, kInf, -1, LightBudget::kSun, true);
                 }
-                if (sunHere && !behind) addLight(sun.wi, sun.Le, sun.pdf, kInf, -1, LightBudget::kSun, true);
             }
             if (skyHere) {
                 const bool later = !outside && view->active && daylight_->radiancePositive();
                 EnvironmentSample s = sky_.sample(*view, v.p, samples.get2D(PathSamples::SkyPoint), !later);
-                if (outside) addSkyOrOutside(s, sun);
+                if (outside) addSkyOrOutside(s, sunAtZ);
                 else addLight(s.wi, s.Le, s.pdf, kInf, -1, LightBudget::kSky, false, later);
             }
             if (patchesHere()) addSunPatch();
@@ -558,6 +586,7 @@ double PathTracer::sample(const Sensor& sensor, PathSamples& samples, RayStats& 
         if (depth == 0) firstWeight = maxComponent(throughput);
         if (!delta) {
             lastPdf = pdf;
+            lastSunOpen = sunOpen;
             lastPoint = v.p;
             lastAtSensor = !v.isSurface();
             lastPatched = patchesHere();
@@ -590,15 +619,16 @@ double PathTracer::sample(const Sensor& sensor, PathSamples& samples, RayStats& 
                     double wSky = 1;
                     if (!lastDelta) {
                         const double pSky = sky_.pdf(*views[current ^ 1], lastPoint, d);
-                        wSky = outsideDensity > 0 ? sunWeight(arrivalDensity, lastPdf, arrivalDensity, outsideDensity, pSky, lastPdf)
+                        wSky = outsideDensity > 0 ? sunWeight(arrivalDensity, lastPdf, arrivalDensity, outsideDensity, pSky, pSky, lastPdf)
                                                   : powerHeuristic(1, lastPdf, 1, pSky);
                     }
                     double wSun = 1;
                     if (!lastDelta && maxComponent(sun) > 0) {
-                        const double pSun = daylight_->sunPdf(d);
+                        // The last vertex's own sun sample would have chosen among its open disks.
+                        const double pSun = daylight_->sunPdf(d), pSunThere = pSun / lastSunOpen;
                         const double b = arrivalDensity > 0 ? otherSunDensity(d) : 0;
-                        wSun = b > 0 ? sunWeight(arrivalDensity, lastPdf, arrivalDensity, b, pSun, lastPdf)
-                                     : powerHeuristic(1, lastPdf, 1, pSun);
+                        wSun = b > 0 ? sunWeight(arrivalDensity, lastPdf, arrivalDensity, b, pSunThere, pSun, lastPdf)
+                                     : powerHeuristic(1, lastPdf, 1, pSunThere);
                     }
                     L += throughput * (sky * wSky + sun * wSun);
                     if (stats.budget) {

@@ -20,6 +20,7 @@
 #include <luxplan/daylight/environment.h>
 #include <luxplan/materials/bsdf.h>
 #include <luxplan/pathtracer/emitters.h>
+#include <luxplan/pathtracer/open_sun_disks.h>
 #include <luxplan/pathtracer/panes.h>
 #include <luxplan/pathtracer/sealed_boxes.h>
 #include <luxplan/pathtracer/path_footprint.h>
@@ -38,6 +39,9 @@ struct PathTracerOptions {
     // Follow the sky's portal samples that meet a surface outside the room (a facade
     // across the street) and take the sun's light there.
     bool exteriorSun = true;
+    // Choose each sun sample's disk among those the room's shell may let through from
+    // the vertex (open_sun_disks.h); false: among all of the period's disks.
+    bool openSunDisks = true;
     int rouletteDepth = 3;     // bounces before Russian roulette starts
     // The roulette lets a path go on with probability min(0.95, throughput / (level x
     // the first surface's)), so a survivor carries level x that throughput (or more).
@@ -161,6 +165,7 @@ private:
     EmitterSet emitters_;
     SkyLight sky_;
     SunPatches patches_;
+    OpenSunDisks sunDisks_;
     OpeningPanes panes_;
     SealedBoxes sealed_;
     uint64_t layoutStamp_ = 0;  // unique to each updateLayout() of any tracer

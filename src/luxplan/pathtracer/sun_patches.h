@@ -54,7 +54,8 @@ public:
     // can light anything it faces.
     Vec3 beamEnd(const Vec3& p, const Vec3& beam) const;
 
-private:
+    // The openings that let sunlight through unscattered, and whether the rest of the
+    // shell is opaque (open_sun_disks.h tests many cones against them at once).
     struct Entrance {
         RectTarget target;
         Vec3 outward;  // unit
@@ -62,6 +63,11 @@ private:
         Vec3 unitU, unitV;  // the rectangle's edges as unit vectors, and their lengths
         double lengthU = 0, lengthV = 0;
     };
+    const std::vector<Entrance>& entrances() const { return openings_; }
+    bool opaqueShell() const { return opaqueShell_; }
+    const Bounds3& shell() const { return shell_; }
+
+private:
     std::vector<Entrance> openings_;
     Bounds3 room_;
     Bounds3 shell_;  // the room's box itself
