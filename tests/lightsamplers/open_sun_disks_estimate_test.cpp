@@ -72,5 +72,40 @@ TEST(OpenSunDisks, LeaveEveryEstimateAsItWasWithLessNoise) {
     }
 }
 
+// The morning sun comes in through the east windows and lights the south face of a
+// building north of the room, which a north window shows: the exterior strategy lights
+// that facade with a sun sample from all of the period's disks, while the vertex's own
+// sample chooses among the disks open from it. The same estimates either way.
+TEST(OpenSunDisks, TheSunOnAFacadeOutsideStaysWhereItWas) {
+    DaylightParams d;
+    d.model = SkyModelType::Preetham;
+    d.from = test::at("2026-03-20T08:30+02:00");
+    d.to = test::at("2026-03-20T11:30+02:00");
+    d.stepMinutes = 30;
+    Scene scene = SceneBuilder()
+                      .material("wall", test::diffuse(0.6))
+                      .material("facade", test::diffuse(0.8))
+                      .daylight(d)
+                      .room({0, 0, 0}, {7, 5, 2.8}, "wall", "wall", "wall")
+                      .window(Wall::East, 1.5, 2, 0.9, 1.5)
+                      .window(Wall::North, 2.5, 2, 0.9, 1.5)
+                      .box("facade", {-20, 11, 0}, {30, 13, 15}, "facade")
+                      .sampler("south wall", planarSampler({3.5, 0.01, 1.5}, {0, 1, 0}, {0, 0, 1}, {0.2, 0.2}, {1, 1}), 0)
+                      .sampler("floor", planarSampler({3.5, 2.5, 0.01}, {0, 0, 1}, {0, 1, 0}, {4, 3}, {4, 3}), 0)
+                      .build();
+    scene.site.latitudeDeg = 37.98, scene.site.longitudeDeg = 23.73;
+    PathTracerOptions every;
+    every.openSunDisks = false;
+    SceneLab withOpen(scene), withEvery(scene, every);
+    ASSERT_TRUE(withOpen.tracer->samplesExteriorSun());
+    const MeasureResult a = withOpen.measure(3000), b = withEvery.measure(3000);
+    for (size_t k = 0; k < a.samplers.size(); ++k) {
+        const SamplerResult &x = a.samplers[k], &y = b.samplers[k];
+        EXPECT_NEAR(x.value, y.value, 4 * std::hypot(x.standardError, y.standardError))
+            << scene.samplers[k].name << ": " << x.value << " +- " << x.standardError << " against " << y.value << " +- "
+            << y.standardError;
+    }
+}
+
 }  // namespace
 }  // namespace luxplan
