@@ -10,9 +10,8 @@ namespace luxplan {
 OpenSunDisks::OpenSunDisks(const DaylightEnvironment* daylight, const SunPatches& shell) : daylight_(daylight) {
     if (!daylight || !daylight->hasSun() || !shell.opaqueShell() || shell.shell().empty()) return;
     if (shell.entrances().size() > kMaxOpenings) return;
-    openings_ = shell.entrances();
     shell_ = shell.shell();
-    const std::vector<Entrance>& openings = openings_;
+    const std::vector<Entrance>& openings = shell.entrances();
     const std::vector<SunDisk>& disks = daylight->sunDisks();
     cumulative_.assign(disks.size() + 1, 0.0);
     for (size_t k = 0; k < disks.size(); ++k) cumulative_[k + 1] = cumulative_[k] + daylight->sunDiskProbability(k);
@@ -42,6 +41,7 @@ OpenSunDisks::OpenSunDisks(const DaylightEnvironment* daylight, const SunPatches
         groups_.push_back(group);
     }
     allGroups_ = groups_.size() == 32 ? ~uint32_t(0) : (uint32_t(1) << groups_.size()) - 1;
+    std::vector<Entrance> facing;  // the openings some group's cone may pass through
     for (const Entrance& o : openings) {
         Terms t{};
         for (size_t g = 0; g < groups_.size(); ++g) {
@@ -70,8 +70,13 @@ OpenSunDisks::OpenSunDisks(const DaylightEnvironment* daylight, const SunPatches
                 t.widestPerOffset = std::max(t.widestPerOffset, t.marginPerOffset[g]);
             }
         }
+        // An opening that faces away from every disk (the north windows, at noon) lets no
+        // group through: it is left out of every point's tests.
+        if (t.away == allGroups_) continue;
+        facing.push_back(o);
         terms_.push_back(t);
     }
+    openings_ = std::move(facing);
 }
 
 void OpenSunDisks::place(Origin& o, const Vec3& q, double within) const {
