@@ -357,7 +357,8 @@ double PathTracer::sample(const Sensor& sensor, PathSamples& samples, RayStats& 
         const double b = patch.density, pSun = patch.sun.pdf;
         const double cosY = std::abs(dot(y.ng, wi));
         // y's own sun sample would count only the disks the shell lets through from y
-        // (from its side of the surface, which a path from any vertex that faces it shares).
+        // (from its shadow ray's origin, offset towards the sun: the same whichever side
+        // of y's surface the path comes from).
         if (!(patch.openAtY > 0)) patch.openAtY = sunDisks_.at(y.p, &y.ng, kRayEpsilon).share;
         const double w = sunWeight(b, pSun, pdfOf(v, wi) * cosY / d2, b, pSun / patch.openAtY, pSun, pdfOf(y, ws));
         if (!(w > 0)) return;
