@@ -18,10 +18,8 @@ namespace {
 using test::SceneBuilder;
 using test::SceneLab;
 
-// A morning office in Athens, its windows on the east wall, the sun at seven half-hourly
-// steps: each sun's patch on the floor lies elsewhere, so a floor point is lit by one or
-// two of them. `to` and `stepMinutes` may make it a longer period of more disks.
-Scene morningRoom(const char* to = "2026-03-20T11:30+02:00", double stepMinutes = 30) {
+// A March morning in Athens from 08:30 to `to` (local time, UTC+2) at `stepMinutes`.
+DaylightParams morning(const char* to = "2026-03-20T11:30+02:00", double stepMinutes = 30) {
     DaylightParams d;
     d.model = SkyModelType::Preetham;
     d.turbidity = 3;
@@ -29,12 +27,30 @@ Scene morningRoom(const char* to = "2026-03-20T11:30+02:00", double stepMinutes 
     d.to = test::at(to);
     d.stepMinutes = stepMinutes;
     d.groundReflectance = 0.2;
+    return d;
+}
+
+// Each sampler's value with the open disks (a) and with every disk (b) agree within 4
+// of their errors; `label` names the case in a failure.
+void expectSameValues(const Scene& scene, const MeasureResult& a, const MeasureResult& b, const std::string& label = "") {
+    for (size_t k = 0; k < a.samplers.size(); ++k) {
+        const SamplerResult &x = a.samplers[k], &y = b.samplers[k];
+        EXPECT_NEAR(x.value, y.value, 4 * std::hypot(x.standardError, y.standardError))
+            << scene.samplers[k].name << label << ": " << x.value << " +- " << x.standardError << " against " << y.value
+            << " +- " << y.standardError;
+    }
+}
+
+// A morning office, its windows on the east wall, the sun at seven half-hourly steps:
+// each sun's patch on the floor lies elsewhere, so a floor point is lit by one or two of
+// them. `daylight` may make it a longer period of more disks.
+Scene morningRoom(const DaylightParams& daylight = morning()) {
     Scene scene = SceneBuilder()
                       .material("wall", test::diffuse(0.7))
                       .material("ceiling", test::diffuse(0.8))
                       .material("floor", test::diffuse(0.3))
                       .material("glass", test::glass(0.8))
-                      .daylight(d)
+                      .daylight(daylight)
                       .room({0, 0, 0}, {7, 5, 2.8}, "floor", "wall", "ceiling")
                       .window(Wall::East, 0.6, 1.5, 0.9, 1.5, "glass")
                       .window(Wall::East, 2.8, 1.5, 0.9, 1.5, "glass")
@@ -62,13 +78,10 @@ TEST(OpenSunDisks, LeaveEveryEstimateAsItWasWithLessNoise) {
         SceneLab withOpen(scene, open), withEvery(scene, every);
         ASSERT_TRUE(withOpen.daylight && withOpen.daylight->sunDisks().size() == 7);
         const MeasureResult a = withOpen.measure(3000), b = withEvery.measure(3000);
-        for (size_t k = 0; k < a.samplers.size(); ++k) {
-            const SamplerResult &x = a.samplers[k], &y = b.samplers[k];
-            const std::string name = scene.samplers[k].name + (patches ? " (with the patches)" : "");
-            EXPECT_NEAR(x.value, y.value, 4 * std::hypot(x.standardError, y.standardError))
-                << name << ": " << x.value << " +- " << x.standardError << " against " << y.value << " +- " << y.standardError;
-            EXPECT_LT(x.standardError, most[k] * y.standardError) << name;
-        }
+        const std::string label = patches ? " (with the patches)" : "";
+        expectSameValues(scene, a, b, label);
+        for (size_t k = 0; k < a.samplers.size(); ++k)
+            EXPECT_LT(a.samplers[k].standardError, most[k] * b.samplers[k].standardError) << scene.samplers[k].name << label;
     }
 }
 
@@ -76,21 +89,17 @@ TEST(OpenSunDisks, LeaveEveryEstimateAsItWasWithLessNoise) {
 // few disks, and the chosen disk's own cone is tested after. The same estimates, with
 // less noise.
 TEST(OpenSunDisks, GroupsOfDisksLeaveEveryEstimateAsItWas) {
-    const Scene scene = morningRoom("2026-03-20T17:30+02:00", 5);
+    const Scene scene = morningRoom(morning("2026-03-20T17:30+02:00", 5));
     PathTracerOptions every;
     every.openSunDisks = false;
     SceneLab withOpen(scene), withEvery(scene, every);
     ASSERT_GT(withOpen.daylight->sunDisks().size(), 3 * OpenSunDisks::kMaxGroups);
     const MeasureResult a = withOpen.measure(2000), b = withEvery.measure(2000);
-    for (size_t k = 0; k < a.samplers.size(); ++k) {
-        const SamplerResult &x = a.samplers[k], &y = b.samplers[k];
-        EXPECT_NEAR(x.value, y.value, 4 * std::hypot(x.standardError, y.standardError))
-            << scene.samplers[k].name << ": " << x.value << " +- " << x.standardError << " against " << y.value << " +- "
-            << y.standardError;
-        // Groups of three or four disks still leave most of the shaded suns out (measured:
-        // 0.42, 0.73 and 0.40 of the errors).
-        EXPECT_LT(x.standardError, 0.92 * y.standardError) << scene.samplers[k].name;
-    }
+    expectSameValues(scene, a, b);
+    // Groups of three or four disks still leave most of the shaded suns out (measured:
+    // 0.42, 0.73 and 0.40 of the errors).
+    for (size_t k = 0; k < a.samplers.size(); ++k)
+        EXPECT_LT(a.samplers[k].standardError, 0.92 * b.samplers[k].standardError) << scene.samplers[k].name;
 }
 
 // The morning sun comes in through the east windows and lights the south face of a
@@ -98,15 +107,10 @@ TEST(OpenSunDisks, GroupsOfDisksLeaveEveryEstimateAsItWas) {
 // that facade with a sun sample from all of the period's disks, while the vertex's own
 // sample chooses among the disks open from it. The same estimates either way.
 TEST(OpenSunDisks, TheSunOnAFacadeOutsideStaysWhereItWas) {
-    DaylightParams d;
-    d.model = SkyModelType::Preetham;
-    d.from = test::at("2026-03-20T08:30+02:00");
-    d.to = test::at("2026-03-20T11:30+02:00");
-    d.stepMinutes = 30;
     Scene scene = SceneBuilder()
                       .material("wall", test::diffuse(0.6))
                       .material("facade", test::diffuse(0.8))
-                      .daylight(d)
+                      .daylight(morning())
                       .room({0, 0, 0}, {7, 5, 2.8}, "wall", "wall", "wall")
                       .window(Wall::East, 1.5, 2, 0.9, 1.5)
                       .window(Wall::North, 2.5, 2, 0.9, 1.5)
@@ -119,13 +123,7 @@ TEST(OpenSunDisks, TheSunOnAFacadeOutsideStaysWhereItWas) {
     every.openSunDisks = false;
     SceneLab withOpen(scene), withEvery(scene, every);
     ASSERT_TRUE(withOpen.tracer->samplesExteriorSun());
-    const MeasureResult a = withOpen.measure(3000), b = withEvery.measure(3000);
-    for (size_t k = 0; k < a.samplers.size(); ++k) {
-        const SamplerResult &x = a.samplers[k], &y = b.samplers[k];
-        EXPECT_NEAR(x.value, y.value, 4 * std::hypot(x.standardError, y.standardError))
-            << scene.samplers[k].name << ": " << x.value << " +- " << x.standardError << " against " << y.value << " +- "
-            << y.standardError;
-    }
+    expectSameValues(scene, withOpen.measure(3000), withEvery.measure(3000));
 }
 
 }  // namespace
