@@ -178,6 +178,7 @@ int runOptimize(const OptimizeArgs& args) {
     measure.seed = options.seed;
     measure.adaptive = !args.fixedPaths;
     measure.lowDiscrepancy = args.sampling == "sobol";
+    measure.choiceError = false;  // the search's stops do not read it; its report's measurements do
     std::unique_ptr<PathTracedLighting> lighting;
     const int reportPaths = std::max(scene.optimizer.reportPathsPerPoint, measure.pathsPerPoint);
     if (!scene.samplers.empty()) {

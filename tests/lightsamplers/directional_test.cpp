@@ -166,18 +166,24 @@ TEST(Directional, UniformSkyThroughAnOpeningReadsItsLuminanceInEveryStratum) {
     EXPECT_NEAR(lab.measure(16, 3).samplers[0].value, L, 0.01 * L);
 }
 
+// A wall lit by a window under an overcast sky, seen through 8 x 8 strata of
+// near-equal luminance.
+Scene litWall() {
+    return SceneBuilder()
+        .material("wall", test::diffuse(0.6))
+        .material("floor", test::diffuse(0.3))
+        .overcastSky(10000)
+        .room({0, 0, 0}, {5, 5, 3}, "floor", "wall", "wall")
+        .window(Wall::South, 0.5, 1.5, 0.9, 1.4)
+        .sampler("wall", directionalSampler({2.5, 2.5, 1.2}, {1, 0, 0}, kZ, 60, 8), 0, 100)
+        .build();
+}
+
 // A wall lit by a window, strata of near-equal luminance: the plain max over 8 x 8
 // noisy strata read 19% high at 32 paths here. The cross-fitted value must not read
 // high on average, and its error must cover its spread over seeds.
 TEST(Directional, FewPathsDoNotReadHighOnALitWall) {
-    SceneLab lab(SceneBuilder()
-                     .material("wall", test::diffuse(0.6))
-                     .material("floor", test::diffuse(0.3))
-                     .overcastSky(10000)
-                     .room({0, 0, 0}, {5, 5, 3}, "floor", "wall", "wall")
-                     .window(Wall::South, 0.5, 1.5, 0.9, 1.4)
-                     .sampler("wall", directionalSampler({2.5, 2.5, 1.2}, {1, 0, 0}, kZ, 60, 8), 0, 100)
-                     .build());
+    const SceneLab lab(litWall());
     const SamplerResult converged = lab.measure(2000).samplers[0];
     const int seeds = 12;
     double sum = 0, sumSquares = 0, reported = 0;
@@ -190,6 +196,49 @@ TEST(Directional, FewPathsDoNotReadHighOnALitWall) {
     EXPECT_LT(mean, truth + 3 * sd / std::sqrt(double(seeds)) + 3 * converged.standardError) << "reads high";
     EXPECT_GT(mean, 0.85 * truth) << "falls far short";
     EXPECT_GT(reported / seeds, 0.5 * sd) << "the error misses the spread over seeds";
+}
+
+// The same wall: its five brightest strata lie within a few percent, so the folds'
+// choices, made from data they mostly share, move together from run to run. The spread
+// of the fold values alone then reads short of the value's spread over seeds; the error
+// reported (a bootstrap of the whole cross-fitted estimate) must cover it, and not by
+// much more.
+TEST(Directional, TheReportedErrorCoversTheChoiceAmongNearEqualStrata) {
+    const SceneLab lab(litWall());
+    const int seeds = 60;
+    double sum = 0, sumSquares = 0, reported = 0, foldsOnly = 0;
+    for (int s = 0; s < seeds; ++s) {
+        MeasureOptions o;
+        o.pathsPerPoint = 64, o.seed = uint64_t(300 + s);
+        const SamplerResult r = lab.measure(o).samplers[0];
+        o.choiceError = false;
+        const SamplerResult plain = lab.measure(o).samplers[0];
+        ASSERT_EQ(r.value, plain.value) << "the error alone differs";
+        sum += r.value, sumSquares += r.value * r.value;
+        reported += r.standardError * r.standardError, foldsOnly += plain.standardError * plain.standardError;
+    }
+    const double mean = sum / seeds, sd = std::sqrt(std::max(0.0, sumSquares / seeds - mean * mean) * seeds / (seeds - 1));
+    const double rms = std::sqrt(reported / seeds), foldsRms = std::sqrt(foldsOnly / seeds);
+    // The spread over 60 seeds is itself known to about 9%.
+    EXPECT_GT(rms, 0.8 * sd) << "the error misses the spread over seeds";
+    EXPECT_LT(rms, 1.35 * sd) << "the error is far wider than the spread over seeds";
+    EXPECT_LT(foldsRms, 0.8 * sd) << "the fold values' spread no longer misses the choice here: the test shows nothing";
+}
+
+// One stratum far brighter than the rest (the sun in view): nothing to choose, and the
+// error reported is the fold values' spread within the bootstrap's own error.
+TEST(Directional, TheReportedErrorIsTheFoldSpreadWhereOneStratumStandsOut) {
+    const Vec3 toSun = normalize(Vec3(0, -std::cos(radians(30)), std::sin(radians(30))));
+    SceneLab lab(sunRoom(60000).sampler("sun", directionalSampler({3, 2, 0.8}, toSun, kZ, 20, 5), 0, 100).build());
+    for (uint64_t seed : {1, 2, 3}) {
+        MeasureOptions o;
+        o.pathsPerPoint = 64, o.seed = seed;
+        const SamplerResult r = lab.measure(o).samplers[0];
+        o.choiceError = false;
+        const SamplerResult plain = lab.measure(o).samplers[0];
+        EXPECT_NEAR(r.standardError, plain.standardError, 0.25 * plain.standardError) << "seed " << seed;
+        EXPECT_EQ(lab.measure(o).samplers[0].standardError, plain.standardError) << "the same paths, the same error";
+    }
 }
 
 // A directional path adds to its own stratum and to those of its eye's light samples

@@ -25,8 +25,9 @@ struct SceneLab {
     MeasureResult measure(int paths, uint64_t seed = 1) const {
         MeasureOptions o;
         o.pathsPerPoint = paths, o.seed = seed;
-        return measureSamplers(*tracer, o);
+        return measure(o);
     }
+    MeasureResult measure(const MeasureOptions& options) const { return measureSamplers(*tracer, options); }
 };
 
 }  // namespace luxplan::test

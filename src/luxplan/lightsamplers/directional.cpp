@@ -22,10 +22,16 @@
 // unbiased for it: the estimate can only fall short of the true max, by what a wrong
 // choice among near-equal strata costs (measured in docs/light-transport.md), and
 // does not grow as paths shrink. Its standard error is the spread of the fold
-// values, so it includes how the choice varies.
+// values. That misses part of how the choice varies: the folds choose from data they
+// mostly share, so where strata are near-equal they tend to choose alike, and the fold
+// values move together from run to run. The error reported (reportedError) is
+// therefore a parametric bootstrap of the whole cross-fitted estimate.
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <stdexcept>
+
+#include <luxplan/core/rng.h>
 
 #include <luxplan/lightsamplers/sampler_type.h>
 #include <luxplan/pathtracer/path_tracer.h>
@@ -85,6 +91,9 @@ private:
 static_assert(PathContributions::kCapacity >= 1 + SensorLight::kCapacity);
 
 class PlacedDirectional final : public PlacedSampler {
+    static constexpr int kBootstrapDraws = 200;  // the error's own error about 5%
+    static constexpr uint64_t kBootstrapTag = 0x626f6f74ULL;  // "boot"
+
 public:
     Frustum frustum;
 
@@ -112,6 +121,15 @@ public:
     // sky, the sun) by itself, and with many paths the choice is the plain max.
     // Whatever the rule, the chosen stratum is measured with paths it did not see.
     size_t brightest(const std::vector<double>& mean, const std::vector<double>& error) const {
+        const std::vector<double> score = shrunk(mean, error);
+        size_t best = 0;
+        double bestScore = -kInf;
+        for (size_t k = 0; k < score.size(); ++k)
+            if (score[k] > bestScore) bestScore = score[k], best = k;
+        return best;
+    }
+    // The means shrunk towards their neighbours', as brightest() weighs them.
+    std::vector<double> shrunk(const std::vector<double>& mean, const std::vector<double>& error) const {
         const int s = frustum.strata;
         const size_t n = mean.size();
         std::vector<double> nbr(n), nbrVar(n);
@@ -133,14 +151,12 @@ public:
                 spread += d * d - error[k] * error[k] - nbrVar[k];
             }
         const double t2 = std::max(0.0, spread / double(n));
-        size_t best = 0;
-        double bestScore = -kInf;
+        std::vector<double> score(n);
         for (size_t k = 0; k < n; ++k) {
             double s2 = error[k] * error[k];
-            double score = (t2 + s2) > 0 ? (t2 * mean[k] + s2 * nbr[k]) / (t2 + s2) : mean[k];
-            if (score > bestScore) bestScore = score, best = k;
+            score[k] = (t2 + s2) > 0 ? (t2 * mean[k] + s2 * nbr[k]) / (t2 + s2) : mean[k];
         }
-        return best;
+        return score;
     }
 
     // Successive elimination: a stratum whose upper bound (mean + z sigma) lies below
@@ -228,6 +244,67 @@ public:
         r.standardError = std::sqrt(var * double(value.size()) / double(value.size() - 1));
         r.degreesOfFreedom = int(value.size()) - 1;
         return r;
+    }
+
+    // A parametric bootstrap of combine(), its choices included: every fold's stratum
+    // means are drawn afresh around the strata's shrunk means (what brightest() judges
+    // by), each with the spread the stratum's own fold means show, and the value is
+    // cross-fitted again from them; the error is the spread of those values. The folds
+    // choose from data they mostly share, so they choose alike and their values move
+    // together from run to run, which their own spread cannot show (on a lit wall of
+    // near-equal strata it was 0.65 of the spread over seeds; docs/light-transport.md).
+    // The fold means' spread, not the paths', since the latter overstates the error of
+    // low-discrepancy paths. The draws' numbers are seeded by the estimates: the same
+    // paths give the same error.
+    double reportedError(const ItemEstimates& e, const Estimate& value) const override {
+        const size_t n = size_t(e.items());
+        if (n < 2 || value.degreesOfFreedom < 1) return value.standardError;  // no choice cross-fitted
+        std::vector<int> folds;
+        std::vector<double> weight;
+        double total = 0;
+        for (int g = 0; g < ItemEstimates::kFolds; ++g)
+            if (const double paths = double(e.pathsInFold(0, g)); paths > 0)
+                folds.push_back(g), weight.push_back(paths), total += paths;
+        const size_t k = folds.size();
+        if (k < 2) return value.standardError;
+        std::vector<double> mean(n), error(n);
+        uint64_t seed = kBootstrapTag;
+        for (size_t i = 0; i < n; ++i) {
+            double m = 0, spread = 0;
+            for (size_t g = 0; g < k; ++g) m += weight[g] / total * e.ofFold(int(i), folds[g]).value;
+            for (size_t g = 0; g < k; ++g) spread += weight[g] / total * std::pow(e.ofFold(int(i), folds[g]).value - m, 2);
+            mean[i] = m, error[i] = std::sqrt(spread / double(k - 1));
+            seed = hashValues({seed, std::bit_cast<uint64_t>(m)});
+        }
+        const std::vector<double> centre = shrunk(mean, error);
+        Rng rng(seed);
+        std::vector<double> drawn(k * n), sums(n), others(n), othersError(n);
+        double sum = 0, sumSquares = 0;
+        for (int b = 0; b < kBootstrapDraws; ++b) {
+            std::fill(sums.begin(), sums.end(), 0.0);
+            for (size_t g = 0; g < k; ++g)
+                for (size_t i = 0; i < n; i += 2) {  // Box-Muller: two normal numbers a draw
+                    const double r = std::sqrt(-2 * std::log(1 - rng.uniform())), angle = 2 * kPi * rng.uniform();
+                    const double spread = std::sqrt(total / weight[g]);
+                    drawn[g * n + i] = centre[i] + error[i] * spread * r * std::cos(angle);
+                    if (i + 1 < n) drawn[g * n + i + 1] = centre[i + 1] + error[i + 1] * spread * r * std::sin(angle);
+                }
+            for (size_t g = 0; g < k; ++g)
+                for (size_t i = 0; i < n; ++i) sums[i] += weight[g] * drawn[g * n + i];
+            double v = 0;
+            for (size_t g = 0; g < k; ++g) {
+                const double rest = total - weight[g];
+                for (size_t i = 0; i < n; ++i) {
+                    others[i] = (sums[i] - weight[g] * drawn[g * n + i]) / rest;
+                    othersError[i] = error[i] * std::sqrt(total / rest);
+                }
+                v += weight[g] / total * drawn[g * n + brightest(others, othersError)];
+            }
+            v -= value.value;  // about the value: no cancellation where the spread is a tiny part of it
+            sum += v, sumSquares += v * v;
+        }
+        const double m = sum / kBootstrapDraws;
+        return std::sqrt(std::max(0.0, (sumSquares / kBootstrapDraws - m * m) * kBootstrapDraws / (kBootstrapDraws - 1)));
     }
 
     // The apex and the frustum's four edge rays, 1 m long.

@@ -351,7 +351,7 @@ MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& op
         }
         Estimate value = placed[k]->combine(e);
         r.value = value.value;
-        r.standardError = value.standardError;
+        r.standardError = options.choiceError ? placed[k]->reportedError(e, value) : value.standardError;
         if (const auto* glare = dynamic_cast<const PlacedGlare*>(placed[k].get())) r.glare = glare->survey(r.points);
     }
     return result;

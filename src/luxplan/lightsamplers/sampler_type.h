@@ -168,6 +168,10 @@ public:
     // The sampler's value from its items' estimates. Default: the mean of the items,
     // whose error is the root sum of squares over their count.
     virtual Estimate combine(const ItemEstimates& items) const;
+    // The standard error to report for `value` (combine()'s), MeasureOptions::choiceError.
+    // Default: its own. A type whose value chooses among its items adds how that choice
+    // varies where the value's own error cannot see it.
+    virtual double reportedError(const ItemEstimates& /*items*/, const Estimate& value) const { return value.standardError; }
     // In adaptive measurement, at a look that left the value unsettled: what each
     // item needs (ItemNeed), z being the confidence multiplier and [targetMin,
     // targetMax] the sampler's band. Default: more for every item (a mean needs them all).

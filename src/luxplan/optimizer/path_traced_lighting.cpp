@@ -26,6 +26,7 @@ double PathTracedLighting::evaluate(const Layout& /*layout*/, const std::vector<
     if (fresh_) {
         MeasureOptions fresh = options_;
         fresh.seed = hashValues({options_.seed, kFreshTag, ++freshDraws_});
+        fresh.choiceError = true;  // the noise penalty reads the errors
         return measure(tracer_, world, fresh, nullptr, out, hasGlareSurveys_ ? &reportTracer_ : nullptr);
     }
     return measure(tracer_, world, options_, incremental_ ? &cache_ : nullptr, out,
@@ -38,6 +39,7 @@ double PathTracedLighting::measureIndependently(const Layout& /*layout*/, const 
     independent.seed = seed;
     if (reportPaths_ > 0) independent.pathsPerPoint = reportPaths_;
     independent.adaptive = false;
+    independent.choiceError = true;
     // Not through the cache: its committed paths are the search's, and stay so.
     return measure(reportTracer_, world, independent, nullptr, out);
 }
