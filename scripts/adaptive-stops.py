@@ -12,7 +12,8 @@ asked), are compared with it: an early stop (fewer than 1000 paths)
 whose value lies in another piece than the truth's (below, inside or above the target
 band) is a wrong stop. Also reported: values beyond 3 of their standard errors from
 the truth (4.53 for an error from eight fold values, Student's t with 7 degrees of
-freedom: directional, ugr and dgp samplers) and the paths a run traced.
+freedom: the ugr and dgp samplers; a directional sampler's reported error is a bootstrap
+of its whole estimate, read at 3) and the paths a run traced.
 
 LAYOUT "-" measures the scene as it is. --near-bound DELTA (repeatable) moves each
 sampler's band top to its truth times 1 + DELTA (the band's bottom stays, or becomes 0
@@ -61,7 +62,7 @@ def check(a, scene, truth):
     paths = [0] * len(runs)
     print(f"{'sampler':24s} {'truth':>9s} {'mean':>9s} {'paths/pt':>9s} {'beyond':>7s} {'early':>6s} {'wrong':>6s}")
     for i, s in enumerate(runs[0]):
-        k = 4.53 if s["type"] in ("directional", "ugr", "dgp") else 3.0
+        k = 4.53 if s["type"] in ("ugr", "dgp") else 3.0
         values = [r[i]["value"] for r in runs]
         beyond = sum(abs(r[i]["value"] - truth[i]) > k * r[i]["std_error"] for r in runs)
         early = [r for r in runs if r[i]["paths_per_point"] < 1000]
