@@ -267,12 +267,12 @@ public:
                 folds.push_back(g), weight.push_back(paths), total += paths;
         const size_t k = folds.size();
         if (k < 2) return value.standardError;
-        std::vector<double> mean(n), error(n);
+        std::vector<double> mean(n), error(n), foldMean(k);
         uint64_t seed = kBootstrapTag;
         for (size_t i = 0; i < n; ++i) {
             double m = 0, spread = 0;
-            for (size_t g = 0; g < k; ++g) m += weight[g] / total * e.ofFold(int(i), folds[g]).value;
-            for (size_t g = 0; g < k; ++g) spread += weight[g] / total * std::pow(e.ofFold(int(i), folds[g]).value - m, 2);
+            for (size_t g = 0; g < k; ++g) foldMean[g] = e.ofFold(int(i), folds[g]).value, m += weight[g] / total * foldMean[g];
+            for (size_t g = 0; g < k; ++g) spread += weight[g] / total * (foldMean[g] - m) * (foldMean[g] - m);
             mean[i] = m, error[i] = std::sqrt(spread / double(k - 1));
             seed = hashValues({seed, std::bit_cast<uint64_t>(m)});
         }
