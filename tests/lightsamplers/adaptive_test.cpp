@@ -244,5 +244,45 @@ TEST(AdaptivePaths, APausedItemCatchesUpBeforeTheValueSettlesAtOrBelowTheTop) {
     EXPECT_EQ(above.paths, uint64_t(above.samplers[0].pathsPerPoint + MeasureOptions().minPaths));
 }
 
+// A value whose items say it is above the band (one item's lower end clears the top)
+// while the value itself reads inside it: 90 with an error of 200 / sqrt(n) in a band
+// [0, 100], an item's lower end at 150. Its penalty would be read inside the band, so
+// it is not settled above; inside, only once 90 + 3 errors is below 100 (n >= 3600),
+// beyond the most paths.
+class ItemAboveValueInsideSampler final : public PlacedSampler {
+public:
+    int items() const override { return 1; }
+    void sample(const PathTracer&, int, PathSamples&, RayStats&, PathContributions& out) const override { out.add(1.0); }
+    Estimate combine(const ItemEstimates& e) const override {
+        double n = 0;
+        for (int g = 0; g < ItemEstimates::kFolds; ++g) n += double(e.pathsInFold(0, g));
+        Estimate r;
+        r.value = 90, r.standardError = n > 0 ? 200 / std::sqrt(n) : kInf;
+        return r;
+    }
+    double lowerEnd(const ItemEstimates&, double) const override { return 150; }
+    SamplerDrawing drawing() const override { return {}; }
+};
+class ItemAboveValueInside final : public SamplerType {
+public:
+    const char* name() const override { return "item-above"; }
+    const char* unit() const override { return ""; }
+    std::unique_ptr<PlacedSampler> place(const Transform&) const override {
+        return std::make_unique<ItemAboveValueInsideSampler>();
+    }
+    std::shared_ptr<const SamplerType> transformed(const Transform&) const override {
+        return std::make_shared<ItemAboveValueInside>();
+    }
+    std::string describe() const override { return "item-above"; }
+};
+
+TEST(AdaptivePaths, AValueSettlesOnlyInThePieceItReadsIn) {
+    const SceneLab lab(SceneBuilder().sampler("p", std::make_shared<ItemAboveValueInside>(), 0, 100).build());
+    EXPECT_EQ(measure(lab, 1000, true).samplers[0].pathsPerPoint, 1000) << "settled above the band on an item's lower end";
+    // With the band's top below 90 the item and the value agree: settled above at once.
+    const SceneLab below(SceneBuilder().sampler("p", std::make_shared<ItemAboveValueInside>(), 0, 80).build());
+    EXPECT_EQ(measure(below, 1000, true).samplers[0].pathsPerPoint, MeasureOptions().minPaths);
+}
+
 }  // namespace
 }  // namespace luxplan

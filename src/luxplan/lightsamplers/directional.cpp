@@ -27,6 +27,7 @@
 // values move together from run to run. The error reported (reportedError) is
 // therefore a parametric bootstrap of the whole cross-fitted estimate.
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
 #include <stdexcept>
@@ -90,9 +91,33 @@ private:
 // A path adds to its own stratum and to the strata of its eye's light samples.
 static_assert(PathContributions::kCapacity >= 1 + SensorLight::kCapacity);
 
+// Standard normal numbers for the bootstrap from one 32-bit draw each: the quantiles
+// at the midpoints of 4096 equal steps of probability (their variance 0.999; the
+// bootstrap's error of 5% is far larger), found by bisection on erfc once.
+constexpr int kNormalBits = 12, kNormals = 1 << kNormalBits;
+const std::array<double, kNormals>& normalQuantiles() {
+    static const std::array<double, kNormals> table = [] {
+        std::array<double, kNormals> t{};
+        for (int k = 0; k < kNormals; ++k) {
+            const double p = (k + 0.5) / kNormals;  // Phi(x) = erfc(-x / sqrt 2) / 2
+            double lo = -10, hi = 10;
+            for (int step = 0; step < 60; ++step) {
+                const double mid = 0.5 * (lo + hi);
+                (0.5 * std::erfc(-mid / std::sqrt(2.0)) < p ? lo : hi) = mid;
+            }
+            t[size_t(k)] = 0.5 * (lo + hi);
+        }
+        return t;
+    }();
+    return table;
+}
+
 class PlacedDirectional final : public PlacedSampler {
     static constexpr int kBootstrapDraws = 200;  // the error's own error about 5%
     static constexpr uint64_t kBootstrapTag = 0x626f6f74ULL;  // "boot"
+    std::vector<std::pair<size_t, double>> neighbours_;  // (stratum, weight), by stratum
+    std::vector<size_t> neighbourStart_;                 // stratum k's: [start[k], start[k + 1])
+    std::vector<double> neighbourWeight_;
 
 public:
     Frustum frustum;
@@ -121,42 +146,55 @@ public:
     // sky, the sun) by itself, and with many paths the choice is the plain max.
     // Whatever the rule, the chosen stratum is measured with paths it did not see.
     size_t brightest(const std::vector<double>& mean, const std::vector<double>& error) const {
-        const std::vector<double> score = shrunk(mean, error);
+        thread_local std::vector<double> score;
+        shrunk(mean, error, score);
         size_t best = 0;
         double bestScore = -kInf;
         for (size_t k = 0; k < score.size(); ++k)
             if (score[k] > bestScore) bestScore = score[k], best = k;
         return best;
     }
-    // The means shrunk towards their neighbours', as brightest() weighs them.
-    std::vector<double> shrunk(const std::vector<double>& mean, const std::vector<double>& error) const {
-        const int s = frustum.strata;
+    // The means shrunk towards their neighbours', as brightest() weighs them, into `score`.
+    void shrunk(const std::vector<double>& mean, const std::vector<double>& error, std::vector<double>& score) const {
         const size_t n = mean.size();
-        std::vector<double> nbr(n), nbrVar(n);
+        thread_local std::vector<double> nbr, nbrVar;
+        nbr.resize(n), nbrVar.resize(n), score.resize(n);
         double spread = 0;
+        for (size_t k = 0; k < n; ++k) {
+            double sum = 0, var = 0;
+            for (size_t q = neighbourStart_[k]; q < neighbourStart_[k + 1]; ++q) {
+                const auto [index, w] = neighbours_[q];
+                sum += w * mean[index], var += w * w * error[index] * error[index];
+            }
+            const double weight = neighbourWeight_[k];
+            nbr[k] = sum / weight, nbrVar[k] = var / (weight * weight);
+            double d = mean[k] - nbr[k];
+            spread += d * d - error[k] * error[k] - nbrVar[k];
+        }
+        const double t2 = std::max(0.0, spread / double(n));
+        for (size_t k = 0; k < n; ++k) {
+            double s2 = error[k] * error[k];
+            score[k] = (t2 + s2) > 0 ? (t2 * mean[k] + s2 * nbr[k]) / (t2 + s2) : mean[k];
+        }
+    }
+    // Each stratum's eight neighbours (fewer at the edges): sides weigh 2, corners 1.
+    void findNeighbours() {
+        const int s = frustum.strata;
+        neighbours_.clear(), neighbourStart_.assign(1, 0), neighbourWeight_.clear();
         for (int j = 0; j < s; ++j)
             for (int i = 0; i < s; ++i) {
-                double sum = 0, weight = 0, var = 0;
+                double weight = 0;
                 for (int dj = -1; dj <= 1; ++dj)
                     for (int di = -1; di <= 1; ++di) {
                         int x = i + di, y = j + dj;
                         if ((di == 0 && dj == 0) || x < 0 || y < 0 || x >= s || y >= s) continue;
                         double w = (di == 0 || dj == 0) ? 2 : 1;
-                        size_t k = size_t(y * s + x);
-                        sum += w * mean[k], var += w * w * error[k] * error[k], weight += w;
+                        neighbours_.push_back({size_t(y * s + x), w});
+                        weight += w;
                     }
-                size_t k = size_t(j * s + i);
-                nbr[k] = sum / weight, nbrVar[k] = var / (weight * weight);
-                double d = mean[k] - nbr[k];
-                spread += d * d - error[k] * error[k] - nbrVar[k];
+                neighbourStart_.push_back(neighbours_.size());
+                neighbourWeight_.push_back(weight);
             }
-        const double t2 = std::max(0.0, spread / double(n));
-        std::vector<double> score(n);
-        for (size_t k = 0; k < n; ++k) {
-            double s2 = error[k] * error[k];
-            score[k] = (t2 + s2) > 0 ? (t2 * mean[k] + s2 * nbr[k]) / (t2 + s2) : mean[k];
-        }
-        return score;
     }
 
     // Successive elimination: a stratum whose upper bound (mean + z sigma) lies below
@@ -276,19 +314,19 @@ public:
             mean[i] = m, error[i] = std::sqrt(spread / double(k - 1));
             seed = hashValues({seed, std::bit_cast<uint64_t>(m)});
         }
-        const std::vector<double> centre = shrunk(mean, error);
+        std::vector<double> centre;
+        shrunk(mean, error, centre);
+        const std::array<double, kNormals>& normal = normalQuantiles();
         Rng rng(seed);
         std::vector<double> drawn(k * n), sums(n), others(n), othersError(n);
         double sum = 0, sumSquares = 0;
         for (int b = 0; b < kBootstrapDraws; ++b) {
             std::fill(sums.begin(), sums.end(), 0.0);
-            for (size_t g = 0; g < k; ++g)
-                for (size_t i = 0; i < n; i += 2) {  // Box-Muller: two normal numbers a draw
-                    const double r = std::sqrt(-2 * std::log(1 - rng.uniform())), angle = 2 * kPi * rng.uniform();
-                    const double spread = std::sqrt(total / weight[g]);
-                    drawn[g * n + i] = centre[i] + error[i] * spread * r * std::cos(angle);
-                    if (i + 1 < n) drawn[g * n + i + 1] = centre[i + 1] + error[i + 1] * spread * r * std::sin(angle);
-                }
+            for (size_t g = 0; g < k; ++g) {
+                const double spread = std::sqrt(total / weight[g]);
+                for (size_t i = 0; i < n; ++i)
+                    drawn[g * n + i] = centre[i] + error[i] * spread * normal[rng.nextU32() >> (32 - kNormalBits)];
+            }
             for (size_t g = 0; g < k; ++g)
                 for (size_t i = 0; i < n; ++i) sums[i] += weight[g] * drawn[g * n + i];
             double v = 0;
@@ -345,6 +383,7 @@ public:
         f.up = cross(f.right, f.forward);
         f.tanHalfFov = std::tan(radians(fovDeg) / 2);
         f.strata = strata;
+        p->findNeighbours();
         return p;
     }
 
