@@ -284,48 +284,5 @@ TEST(AdaptivePaths, AValueSettlesOnlyInThePieceItReadsIn) {
     EXPECT_EQ(measure(below, 1000, true).samplers[0].pathsPerPoint, MeasureOptions().minPaths);
 }
 
-// A value read well above its band from its folds (300 +- 10, 7 degrees of freedom:
-// 300 - 4.53 x 10 clears a top of 200) whose reported error, which includes how its
-// choice varies, is 60: 300 - 3 x 60 does not. Where the value's own interval decides
-// the stop, the reported error must agree, so it runs to the most paths.
-class WideChoiceSampler final : public PlacedSampler {
-public:
-    explicit WideChoiceSampler(double reported) : reported_(reported) {}
-    int items() const override { return 1; }
-    void sample(const PathTracer&, int, PathSamples&, RayStats&, PathContributions& out) const override { out.add(1.0); }
-    Estimate combine(const ItemEstimates&) const override {
-        Estimate r;
-        r.value = 300, r.standardError = 10, r.degreesOfFreedom = 7;
-        return r;
-    }
-    double reportedError(const ItemEstimates&, const Estimate&) const override { return reported_; }
-    SamplerDrawing drawing() const override { return {}; }
-
-private:
-    double reported_;
-};
-class WideChoice final : public SamplerType {
-public:
-    explicit WideChoice(double reported) : reported_(reported) {}
-    const char* name() const override { return "wide-choice"; }
-    const char* unit() const override { return ""; }
-    std::unique_ptr<PlacedSampler> place(const Transform&) const override { return std::make_unique<WideChoiceSampler>(reported_); }
-    std::shared_ptr<const SamplerType> transformed(const Transform&) const override { return std::make_shared<WideChoice>(reported_); }
-    std::string describe() const override { return "wide-choice"; }
-
-private:
-    double reported_;
-};
-
-TEST(AdaptivePaths, AStopOnTheValuesOwnIntervalHoldsWithItsReportedError) {
-    auto pathsFor = [](double reported) {
-        const SceneLab lab(SceneBuilder().sampler("p", std::make_shared<WideChoice>(reported), 0, 200).build());
-        return measure(lab, 1000, true).samplers[0].pathsPerPoint;
-    };
-    EXPECT_EQ(pathsFor(10), MeasureOptions().minPaths) << "the folds' error alone: settled at the first look";
-    EXPECT_EQ(pathsFor(60), 1000) << "settled above the band although its reported error says otherwise";
-    EXPECT_EQ(pathsFor(30), MeasureOptions().minPaths) << "300 - 3 x 30 clears 200";
-}
-
 }  // namespace
 }  // namespace luxplan

@@ -127,27 +127,12 @@ bool settled(double value, double standardError, double targetMin, double target
 // read there. (A stratum's lower end can clear a glare bound while the cross-fitted
 // value, which chose among near-equal heavy-tailed strata, reads below it: in the
 // office 95.9 cd/m2 against a bound of 100, its brightest strata at 170 and a truth of
-// 172; the penalty read 0.) Where the value's own interval decides an end, it must
-// hold with the error the value reports too (PlacedSampler::reportedError: for the
-// directional value, how its choice varies), at z: computed only then, since it costs
-// more than a look (in the office a glare value read 317.9 +- 32.4 from its folds
-// after 64 paths, +- 76.7 with the choice, against a truth of 164.8 and a top of 169.7).
+// 172; the penalty read 0.)
 bool settled(const LightSamplerSpec& spec, const PlacedSampler& sampler, const Estimate& e, const ItemEstimates& items,
              double zValue, double z) {
-    const double up = sampler.upperEnd(items, z), down = sampler.lowerEnd(items, z);
-    auto settledWithin = [&](double width) {  // the value +- width, and what its items say
-        const double hi = std::max(e.value + width, up), lo = std::min(std::max(e.value - width, down), e.value);
-        return settled(lo, hi, spec.targetMin, spec.targetMax);
-    };
-    const double width = zValue * e.standardError;
-    if (!settledWithin(width)) return false;
-    // Which ends the piece rests on: the lower one above the band, the upper one below it.
-    const double lo = std::max(e.value - width, down);
-    const bool above = lo >= spec.targetMax, below = !above && std::max(e.value + width, up) <= spec.targetMin;
-    if ((!below && e.value - width > down) || (!above && e.value + width > up)) {
-        const double reported = z * sampler.reportedError(items, e);
-        if (reported > width && !settledWithin(reported)) return false;
-    }
+    const double hi = std::max(e.value + zValue * e.standardError, sampler.upperEnd(items, z));
+    const double lo = std::min(std::max(e.value - zValue * e.standardError, sampler.lowerEnd(items, z)), e.value);
+    if (!settled(lo, hi, spec.targetMin, spec.targetMax)) return false;
     if (spec.statistics.empty()) return true;
     std::vector<double> values, errors;
     for (int i = 0; i < items.items(); ++i) {
