@@ -33,7 +33,6 @@
 #include <stdexcept>
 
 #include <luxplan/core/rng.h>
-
 #include <luxplan/lightsamplers/sampler_type.h>
 #include <luxplan/pathtracer/path_tracer.h>
 

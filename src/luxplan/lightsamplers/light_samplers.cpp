@@ -111,6 +111,7 @@ std::unique_ptr<PlacedSampler> placeSampler(const LightSamplerSpec& s, const Pat
 }
 
 namespace {
+
 // [lo, hi] lies inside one linear piece of a term's penalty.
 bool settled(double lo, double hi, double targetMin, double targetMax) {
     return hi <= targetMin || (lo >= targetMin && hi <= targetMax) || lo >= targetMax;
