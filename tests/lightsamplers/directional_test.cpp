@@ -223,6 +223,19 @@ TEST(Directional, TheReportedErrorCoversTheChoiceAmongNearEqualStrata) {
     EXPECT_GT(rms, 0.8 * sd) << "the error misses the spread over seeds";
     EXPECT_LT(rms, 1.35 * sd) << "the error is far wider than the spread over seeds";
     EXPECT_LT(foldsRms, 0.8 * sd) << "the fold values' spread no longer misses the choice here: the test shows nothing";
+
+    // At 16 paths per stratum (two per fold), each value's distance from the converged
+    // one in its own reported errors: the fold values' spread put 11 of 60 beyond 3.
+    const double converged = lab.measure(2000).samplers[0].value;
+    double zSquares = 0;
+    int beyond = 0;
+    for (int s = 0; s < seeds; ++s) {
+        const SamplerResult r = lab.measure(16, uint64_t(500 + s)).samplers[0];
+        const double z = (r.value - converged) / r.standardError;
+        zSquares += z * z, beyond += std::abs(z) > 3;
+    }
+    EXPECT_LT(std::sqrt(zSquares / seeds), 1.4) << "the error at 16 paths is far below the distance to the truth";
+    EXPECT_LE(beyond, 2) << "of " << seeds << " values beyond 3 of their errors at 16 paths";
 }
 
 // One stratum far brighter than the rest (the sun in view): nothing to choose, and the
