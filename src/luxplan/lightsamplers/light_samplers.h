@@ -56,9 +56,9 @@ struct MeasureOptions {
     bool checkCache = false;
     // A value that chooses among its items (the directional sampler's brightest stratum)
     // reports an error that includes how the choice varies (PlacedSampler::reportedError:
-    // a bootstrap of the estimate, about 0.45 ms a sampler of 16 strata). The search's own
+    // a bootstrap of the estimate, about 0.25 ms a sampler of 16 strata). The search's own
     // measurements leave it out: their stops read every item's interval, not the
-    // value's error, and it would make the search 1.36 times slower.
+    // value's error, and it would make the search 1.17 times slower.
     bool choiceError = true;
 };
 
