@@ -317,7 +317,11 @@ public:
         shrunk(mean, error, centre);
         const std::array<double, kNormals>& normal = normalQuantiles();
         Rng rng(seed);
-        std::vector<double> drawn(k * n), sums(n), others(n), othersError(n);
+        // What each fold's choice reads the other folds' means with: the same in every draw.
+        std::vector<double> othersError(k * n);
+        for (size_t g = 0; g < k; ++g)
+            for (size_t i = 0; i < n; ++i) othersError[g * n + i] = error[i] * std::sqrt(total / (total - weight[g]));
+        std::vector<double> drawn(k * n), sums(n), others(n), foldErrors(n);
         double sum = 0, sumSquares = 0;
         for (int b = 0; b < kBootstrapDraws; ++b) {
             std::fill(sums.begin(), sums.end(), 0.0);
@@ -331,11 +335,9 @@ public:
             double v = 0;
             for (size_t g = 0; g < k; ++g) {
                 const double rest = total - weight[g];
-                for (size_t i = 0; i < n; ++i) {
-                    others[i] = (sums[i] - weight[g] * drawn[g * n + i]) / rest;
-                    othersError[i] = error[i] * std::sqrt(total / rest);
-                }
-                v += weight[g] / total * drawn[g * n + brightest(others, othersError)];
+                for (size_t i = 0; i < n; ++i) others[i] = (sums[i] - weight[g] * drawn[g * n + i]) / rest;
+                std::copy_n(othersError.begin() + long(g * n), n, foldErrors.begin());
+                v += weight[g] / total * drawn[g * n + brightest(others, foldErrors)];
             }
             v -= value.value;  // about the value: no cancellation where the spread is a tiny part of it
             sum += v, sumSquares += v * v;
