@@ -4,6 +4,7 @@
 // (cross-fitted choice), with an error that covers it.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <utility>
@@ -131,6 +132,22 @@ TEST(Directional, AdaptiveMeasurementDropsStrataThatCannotLiftTheMaxAboveTheBand
     // none: successive elimination alone, which drops only the dark stratum.
     for (auto [lo, hi] : {std::pair{0.0, 1000.0}, std::pair{50.0, 100.0}, std::pair{-kInf, kInf}})
         EXPECT_EQ(placed->stillNeeded(e, z, lo, hi), (std::vector<char>{1, 1, 0, 1})) << lo << " " << hi;
+}
+
+// Above the top, the best stratum alone is traced on; the others, which may still hold
+// the max, pause. Three near-equal bright strata (150, two paths a fold) and a dark one.
+TEST(Directional, AboveTheTopOnlyTheBestStratumIsTracedOn) {
+    auto placed = directionalSampler({0, 0, 0}, {0, 1, 0}, kZ, 60, 2)->place(Transform());
+    const ItemEstimates e = fourStrata({{0, 300}, {50, 250}, {100, 200}, {10, 12}});
+    const double z = 3;
+    auto count = [](const std::vector<char>& need, char kind) { return std::count(need.begin(), need.end(), kind); };
+    const std::vector<char> focus = placed->stillNeeded(e, z, 0, 100);
+    EXPECT_EQ(count(focus, kMorePaths), 1);
+    EXPECT_EQ(count(focus, kPaused), 2);
+    EXPECT_EQ(focus[3], kNoMorePaths);
+    // A top above every mean, or a band that starts above 0: successive elimination alone.
+    EXPECT_EQ(placed->stillNeeded(e, z, 0, 160), (std::vector<char>{1, 1, 1, 0}));
+    EXPECT_EQ(placed->stillNeeded(e, z, 50, 100), (std::vector<char>{1, 1, 1, 0}));
 }
 
 // The max is at least every stratum's own lower end: the brightest stratum's bounds it

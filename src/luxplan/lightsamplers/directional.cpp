@@ -220,6 +220,23 @@ public:
             keep[size_t(i)] = upper[size_t(i)] < bestLower                          ? kNoMorePaths
                               : pauseBelowTop && upper[size_t(i)] < targetMax ? kPaused
                                                                               : kMorePaths;
+        if (!pauseBelowTop) return keep;
+        // Focus: while the best stratum's mean is above the band's top, only it is
+        // traced on, the best by the shrunk means that choose the value (brightest()).
+        // One stratum's lower end above the top settles the value there (lowerEnd),
+        // and paths shared among near-equal strata clear it later than the same paths
+        // given to one. The others pause, though they may still hold the max: they
+        // catch up before a stop at or below the top, and one of them is traced on
+        // once its mean overtakes the best's.
+        std::vector<double> mean(static_cast<size_t>(n)), error(static_cast<size_t>(n)), score;
+        for (int i = 0; i < n; ++i) mean[size_t(i)] = e.of(i).value, error[size_t(i)] = e.of(i).standardError;
+        shrunk(mean, error, score);
+        int best = -1;
+        for (int i = 0; i < n; ++i)
+            if (keep[size_t(i)] == kMorePaths && (best < 0 || score[size_t(i)] > score[size_t(best)])) best = i;
+        if (best < 0 || !(mean[size_t(best)] > targetMax)) return keep;
+        for (int i = 0; i < n; ++i)
+            if (i != best && keep[size_t(i)] == kMorePaths) keep[size_t(i)] = kPaused;
         return keep;
     }
 
