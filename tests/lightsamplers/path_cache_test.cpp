@@ -97,9 +97,12 @@ void randomMove(const Scene& scene, Layout& layout, Rng& rng) {
 }
 
 // The sequences' measurement: looks from 8 paths on, so that adaptive runs stop early.
-MeasureOptions sequenceOptions(bool adaptive, int paths) {
+// `chunkPaths`: how the looks at few items split their paths (MeasureOptions); the
+// measurements from scratch never split them.
+MeasureOptions sequenceOptions(bool adaptive, int paths, int chunkPaths = 0) {
     MeasureOptions o;
     o.pathsPerPoint = paths, o.seed = 7, o.adaptive = adaptive, o.batchPaths = 8, o.minPaths = 8;
+    o.chunkPaths = chunkPaths;
     return o;
 }
 
@@ -111,12 +114,13 @@ void commitFirst(SceneLab& lab, const MeasureOptions& o, PathCache& cache, const
     cache.commit();
 }
 
-void runSequence(bool adaptive, int paths, int moves, uint64_t moveSeed, bool terrace = false, double walls = 0.6) {
+void runSequence(bool adaptive, int paths, int moves, uint64_t moveSeed, bool terrace = false, double walls = 0.6,
+                 int chunkPaths = 0) {
     SceneLab lab(studio(terrace, walls));
     ASSERT_EQ(lab.tracer->samplesExteriorSun(), terrace);
     const Scene& scene = lab.scene;
     const DaylightEnvironment* daylight = lab.daylight ? &*lab.daylight : nullptr;
-    const MeasureOptions o = sequenceOptions(adaptive, paths);
+    const MeasureOptions o = sequenceOptions(adaptive, paths, chunkPaths), inOrder = sequenceOptions(adaptive, paths);
     PathCache cache(scene);
     Layout committed = initialLayout(scene);
     commitFirst(lab, o, cache, committed);
@@ -130,7 +134,7 @@ void runSequence(bool adaptive, int paths, int moves, uint64_t moveSeed, bool te
         lab.tracer->updateLayout();
         MeasureResult incremental = measureSamplers(*lab.tracer, o, &cache);
         FromScratch fresh(scene, proposed, daylight);
-        MeasureResult scratch = measureSamplers(*fresh.tracer, o);
+        MeasureResult scratch = measureSamplers(*fresh.tracer, inOrder);
         expectSame(incremental, scratch, "move " + std::to_string(m));
         EXPECT_EQ(scratch.reusedPaths, 0u);
         reused += incremental.reusedPaths, traced += incremental.paths;
@@ -157,6 +161,11 @@ TEST(PathCache, MovesEqualFromScratchWithASunlitTerraceOutside) { runSequence(tr
 // Long paths (a bright room: many of more than 64 segments), whose shadow queries far
 // down the path are found and asked again.
 TEST(PathCache, MovesEqualFromScratchWithLongPaths) { runSequence(true, 64, 24, 14, false, 0.95); }
+
+// The looks at the cylindrical sampler's one point and at the directional sampler's
+// focused stratum split into chunks of 3 paths, traced on any thread and merged in path
+// order, with the cache's reads and keeps: the same numbers as in order from scratch.
+TEST(PathCache, MovesEqualFromScratchWithLooksInChunks) { runSequence(true, 64, 16, 15, false, 0.6, 3); }
 
 // A monitor's foot put over one of the desk's task points (no light reaches a point in it: its
 // paths are not traced, pathtracer/sealed_boxes.h), beside them, and away again, while
@@ -406,6 +415,99 @@ TEST(PathFootprint, SegmentsMeetBoxesAsTheSlabsSay) {
     EXPECT_FALSE(meets(f.segments[1], box, 0));
     f.add({-5, 0.5, 0.5}, {2, 0, 0}, 0, 2.6);
     EXPECT_TRUE(meets(f.segments[2], box, 0));
+}
+
+// The distance from x to triangle (a, b, c), exactly (the closest point by regions:
+// Ericson, "Real-Time Collision Detection", 5.1.5).
+double distanceToTriangle(const Vec3& x, const Vec3& a, const Vec3& b, const Vec3& c) {
+    const Vec3 ab = b - a, ac = c - a, ax = x - a;
+    const double d1 = dot(ab, ax), d2 = dot(ac, ax);
+    if (d1 <= 0 && d2 <= 0) return length(x - a);
+    const Vec3 bx = x - b;
+    const double d3 = dot(ab, bx), d4 = dot(ac, bx);
+    if (d3 >= 0 && d4 <= d3) return length(x - b);
+    const double vc = d1 * d4 - d3 * d2;
+    if (vc <= 0 && d1 >= 0 && d3 <= 0) return length(x - (a + ab * (d1 / (d1 - d3))));
+    const Vec3 cx = x - c;
+    const double d5 = dot(ab, cx), d6 = dot(ac, cx);
+    if (d6 >= 0 && d5 <= d6) return length(x - c);
+    const double vb = d5 * d2 - d1 * d6;
+    if (vb <= 0 && d2 >= 0 && d6 <= 0) return length(x - (a + ac * (d2 / (d2 - d6))));
+    const double va = d3 * d6 - d5 * d4;
+    if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0) return length(x - (b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6)))));
+    const double denom = 1 / (va + vb + vc);
+    return length(x - (a + ab * (vb * denom) + ac * (vc * denom)));
+}
+
+// The segment's distance to the triangle: the distance to a convex set is convex along
+// the segment, so a ternary search finds its minimum.
+double segmentToTriangle(const Vec3& p, const Vec3& q, const Vec3& a, const Vec3& b, const Vec3& c) {
+    double lo = 0, hi = 1;
+    auto f = [&](double t) { return distanceToTriangle(p + (q - p) * t, a, b, c); };
+    for (int i = 0; i < 200; ++i) {
+        const double m1 = lo + (hi - lo) / 3, m2 = hi - (hi - lo) / 3;
+        (f(m1) < f(m2) ? hi : lo) = (f(m1) < f(m2) ? m2 : m1);
+    }
+    return std::min({f(0), f(1), f(0.5 * (lo + hi))});
+}
+
+// A segment that TriangleProximity says stays away from a triangle does: over random
+// triangles and segments near them, never within the margin by the exact distance; and
+// the test is worth its cost: most segments well outside the margin are told apart.
+TEST(PathFootprint, ATriangleIsNearOnlyWhereTheSegmentComesWithinTheMargin) {
+    Rng rng(3);
+    auto point = [&](double r) { return Vec3(r * (2 * rng.uniform() - 1), r * (2 * rng.uniform() - 1), r * (2 * rng.uniform() - 1)); };
+    int far = 0, farTold = 0, crossing = 0;
+    for (int i = 0; i < 20000; ++i) {
+        const Vec3 a = point(1), b = point(1), c = point(1);
+        const double margin = i % 2 ? 1e-3 : 0.05;
+        const Vec3 p = point(1.5), q = i % 3 ? point(1.5) : p + (b - a) * rng.uniform();  // a third parallel to an edge
+        const TriangleProximity t(a, b, c);
+        const double d = segmentToTriangle(p, q, a, b, c);
+        const bool near = t.near(p, q, margin);
+        if (d <= margin) {
+            ASSERT_TRUE(near) << "triangle " << i << ": the segment comes within " << d << " of it, margin " << margin;
+            ++crossing;
+        } else if (d > 2 * margin) {
+            ++far;
+            farTold += !near;
+        }
+    }
+    EXPECT_GT(crossing, 500);
+    EXPECT_GT(double(farTold), 0.95 * double(far)) << farTold << " of " << far;
+    std::printf("%d segments within the margin, %d of %d beyond twice it told apart\n", crossing, farTold, far);
+    // Exactly on the margin's edge, above the middle of a unit triangle, and through it.
+    const TriangleProximity unit({0, 0, 0}, {1, 0, 0}, {0, 1, 0});
+    EXPECT_FALSE(unit.near({0.2, 0.2, 0.011}, {0.3, 0.2, 0.011}, 0.01));
+    EXPECT_TRUE(unit.near({0.2, 0.2, 0.009}, {0.3, 0.2, 0.009}, 0.01));
+    EXPECT_TRUE(unit.near({0.2, 0.2, -1}, {0.2, 0.2, 1}, 0.01));
+    EXPECT_FALSE(unit.near({0.8, 0.8, -1}, {0.8, 0.8, 1}, 0.01));  // through the plane, past the long edge
+    EXPECT_TRUE(TriangleProximity({0, 0, 0}, {1, 0, 0}, {2, 0, 0}).near({5, 5, 5}, {6, 6, 6}, 0.01));  // degenerate: always
+}
+
+// A cluster's box with its triangles: a segment through the box's empty part misses an
+// L of two panels, which the box alone cannot tell; a box part whose faces cover its box
+// meets whatever enters the box.
+TEST(PathFootprint, PlacedBoxesTestTheTrianglesTheyBound) {
+    // A floor panel z = 0 and a wall panel x = 0, 1 m square, each two triangles.
+    const std::vector<Bounds3> box{Bounds3({0, 0, 0}, {1, 1, 1})};
+    std::vector<BoxedTriangles> l(1);
+    l[0].triangles = {TriangleProximity({0, 0, 0}, {1, 0, 0}, {1, 1, 0}), TriangleProximity({0, 0, 0}, {1, 1, 0}, {0, 1, 0}),
+                      TriangleProximity({0, 0, 0}, {0, 1, 0}, {0, 1, 1}), TriangleProximity({0, 0, 0}, {0, 1, 1}, {0, 0, 1})};
+    auto seg = [](Vec3 a, Vec3 b) { return Segment{{float(a.x), float(a.y), float(a.z)}, {float(b.x), float(b.y), float(b.z)}}; };
+    const Segment through = seg({0.5, -1, 0.5}, {0.5, 2, 0.5}), ontoFloor = seg({0.5, 0.5, 2}, {0.5, 0.5, 0.5e-3});
+    const PlacedBoxes alone(Transform::placement({3, 3, 0}, 30), box, 1e-3, 0);
+    const PlacedBoxes withTriangles(Transform::placement({3, 3, 0}, 30), box, 1e-3, 0, &l);
+    const Transform world = Transform::placement({3, 3, 0}, 30);
+    auto placed = [&](const Segment& s) {
+        const Vec3 a = world.applyPoint({s.from[0], s.from[1], s.from[2]}), b = world.applyPoint({s.to[0], s.to[1], s.to[2]});
+        return seg(a, b);
+    };
+    EXPECT_TRUE(alone.meets(placed(through), SegmentProbe(placed(through))));
+    EXPECT_FALSE(withTriangles.meets(placed(through), SegmentProbe(placed(through))));
+    EXPECT_TRUE(withTriangles.meets(placed(ontoFloor), SegmentProbe(placed(ontoFloor))));  // ends within the margin
+    l[0].coversBox = true;  // then the box decides for a segment inside it
+    EXPECT_TRUE(withTriangles.meets(placed(through), SegmentProbe(placed(through))));
 }
 
 TEST(PathFootprint, PlacedBoxesAreOrientedWithTheirObject) {

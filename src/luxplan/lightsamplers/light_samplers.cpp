@@ -24,6 +24,10 @@ struct WorkItem {
 
 constexpr int kFolds = ItemEstimates::kFolds;
 constexpr uint64_t kSequenceTag = 0x5350'0bb1'5eedULL;  // keys the low-discrepancy sequences
+// A look at fewer items than this has each item's paths traced in chunks
+// (MeasureOptions::chunkPaths): a glare sampler's focused stratum would otherwise keep
+// one core busy while the other idles.
+constexpr size_t kSplitBelow = 4;
 
 // What one work item's paths added: per fold an estimator for each item they reach
 // (the own item only, or all of a sampler that shares paths).
@@ -207,13 +211,30 @@ MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& op
     }
     const int paths = std::max(1, options.pathsPerPoint);
 
-    // Paths [from, to) of one work item, appended to what its earlier rounds traced:
-    // the same sums in the same order as one round of all paths.
-    auto trace = [&](size_t index, int from, int to) {
+    // What a path added, into its work item's folds (a path with a non-finite value is
+    // dropped whole: core/estimator.h's policy).
+    auto add = [&](size_t index, int path, const PathContributions& c) {
+        const WorkItem& w = work[index];
+        const bool shares = placed[size_t(w.sampler)]->sharesPaths();
+        WorkResult& r = done[index];
+        if (!c.finite()) {
+            ++r.dropped;
+            return;
+        }
+        auto& fold = r.folds[size_t(path % kFolds)];
+        ++r.finite[path % kFolds];
+        for (int k = 0; k < c.size(); ++k) {
+            if (!shares && c.itemAt(k) != w.item)
+                throw std::logic_error("a light sampler that does not share paths added to another item");
+            fold[shares ? size_t(c.itemAt(k)) : 0].add(c.valueAt(k));
+        }
+    };
+    // Paths [from, to) of one work item: each read back from the cache or traced
+    // afresh, and handed in order to onPath(path, cached or null, askedAgain, traced,
+    // footprint), `traced` and `footprint` holding the fresh path where cached is null.
+    auto tracePaths = [&](size_t index, int from, int to, RayStats& stats, CacheCheck& check, auto&& onPath) {
         const WorkItem& w = work[index];
         const PlacedSampler& sampler = *placed[size_t(w.sampler)];
-        const bool shares = sampler.sharesPaths();
-        WorkResult& r = done[index];
         // The item's low-discrepancy sequence (one per fold for types that compare folds).
         const bool folds = sampler.independentFolds();
         std::vector<PathSamples::Sequence> sequences;
@@ -230,45 +251,104 @@ MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& op
         PathFootprint scratch;  // a path's footprint as it is traced
         PathContributions traced(w.item);  // ... and what it added
         for (int path = from; path < to; ++path) {
-            const PathContributions* cached = cache ? cache->reuse(index, path) : nullptr;
+            bool askedAgain = false;
+            const PathContributions* cached = cache ? cache->holds(index, path, askedAgain) : nullptr;
             if (!cached) {
                 traced = PathContributions(w.item);
                 Rng rng = rngOf(path);
                 PathSamples samples = samplesOf(path, rng);
                 if (cache) {
                     scratch.clear();
-                    r.stats.footprint = &scratch;
+                    stats.footprint = &scratch;
                 }
-                sampler.sample(*tracerOf[size_t(w.sampler)], w.item, samples, r.stats, traced);
-                r.stats.footprint = nullptr;
-                if (cache) cache->keep(index, path, traced, scratch);
+                sampler.sample(*tracerOf[size_t(w.sampler)], w.item, samples, stats, traced);
+                stats.footprint = nullptr;
             } else if (options.checkCache) {
                 PathContributions fresh(w.item);
                 Rng rng = rngOf(path);
                 PathSamples samples = samplesOf(path, rng);
                 RayStats uncounted;
-                scratch.clear();
-                uncounted.footprint = &scratch;
+                PathFootprint again;
+                uncounted.footprint = &again;
                 sampler.sample(*tracerOf[size_t(w.sampler)], w.item, samples, uncounted, fresh);
-                ++r.check.checked;
+                ++check.checked;
                 if (!fresh.sameAs(*cached))
-                    r.check.note({0, w.sampler, w.item, path, cached->sum(), fresh.sum(),
-                                  wherePathsPart(cache->segmentsOf(index, path), scratch.segments)});
+                    check.note({0, w.sampler, w.item, path, cached->sum(), fresh.sum(),
+                                wherePathsPart(cache->segmentsOf(index, path), again.segments)});
             }
-            const PathContributions& c = cached ? *cached : traced;
-            if (!c.finite()) {  // the path is dropped whole (core/estimator.h's policy)
-                ++r.dropped;
-                continue;
-            }
-            auto& fold = r.folds[size_t(path % kFolds)];
-            ++r.finite[path % kFolds];
-            for (int k = 0; k < c.size(); ++k) {
-                if (!shares && c.itemAt(k) != w.item)
-                    throw std::logic_error("a light sampler that does not share paths added to another item");
-                fold[shares ? size_t(c.itemAt(k)) : 0].add(c.valueAt(k));
-            }
+            onPath(path, cached, askedAgain, traced, scratch);
         }
     };
+    // Paths [from, to) of one work item, appended to what its earlier rounds traced:
+    // the same sums in the same order as one round of all paths.
+    auto trace = [&](size_t index, int from, int to) {
+        WorkResult& r = done[index];
+        tracePaths(index, from, to, r.stats, r.check,
+                   [&](int path, const PathContributions* cached, bool askedAgain, const PathContributions& traced,
+                       const PathFootprint& footprint) {
+                       if (cache) {
+                           cache->visit(index, path, cached != nullptr, askedAgain);
+                           if (!cached) cache->keep(index, path, traced, footprint.view());
+                       }
+                       add(index, path, cached ? *cached : traced);
+                   });
+    };
+    // Paths [from, to) of one work item traced by one thread into a buffer, and merged
+    // into the work item by another in path order: a look at a few items (a glare
+    // sampler's focused stratum) is split among the threads, with the same sums.
+    struct Chunk {
+        size_t index = 0;
+        int from = 0, to = 0;
+        std::vector<const PathContributions*> cached;  // per path; null: traced afresh
+        std::vector<char> askedAgain;                  // per path
+        std::vector<PathContributions> traced;         // the fresh paths, in order
+        PathFootprint footprints;                      // their footprints, one after another
+        std::vector<std::array<uint32_t, 2>> ends;     // ... each one's end in segments and tests
+        std::vector<char> usedEmitterChoice;
+        RayStats stats;
+        CacheCheck check;
+    };
+    auto traceChunk = [&](Chunk& c) {
+        tracePaths(c.index, c.from, c.to, c.stats, c.check,
+                   [&](int, const PathContributions* cached, bool askedAgain, const PathContributions& traced,
+                       const PathFootprint& footprint) {
+                       c.cached.push_back(cached);
+                       c.askedAgain.push_back(askedAgain);
+                       if (cached) return;
+                       c.traced.push_back(traced);
+                       if (!cache) return;
+                       auto& all = c.footprints;
+                       all.segments.insert(all.segments.end(), footprint.segments.begin(), footprint.segments.end());
+                       all.tests.insert(all.tests.end(), footprint.tests.begin(), footprint.tests.end());
+                       c.ends.push_back({uint32_t(all.segments.size()), uint32_t(all.tests.size())});
+                       c.usedEmitterChoice.push_back(footprint.usedEmitterChoice);
+                   });
+    };
+    auto merge = [&](const Chunk& c) {
+        WorkResult& r = done[c.index];
+        r.stats += c.stats;
+        r.check.add(c.check);
+        size_t fresh = 0;
+        std::array<uint32_t, 2> start{0, 0};
+        for (int path = c.from; path < c.to; ++path) {
+            const PathContributions* cached = c.cached[size_t(path - c.from)];
+            if (cache) cache->visit(c.index, path, cached != nullptr, c.askedAgain[size_t(path - c.from)]);
+            if (cached) {
+                add(c.index, path, *cached);
+                continue;
+            }
+            if (cache) {
+                const std::array<uint32_t, 2>& end = c.ends[fresh];
+                const FootprintView footprint{
+                    std::span(c.footprints.segments).subspan(start[0], end[0] - start[0]),
+                    std::span(c.footprints.tests).subspan(start[1], end[1] - start[1]), bool(c.usedEmitterChoice[fresh])};
+                cache->keep(c.index, path, c.traced[fresh], footprint);
+                start = end;
+            }
+            add(c.index, path, c.traced[fresh++]);
+        }
+    };
+
     // Sampler k's item estimates from what its work items traced so far.
     auto estimates = [&](size_t k) {
         const PlacedSampler& sampler = *placed[k];
@@ -303,7 +383,19 @@ MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& op
             for (size_t index = firstWork[k]; index < firstWork[k + 1]; ++index)
                 if (needed[index] && traced[index] < to) round.push_back(index);
             if (round.empty()) break;
-            parallelFor(round.size(), [&](size_t i) { trace(round[i], traced[round[i]], to); });
+            const int chunk = options.chunkPaths;
+            if (round.size() >= kSplitBelow || chunk <= 0 || to - traced[round[0]] <= chunk) {
+                parallelFor(round.size(), [&](size_t i) { trace(round[i], traced[round[i]], to); });
+            } else {
+                std::vector<Chunk> chunks;
+                for (size_t index : round)
+                    for (int from = traced[index]; from < to; from += chunk) {
+                        Chunk& c = chunks.emplace_back();
+                        c.index = index, c.from = from, c.to = std::min(to, from + chunk);
+                    }
+                parallelFor(chunks.size(), [&](size_t i) { traceChunk(chunks[i]); });
+                for (const Chunk& c : chunks) merge(c);
+            }
             for (size_t index : round) traced[index] = to;
             if (!options.adaptive || to == paths) break;
             const ItemEstimates e = estimates(k);

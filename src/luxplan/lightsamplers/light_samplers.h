@@ -60,6 +60,10 @@ struct MeasureOptions {
     // measurements leave it out: their stops read every item's interval, not the
     // value's error, and it would make the search 1.17 times slower.
     bool choiceError = true;
+    // A look at fewer than four items (a glare sampler's focused stratum) traces each
+    // item's paths in chunks of this many, any thread taking any chunk, and adds them
+    // up in path order: the same numbers as one thread in order (0: never split).
+    int chunkPaths = 32;
 };
 
 struct MeasureResult {

@@ -50,12 +50,19 @@ public:
     // options): a different key clears the cache.
     void begin(const EmbreeScene& rt, const std::vector<int>& workSampler, uint64_t streams);
     // What the committed path `path` of work item `work` contributed, if that still
-    // holds for the new layout, else null. Call for paths 0, 1, ... in order per work
-    // item (from one thread per work item).
+    // holds for the new layout, else null. Only reads: threads may ask about paths of
+    // one work item at once. `askedAgain`: it holds because its shadow queries, asked
+    // again, answered as before.
+    const PathContributions* holds(size_t work, int path, bool& askedAgain) const;
+    // What the measurement did with path `path` of work item `work`: reused (holds()
+    // gave it) or traced afresh (keep() follows). Call for paths 0, 1, ... in order per
+    // work item (from one thread per work item at a time).
+    void visit(size_t work, int path, bool reused, bool askedAgain);
+    // holds() and visit() in one, for a work item traced in order by one thread.
     const PathContributions* reuse(size_t work, int path);
-    // A path traced for the new layout (after reuse() said null): what it contributed
-    // and where its rays went (copied).
-    void keep(size_t work, int path, const PathContributions& contributions, const PathFootprint& footprint);
+    // A path traced for the new layout (after visit() said traced afresh): what it
+    // contributed and where its rays went (copied).
+    void keep(size_t work, int path, const PathContributions& contributions, const FootprintView& footprint);
     // The measured layout becomes the committed one, with the paths it traced and the
     // committed paths it did not ask for that the move missed (nothing happens when no
     // measurement is pending).
@@ -128,6 +135,7 @@ private:
     const Scene& scene_;
     size_t maxSegments_;
     std::vector<std::vector<Bounds3>> localClusters_;  // per entity: its triangles' and luminaires', entity frame
+    std::vector<std::vector<BoxedTriangles>> clusterTriangles_;  // per entity, per cluster
     // Where moves happen: the room's box with a margin (rays to the sky leave it, and
     // their parts outside never meet a move inside), or everywhere without a room.
     Bounds3 reach_;

@@ -62,9 +62,48 @@ bool SegmentProbe::meets(const Bounds3& b) const {
     return true;
 }
 
+TriangleProximity::TriangleProximity(const Vec3& a, const Vec3& b, const Vec3& c) {
+    const Vec3 n = cross(b - a, c - a);
+    const double area2 = length(n);
+    const std::array<Vec3, 3> v{a, b, c};
+    for (int k = 0; k < 3; ++k) degenerate_ = degenerate_ || length(v[size_t((k + 1) % 3)] - v[size_t(k)]) == 0;
+    if (!(area2 > 0) || degenerate_) {
+        degenerate_ = true;
+        return;
+    }
+    normal_ = n / area2;
+    offset_ = dot(normal_, a);
+    for (int k = 0; k < 3; ++k) {
+        const Vec3& from = v[size_t(k)];
+        const Vec3 edge = v[size_t((k + 1) % 3)] - from;
+        edgeNormal_[size_t(k)] = normalize(cross(normal_, edge));  // inward for a counter-clockwise (a, b, c) about n
+        edgeOffset_[size_t(k)] = dot(edgeNormal_[size_t(k)], from);
+    }
+}
+
+bool TriangleProximity::near(const Vec3& p, const Vec3& q, double margin) const {
+    if (degenerate_) return true;
+    const double dp = dot(normal_, p) - offset_, dq = dot(normal_, q) - offset_;
+    if ((dp > margin && dq > margin) || (dp < -margin && dq < -margin)) return false;
+    // The part of the segment inside the slab |distance| <= margin.
+    double t0 = 0, t1 = 1;
+    if (dp != dq) {
+        double a = (dp - margin) / (dp - dq), b = (dp + margin) / (dp - dq);
+        if (a > b) std::swap(a, b);
+        t0 = std::max(t0, a), t1 = std::min(t1, b);
+    }
+    const Vec3 x0 = p + (q - p) * t0, x1 = p + (q - p) * t1;
+    for (int k = 0; k < 3; ++k) {
+        const Vec3& m = edgeNormal_[size_t(k)];
+        const double o = edgeOffset_[size_t(k)] - margin;
+        if (dot(m, x0) < o && dot(m, x1) < o) return false;
+    }
+    return true;
+}
+
 PlacedBoxes::PlacedBoxes(const Transform& worldFromLocal, const std::vector<Bounds3>& local, double margin,
-                         double relativeMargin)
-    : localFromWorld_(worldFromLocal.inverse()) {
+                         double relativeMargin, const std::vector<BoxedTriangles>* triangles)
+    : localFromWorld_(worldFromLocal.inverse()), tight_(&local), triangles_(triangles) {
     for (const Bounds3& b : local)
         for (int corner = 0; corner < 8; ++corner)
             world_.extend(worldFromLocal.applyPoint(
@@ -79,15 +118,23 @@ PlacedBoxes::PlacedBoxes(const Transform& worldFromLocal, const std::vector<Boun
     double frobenius = 0;
     for (double v : localFromWorld_.m) frobenius += v * v;
     const double localBy = by * std::sqrt(frobenius);
+    localMargin_ = localBy;
     for (const Bounds3& b : local) local_.push_back({b.lo - Vec3(localBy, localBy, localBy), b.hi + Vec3(localBy, localBy, localBy)});
 }
 
 bool PlacedBoxes::meets(const Segment& s, const SegmentProbe& probe) const {
     if (!probe.meets(world_)) return false;
     auto local = [&](const std::array<float, 3>& p) { return localFromWorld_.applyPoint({p[0], p[1], p[2]}); };
-    const SegmentProbe inFrame(local(s.from), local(s.to));
-    for (const Bounds3& b : local_)
-        if (inFrame.meets(b)) return true;
+    const Vec3 from = local(s.from), to = local(s.to);
+    const SegmentProbe inFrame(from, to);
+    for (size_t k = 0; k < local_.size(); ++k) {
+        if (!inFrame.meets(local_[k])) continue;
+        if (!triangles_ || (*triangles_)[k].triangles.empty()) return true;
+        const BoxedTriangles& boxed = (*triangles_)[k];
+        if (boxed.coversBox && inFrame.meets((*tight_)[k])) return true;
+        for (const TriangleProximity& t : boxed.triangles)
+            if (t.near(from, to, localMargin_)) return true;
+    }
     return false;
 }
 

@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include <luxplan/core/math.h>
@@ -28,11 +29,19 @@ struct OcclusionTest {
     bool blocked = false;
 };
 
+// A path's footprint, wherever it is stored.
+struct FootprintView {
+    std::span<const Segment> segments;
+    std::span<const OcclusionTest> tests;  // OcclusionTest::segment counts in `segments`
+    bool usedEmitterChoice = false;
+};
+
 struct PathFootprint {
     std::vector<Segment> segments;
     std::vector<OcclusionTest> tests;  // in the order of their segments
     bool usedEmitterChoice = false;    // sampled an emitter, or weighed a hit on one by MIS
 
+    FootprintView view() const { return {segments, tests, usedEmitterChoice}; }
     void clear() {
         segments.clear();
         tests.clear();
@@ -59,13 +68,45 @@ private:
     bool flat_[3];  // no extent along the axis
 };
 
+// A triangle prepared for "does a segment come within a margin of it?": its plane and
+// its edges' inward normals in that plane, so that the test is a few dot products.
+class TriangleProximity {
+public:
+    TriangleProximity(const Vec3& a, const Vec3& b, const Vec3& c);
+    // False only if every point of [p, q] lies farther than `margin` from the triangle
+    // (a degenerate triangle always says true). The points within the margin lie in the
+    // slab |plane distance| <= margin and inside every edge's line moved out by the
+    // margin; the part of the segment in the slab is tested against each edge line.
+    bool near(const Vec3& p, const Vec3& q, double margin) const;
+
+private:
+    Vec3 normal_;  // unit; the plane is dot(normal_, x) = offset_
+    double offset_ = 0;
+    std::array<Vec3, 3> edgeNormal_{};  // unit, in the plane, pointing inside
+    std::array<double, 3> edgeOffset_{};
+    bool degenerate_ = false;
+};
+
+// The triangles that one of PlacedBoxes' boxes bounds. `coversBox`: they cover most of
+// the box's faces (a box part), so that a segment entering the box itself is taken to
+// meet them without testing each (saying "meets" is always safe: the path is traced
+// again).
+struct BoxedTriangles {
+    std::vector<TriangleProximity> triangles;  // none: the box alone decides
+    bool coversBox = false;
+};
+
 // Boxes given in an object's own frame and placed in the world by its transform:
 // oriented boxes, so that a segment past the corner of a rotated desk does not meet
 // it. Each is widened by margin + relativeMargin * (the largest world coordinate of
-// the whole) in world units.
+// the whole) in world units. A box may come with the triangles it bounds: a segment
+// that crosses the box then meets it only if it comes within the margin of one of
+// them (a ray between a chair's legs misses the chair, not only its box).
 class PlacedBoxes {
 public:
-    PlacedBoxes(const Transform& worldFromLocal, const std::vector<Bounds3>& local, double margin, double relativeMargin);
+    // `triangles`, where given, has an entry per box of `local`. It must outlive this.
+    PlacedBoxes(const Transform& worldFromLocal, const std::vector<Bounds3>& local, double margin, double relativeMargin,
+                const std::vector<BoxedTriangles>* triangles = nullptr);
     // The world box around them all (widened too).
     const Bounds3& worldBounds() const { return world_; }
     // `probe` is SegmentProbe(s), for the quick test against worldBounds() first.
@@ -74,7 +115,10 @@ public:
 private:
     Bounds3 world_;
     Transform localFromWorld_;
-    std::vector<Bounds3> local_;  // widened
+    const std::vector<Bounds3>* tight_;  // as given
+    std::vector<Bounds3> local_;         // widened
+    double localMargin_ = 0;             // the margin in the local frame (at least the world's)
+    const std::vector<BoxedTriangles>* triangles_ = nullptr;
 };
 
 }  // namespace luxplan
