@@ -249,13 +249,6 @@ void PathCache::visit(size_t work, int path, bool reused, bool askedAgain) {
     p.askedAgain += reused && askedAgain;
 }
 
-const PathContributions* PathCache::reuse(size_t work, int path) {
-    bool askedAgain = false;
-    const PathContributions* c = holds(work, path, askedAgain);
-    visit(work, path, c != nullptr, askedAgain);
-    return c;
-}
-
 void PathCache::keep(size_t work, int path, const PathContributions& contributions, const FootprintView& footprint) {
     const size_t n = footprint.segments.size();
     Pending& p = pending_[work];

@@ -58,9 +58,7 @@ public:
     // gave it) or traced afresh (keep() follows). Call for paths 0, 1, ... in order per
     // work item (from one thread per work item at a time).
     void visit(size_t work, int path, bool reused, bool askedAgain);
-    // holds() and visit() in one, for a work item traced in order by one thread.
-    const PathContributions* reuse(size_t work, int path);
-    // A path traced for the new layout (after visit() said traced afresh): what it
+    // A path traced for the new layout (after visit() noted it traced afresh): what it
     // contributed and where its rays went (copied).
     void keep(size_t work, int path, const PathContributions& contributions, const FootprintView& footprint);
     // The measured layout becomes the committed one, with the paths it traced and the
@@ -71,7 +69,7 @@ public:
     // beyond them that the move missed.
     void discard();
 
-    // The segments of the committed path that reuse(work, path) just returned (valid
+    // The segments of the committed path that holds(work, path) just returned (valid
     // until the next commit or discard).
     std::span<const Segment> segmentsOf(size_t work, int path) const;
 
