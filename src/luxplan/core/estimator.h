@@ -40,6 +40,8 @@ public:
     }
 
     uint64_t count() const { return count_; }
+    // Every sample kept was zero (or none was): mean and variance are exactly 0.
+    bool allZero() const { return sum_ == 0 && sumSquares_ == 0; }
     uint64_t dropped() const { return dropped_; }
 
     double mean() const { return count_ > 0 ? sum_ / double(count_) : 0.0; }

@@ -48,6 +48,7 @@ namespace {
 
 // A stratum of a stratified estimate: its mean and the variance of that mean.
 void addStratum(const MeanEstimator& m, double& mean, double& variance) {
+    if (m.allZero()) return;  // adds exactly 0 to both (most of a glare survey's cells)
     mean += m.mean();
     variance += m.count() > 0 ? m.variance() / double(m.count()) : 0.0;
 }
@@ -66,6 +67,7 @@ Estimate ItemEstimates::stratified(int item, int heldOut) const {
     double mean = 0, variance = 0;
     for (int source = 0; source < sources_; ++source) {
         const MeanEstimator& total = totals_[size_t(item) * sources_ + source];
+        if (total.allZero()) continue;  // so is every fold of it
         addStratum(heldOut < 0 ? total : total.without(cells_[index(item, source, heldOut)]), mean, variance);
     }
     return {mean / sources_, std::sqrt(variance) / sources_};
