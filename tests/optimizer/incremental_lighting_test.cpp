@@ -83,42 +83,6 @@ TEST(IncrementalLighting, TheSearchIsTheSameWithAndWithoutThePathCache) {
     EXPECT_GT(accepted, 10);  // commits and reverts both happened
 }
 
-// The independent measurements (the result's candidates, the report) go through a path
-// cache of their own: a run of layouts measured with one seed, and then another seed,
-// gives what each measured from scratch gives, and reads paths back where it can.
-TEST(IncrementalLighting, IndependentMeasurementsAreTheSameThroughTheirCache) {
-    const Scene scene = litStudy();
-    const DaylightEnvironment daylight = buildDaylight(*scene.daylight, scene.site);
-    MeasureOptions measure;
-    measure.pathsPerPoint = 32, measure.seed = 5;
-    PathTracedLighting cached(scene, &daylight, measure);
-    Layout layout = initialLayout(scene);
-    const uint64_t seeds[] = {11, 11, 11, 12, 11};
-    for (int k = 0; k < 5; ++k) {
-        SCOPED_TRACE("measurement " + std::to_string(k));
-        if (k == 1) layout.placements[0].position.x += 0.3;  // the desk, carrying the lamp
-        if (k == 2) layout.placements[2].position.x -= 0.4;  // the cabinet
-        const std::vector<Transform> world = worldTransforms(scene, layout);
-        PathTracedLighting fresh(scene, &daylight, measure);
-        fresh.setIncremental(false);
-        LightingBreakdown a, b;
-        const uint64_t before = cached.reusedPaths();
-        EXPECT_EQ(cached.measureIndependently(layout, world, &a, seeds[k]), fresh.measureIndependently(layout, world, &b, seeds[k]));
-        ASSERT_EQ(a.samplers.size(), b.samplers.size());
-        for (size_t i = 0; i < a.samplers.size(); ++i) {
-            EXPECT_EQ(a.samplers[i].value, b.samplers[i].value);
-            EXPECT_EQ(a.samplers[i].standardError, b.samplers[i].standardError);
-        }
-        EXPECT_EQ(fresh.reusedPaths(), 0u);
-        if (k == 2) {
-            EXPECT_GT(cached.reusedPaths(), before) << "the cabinet moved: paths read back";
-        }
-        if (k == 3) {
-            EXPECT_EQ(cached.reusedPaths(), before) << "another seed: nothing to read back";
-        }
-    }
-}
-
 // Each move type counts the paths its proposals' light traced afresh: together, all
 // the evaluator traced for the chain's proposals; none for proposals never lit; and the
 // path cache shows there, fewer for the same chain.

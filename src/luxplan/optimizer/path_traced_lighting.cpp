@@ -15,7 +15,7 @@ constexpr uint64_t kFreshTag = 0x6672657368ULL;  // "fresh"
 PathTracedLighting::PathTracedLighting(const Scene& scene, const DaylightEnvironment* daylight, const MeasureOptions& options,
                                        const PathTracerOptions& searchTracing, const PathTracerOptions& reportTracing)
     : scene_(scene), rt_(scene, initialLayout(scene)), tracer_(rt_, daylight, searchTracing),
-      reportTracer_(rt_, daylight, reportTracing), options_(options), cache_(scene), independentCache_(scene) {
+      reportTracer_(rt_, daylight, reportTracing), options_(options), cache_(scene) {
     for (const LightSamplerSpec& s : scene.samplers) {
         const std::string_view type = s.type->name();
         hasGlareSurveys_ = hasGlareSurveys_ || type == "ugr" || type == "dgp";
@@ -40,12 +40,8 @@ double PathTracedLighting::measureIndependently(const Layout& /*layout*/, const 
     if (reportPaths_ > 0) independent.pathsPerPoint = reportPaths_;
     independent.adaptive = false;
     independent.choiceError = true;
-    // Not through the search's cache (its committed paths are the search's, and stay so)
-    // but through a cache of its own: a seed that differs from its last clears it.
-    PathCache* cache = incremental_ ? &independentCache_ : nullptr;
-    const double lighting = measure(reportTracer_, world, independent, cache, out);
-    if (cache) cache->commit();
-    return lighting;
+    // Not through the cache: its committed paths are the search's, and stay so.
+    return measure(reportTracer_, world, independent, nullptr, out);
 }
 
 double PathTracedLighting::measure(PathTracer& tracer, const std::vector<Transform>& world, const MeasureOptions& options,

@@ -21,9 +21,7 @@ public:
 
     double evaluate(const Layout& layout, const std::vector<Transform>& world, LightingBreakdown* out) override;
     // A fixed number of paths per point (setReportPaths; by default the search's), from
-    // `seed`: `measure --seed S --paths N` gives the same. Through a path cache of its
-    // own, so that the result's candidates, measured with one seed, each trace only the
-    // paths the layout before them does not give (the same numbers).
+    // `seed`, without the path cache: `measure --seed S --paths N` gives the same.
     double measureIndependently(const Layout& layout, const std::vector<Transform>& world, LightingBreakdown* out,
                                 uint64_t seed) override;
     void setReportPaths(int pathsPerPoint) { reportPaths_ = pathsPerPoint; }
@@ -62,7 +60,6 @@ private:
     MeasureOptions options_;
     int reportPaths_ = 0;  // 0: options_.pathsPerPoint
     PathCache cache_;
-    PathCache independentCache_;  // measureIndependently's: the search's holds the search's paths
     bool incremental_ = true;
     bool fresh_ = false;
     uint64_t freshDraws_ = 0;
