@@ -215,9 +215,11 @@ MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& op
 
     // What a path added, into its work item's folds (a path with a non-finite value is
     // dropped whole: core/estimator.h's policy).
+    std::vector<char> sharesPaths(samplers);
+    for (size_t k = 0; k < samplers; ++k) sharesPaths[k] = placed[k]->sharesPaths();
     auto add = [&](size_t index, int path, const PathContributions& c) {
         const WorkItem& w = work[index];
-        const bool shares = placed[size_t(w.sampler)]->sharesPaths();
+        const bool shares = sharesPaths[size_t(w.sampler)];
         WorkResult& r = done[index];
         if (!c.finite()) {
             ++r.dropped;
@@ -270,13 +272,13 @@ MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& op
                 Rng rng = rngOf(path);
                 PathSamples samples = samplesOf(path, rng);
                 RayStats uncounted;
-                PathFootprint again;
-                uncounted.footprint = &again;
+                scratch.clear();  // onPath reads it only for a path traced afresh
+                uncounted.footprint = &scratch;
                 sampler.sample(*tracerOf[size_t(w.sampler)], w.item, samples, uncounted, fresh);
                 ++check.checked;
                 if (!fresh.sameAs(*cached))
                     check.note({0, w.sampler, w.item, path, cached->sum(), fresh.sum(),
-                                wherePathsPart(cache->segmentsOf(index, path), again.segments)});
+                                wherePathsPart(cache->segmentsOf(index, path), scratch.segments)});
             }
             onPath(path, cached, askedAgain, traced, scratch);
         }

@@ -65,12 +65,11 @@ bool SegmentProbe::meets(const Bounds3& b) const {
 TriangleProximity::TriangleProximity(const Vec3& a, const Vec3& b, const Vec3& c) {
     const Vec3 n = cross(b - a, c - a);
     const double area2 = length(n);
-    const std::array<Vec3, 3> v{a, b, c};
-    for (int k = 0; k < 3; ++k) degenerate_ = degenerate_ || length(v[size_t((k + 1) % 3)] - v[size_t(k)]) == 0;
-    if (!(area2 > 0) || degenerate_) {
+    if (!(area2 > 0)) {  // a zero edge or three points in a line
         degenerate_ = true;
         return;
     }
+    const std::array<Vec3, 3> v{a, b, c};
     normal_ = n / area2;
     offset_ = dot(normal_, a);
     for (int k = 0; k < 3; ++k) {

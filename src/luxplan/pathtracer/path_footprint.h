@@ -104,7 +104,8 @@ struct BoxedTriangles {
 // them (a ray between a chair's legs misses the chair, not only its box).
 class PlacedBoxes {
 public:
-    // `triangles`, where given, has an entry per box of `local`. It must outlive this.
+    // `triangles`, where given, has an entry per box of `local`. Both must outlive this
+    // (it keeps `local` for the boxes as given).
     PlacedBoxes(const Transform& worldFromLocal, const std::vector<Bounds3>& local, double margin, double relativeMargin,
                 const std::vector<BoxedTriangles>* triangles = nullptr);
     // The world box around them all (widened too).
