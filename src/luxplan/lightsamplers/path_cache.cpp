@@ -167,6 +167,7 @@ void PathCache::begin(const EmbreeScene& rt, const std::vector<int>& workSampler
             }
             if (!scene_.entities[i].emitters.empty()) emittersMoved_ = true;
         }
+    movedFilter_ = SegmentBoxFilter(movedUnion_);
     movedInReach_ = movedUnion_.empty() || (reach_.contains(movedUnion_.lo) && reach_.contains(movedUnion_.hi));
     workMoved_.assign(workSampler.size(), 0);
     for (size_t w = 0; w < workSampler.size(); ++w) {
@@ -195,13 +196,8 @@ PathCache::Verdict PathCache::check(size_t work, const Record& r, const Paths& i
     again.clear();
     for (uint32_t index = 0; index < r.segmentCount; ++index) {
         const Segment& s = segments[index];
-        // The segment's own box first: comparisons only.
-        if (std::max(s.from[0], s.to[0]) < u.lo.x || std::min(s.from[0], s.to[0]) > u.hi.x ||
-            std::max(s.from[1], s.to[1]) < u.lo.y || std::min(s.from[1], s.to[1]) > u.hi.y ||
-            std::max(s.from[2], s.to[2]) < u.lo.z || std::min(s.from[2], s.to[2]) > u.hi.z)
-            continue;
+        if (!movedFilter_.mayMeet(s)) continue;
         const SegmentProbe probe(s);
-        if (!probe.meets(movedUnion_)) continue;
         bool meets = false;
         for (const PlacedBoxes& b : moved_)
             if (b.meets(s, probe)) {

@@ -151,6 +151,7 @@ private:
     std::vector<Transform> newWorld_;
     std::vector<PlacedBoxes> moved_;  // old and new, of every moved entity with geometry
     Bounds3 movedUnion_;
+    SegmentBoxFilter movedFilter_;  // movedUnion_'s, the first test of each segment
     bool movedInReach_ = false;  // movedUnion_ lies inside reach_: a path's box decides a miss
     std::vector<char> workMoved_;    // per work item: its sampler moved
     bool emittersMoved_ = false;

@@ -62,6 +62,19 @@ bool SegmentProbe::meets(const Bounds3& b) const {
     return true;
 }
 
+SegmentBoxFilter::SegmentBoxFilter(const Bounds3& box) {
+    if (box.empty()) return;
+    // Double rounds a segment's midpoint and the cross products by about 1e-16 of the
+    // coordinates involved (up to 1e6 m, PathFootprint::add); a micrometre of pad
+    // adds at least 1e-6 times the segment's half-length to each side of the cross
+    // terms, far above that.
+    constexpr double kPad = 1e-6;
+    for (int k = 0; k < 3; ++k) {
+        centre_[k] = 0.5 * (box.lo[k] + box.hi[k]);
+        half_[k] = 0.5 * (box.hi[k] - box.lo[k]) + kPad;
+    }
+}
+
 TriangleProximity::TriangleProximity(const Vec3& a, const Vec3& b, const Vec3& c) {
     const Vec3 n = cross(b - a, c - a);
     const double area2 = length(n);

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -66,6 +67,36 @@ public:
 private:
     double from_[3], inv_[3];
     bool flat_[3];  // no extent along the axis
+};
+
+// A box for the first, cheap test of many segments against it: no divisions and no
+// branch per axis (the separating axis theorem: the box's three axes and their cross
+// products with the segment). Padded for rounding, so that it never says "apart" of a
+// segment that SegmentProbe says meets the box; it may say "may meet" of one a
+// micrometre outside.
+class SegmentBoxFilter {
+public:
+    SegmentBoxFilter() = default;
+    explicit SegmentBoxFilter(const Bounds3& box);
+    bool mayMeet(const Segment& s) const {
+        double m[3], d[3], a[3];
+        for (int k = 0; k < 3; ++k) {
+            d[k] = 0.5 * (double(s.to[k]) - double(s.from[k]));
+            m[k] = 0.5 * (double(s.to[k]) + double(s.from[k])) - centre_[k];
+            a[k] = std::abs(d[k]);
+        }
+        // Evaluated whole, then combined: the outcome is unpredictable, and a branch
+        // each would cost more than the arithmetic.
+        const bool apart = (std::abs(m[0]) > half_[0] + a[0]) | (std::abs(m[1]) > half_[1] + a[1]) |
+                           (std::abs(m[2]) > half_[2] + a[2]) |
+                           (std::abs(m[1] * d[2] - m[2] * d[1]) > half_[1] * a[2] + half_[2] * a[1]) |
+                           (std::abs(m[2] * d[0] - m[0] * d[2]) > half_[0] * a[2] + half_[2] * a[0]) |
+                           (std::abs(m[0] * d[1] - m[1] * d[0]) > half_[0] * a[1] + half_[1] * a[0]);
+        return !apart;
+    }
+
+private:
+    double centre_[3] = {}, half_[3] = {-1, -1, -1};  // an empty box: nothing meets it
 };
 
 // A triangle prepared for "does a segment come within a margin of it?": its plane and
