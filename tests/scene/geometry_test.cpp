@@ -1,6 +1,8 @@
 // Room shell, furniture presets and solid voxels against their analytic areas and volumes.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <luxplan/scene/presets.h>
 #include <luxplan/scene/room.h>
 #include <luxplan/scene/voxels.h>
@@ -73,6 +75,65 @@ TEST(Voxels, OverlappingPartsCountOnce) {
     EXPECT_NEAR(g.volume(), 1.5, 0.02 * 1.5);
     EXPECT_TRUE(g.contains({0.75, 0.5, 0.5}));
     EXPECT_FALSE(g.contains({2, 0.5, 0.5}));
+}
+
+// voxelizeSolid writes runs of cells layer by layer; cell by cell, each centre's winding
+// number over the column's crossings at or below it, gives the same grid, cell for cell.
+VoxelGrid windingCellByCell(const TriangleMesh& mesh, const VoxelGrid& shape) {
+    VoxelGrid g = shape;
+    g.occupied.assign(g.occupied.size(), 0);
+    g.count = 0;
+    const Vec3 c = g.cellSize();
+    for (int j = 0; j < g.ny; ++j)
+        for (int i = 0; i < g.nx; ++i) {
+            const double px = g.bounds.lo.x + (i + 0.5) * c.x + 1.1e-6 * c.x, py = g.bounds.lo.y + (j + 0.5) * c.y + 1.3e-6 * c.y;
+            std::vector<std::pair<double, int>> hits;
+            for (const auto& tri : mesh.triangles) {
+                const Vec3 &a = mesh.positions[tri[0]], &b = mesh.positions[tri[1]], &d = mesh.positions[tri[2]];
+                const double area2 = (b.x - a.x) * (d.y - a.y) - (b.y - a.y) * (d.x - a.x);
+                if (area2 == 0) continue;
+                const double w0 = ((b.x - px) * (d.y - py) - (b.y - py) * (d.x - px)) / area2;
+                const double w1 = ((d.x - px) * (a.y - py) - (d.y - py) * (a.x - px)) / area2;
+                const double w2 = 1 - w0 - w1;
+                if (w0 < 0 || w1 < 0 || w2 < 0) continue;
+                hits.push_back({w0 * a.z + w1 * b.z + w2 * d.z, area2 < 0 ? +1 : -1});
+            }
+            std::sort(hits.begin(), hits.end());
+            for (int k = 0; k < g.nz; ++k) {
+                const double z = g.bounds.lo.z + (k + 0.5) * c.z;
+                int winding = 0;
+                for (const auto& [hz, sign] : hits)
+                    if (hz <= z) winding += sign;
+                if (winding != 0) g.occupied[g.index(i, j, k)] = 1, ++g.count;
+            }
+        }
+    return g;
+}
+
+TEST(Voxels, RunsEqualTheWindingCellByCell) {
+    std::vector<std::pair<std::string, TriangleMesh>> meshes;
+    for (const char* name : {"desk", "office_chair", "monitor", "stand_lamp", "sofa", "bookshelf"}) {
+        const PresetInfo* p = findPreset(name);
+        meshes.push_back({name, buildPreset(*p, p->defaultSize, {{p->slots.front(), 0}})});
+    }
+    TriangleMesh overlapping;
+    addBox(overlapping, Bounds3({0, 0, 0}, {1, 1, 1}), 0);
+    addBox(overlapping, Bounds3({0.5, 0.2, 0.3}, {1.5, 0.8, 1.6}), 0);  // overlaps and sticks out above
+    addBox(overlapping, Bounds3({0.2, 0.2, 1.2}, {0.4, 0.4, 1.5}), 0);  // floats apart: two runs per column
+    meshes.push_back({"overlapping boxes", overlapping});
+    TriangleMesh turned;
+    Transform tilt;
+    const double a = radians(25);
+    tilt.m = {1, 0, 0, 0, std::cos(a), -std::sin(a), 0, std::sin(a), std::cos(a)};
+    turned.append(meshes[0].second, Transform::rotateZ(radians(30)) * tilt);
+    meshes.push_back({"a tilted desk", turned});
+    for (const auto& [name, mesh] : meshes) {
+        const VoxelGrid g = voxelizeSolid(mesh, 0.03);
+        const VoxelGrid want = windingCellByCell(mesh, g);
+        EXPECT_GT(g.count, 0u) << name;
+        EXPECT_EQ(g.count, want.count) << name;
+        EXPECT_TRUE(g.occupied == want.occupied) << name;
+    }
 }
 
 TEST(Presets, EveryPresetFillsItsBoxAndHasVolume) {

@@ -73,22 +73,52 @@ VoxelGrid voxelizeSolid(const TriangleMesh& mesh, double cell, int maxCells) {
                 columns[size_t(j) * g.nx + i].push_back({w0 * a.z + w1 * b.z + w2 * d.z, sign});
             }
     }
-    for (int j = 0; j < g.ny; ++j)
-        for (int i = 0; i < g.nx; ++i) {
-            auto& hits = columns[size_t(j) * g.nx + i];
-            if (hits.empty()) continue;
-            std::sort(hits.begin(), hits.end());
-            int winding = 0;
-            size_t h = 0;
-            for (int k = 0; k < g.nz; ++k) {
-                double z = g.bounds.lo.z + (k + 0.5) * c.z;
-                while (h < hits.size() && hits[h].first <= z) winding += hits[h++].second;
-                if (winding != 0) {
-                    g.occupied[g.index(i, j, k)] = 1;
-                    ++g.count;
-                }
+    // Each column's runs of cells inside: a cell belongs with every crossing at or below
+    // its centre. The runs are then written layer by layer, in the grid's own order (a
+    // column's cells lie nx * ny apart: written column by column, a large solid would
+    // wait on memory at every cell).
+    auto centreZ = [&](int k) { return g.bounds.lo.z + (k + 0.5) * c.z; };
+    auto firstCellAbove = [&](double z) {  // the lowest cell whose centre is at or above z
+        int k = std::clamp(int(std::ceil((z - g.bounds.lo.z) / c.z - 0.5)), 0, g.nz);
+        while (k > 0 && centreZ(k - 1) >= z) --k;
+        while (k < g.nz && centreZ(k) < z) ++k;
+        return k;
+    };
+    struct Run {
+        int from, to;  // cells [from, to)
+    };
+    std::vector<Run> runs;
+    std::vector<size_t> firstRun(columns.size() + 1, 0);
+    for (size_t col = 0; col < columns.size(); ++col) {
+        auto& hits = columns[col];
+        firstRun[col] = runs.size();
+        if (hits.empty()) continue;
+        std::sort(hits.begin(), hits.end());
+        int winding = 0;
+        for (size_t h = 0; h < hits.size(); ++h) {
+            winding += hits[h].second;
+            const int from = firstCellAbove(hits[h].first);
+            const int to = h + 1 < hits.size() ? firstCellAbove(hits[h + 1].first) : g.nz;
+            if (winding == 0 || from >= to) continue;
+            if (runs.size() > firstRun[col] && runs.back().to == from)
+                runs.back().to = to;
+            else
+                runs.push_back({from, to});
+        }
+    }
+    firstRun[columns.size()] = runs.size();
+    std::vector<size_t> next(firstRun.begin(), firstRun.end() - 1);  // per column: its first run not yet past
+    for (int k = 0; k < g.nz; ++k) {
+        uint8_t* layer = g.occupied.data() + g.index(0, 0, k);
+        for (size_t col = 0; col < columns.size(); ++col) {
+            size_t& r = next[col];
+            while (r < firstRun[col + 1] && runs[r].to <= k) ++r;
+            if (r < firstRun[col + 1] && runs[r].from <= k) {
+                layer[col] = 1;
+                ++g.count;
             }
         }
+    }
     return g;
 }
 
