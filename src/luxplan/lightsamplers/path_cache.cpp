@@ -47,6 +47,11 @@ void extendByPartInside(Bounds3& box, const Segment& s, const Bounds3& clip) {
 // this many (a larger cluster: its box alone decides).
 constexpr size_t kMostTrianglesTested = 32;
 
+// How much of a path's footprint prefetchAfter() asks for ahead (a path's segments
+// number about ten, 240 bytes).
+constexpr size_t kPrefetchBytes = 512;
+constexpr size_t kPrefetchPaths = 2;  // how far ahead
+
 // Boxes around clusters of triangles: median splits of the centroids along the widest
 // axis, down to a dozen triangles (a box part's six faces become thin slabs), each with
 // its triangles prepared for the proximity test.
@@ -227,11 +232,31 @@ PathCache::Record PathCache::Paths::append(const Record& r, const Paths& from) {
     return out;
 }
 
+void PathCache::prefetchAfter(const Paths& paths, size_t path) {
+    // A work item's paths are asked for one after another, and a check waits on memory
+    // for the path's segments (the cache holds hundreds of megabytes): those of the
+    // path after next are fetched while this one is checked or traced (the next one's
+    // came with the last call; most checks take less than a fetch from memory), and
+    // the record two further on, whose segments the call after next will fetch.
+    const auto& records = paths.records;
+    if (path + kPrefetchPaths + 2 < records.size()) {
+        const char* ahead = reinterpret_cast<const char*>(&records[path + kPrefetchPaths + 2]);
+        __builtin_prefetch(ahead), __builtin_prefetch(ahead + sizeof(Record) - 1);
+    }
+    if (path + kPrefetchPaths < records.size() && records[path + kPrefetchPaths].kept) {
+        const Record& n = records[path + kPrefetchPaths];
+        const char* from = reinterpret_cast<const char*>(paths.segments.data() + n.firstSegment);
+        const size_t bytes = std::min(size_t(n.segmentCount) * sizeof(Segment), kPrefetchBytes);
+        for (size_t b = 0; b < bytes; b += 64) __builtin_prefetch(from + b);
+    }
+}
+
 const PathContributions* PathCache::holds(size_t work, int path, bool& askedAgain) const {
     askedAgain = false;
     const Paths& committed = committed_[work];
     if (size_t(path) >= committed.records.size() || !committed.records[size_t(path)].kept) return nullptr;
     const Record& r = committed.records[size_t(path)];
+    prefetchAfter(committed, size_t(path));
     const Verdict v = check(work, r, committed, true);
     if (v == Verdict::Changed) return nullptr;
     askedAgain = v == Verdict::SameAnswers;
@@ -334,9 +359,11 @@ void PathCache::commit() {
         // checks; the rest are dropped.
         auto& records = committed.records;
         const size_t visited = size_t(p.visited), checked = std::min(records.size(), 2 * visited);
-        for (size_t path = visited; path < records.size(); ++path)
+        for (size_t path = visited; path < records.size(); ++path) {
+            if (path < checked) prefetchAfter(committed, path);
             if (records[path].kept && (path >= checked || check(w, records[path], committed, false) == Verdict::Changed))
                 drop(records[path]);
+        }
         records.resize(std::max(checked, visited));
         // Every path asked for traced afresh, in order, and none kept beyond them (a
         // moved sampler's work item): the traced arrays become the committed ones as

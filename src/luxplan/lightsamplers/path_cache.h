@@ -128,6 +128,7 @@ private:
     // committed layout, which the scene no longer is).
     enum class Verdict { Changed, Missed, SameAnswers };
     Verdict check(size_t work, const Record& r, const Paths& in, bool requery) const;
+    static void prefetchAfter(const Paths& paths, size_t path);
     void endMeasurement();  // no measurement pending (its paths are committed or dropped)
 
     const Scene& scene_;
