@@ -23,10 +23,6 @@ constexpr double kReachMargin = 0.5;  // m around the room's box: where moves ha
 // `box` extended by the part of segment s inside `clip` (slabs, in double).
 void extendByPartInside(Bounds3& box, const Segment& s, const Bounds3& clip) {
     const Vec3 from(s.from[0], s.from[1], s.from[2]), to(s.to[0], s.to[1], s.to[2]);
-    if (clip.contains(from) && clip.contains(to)) {  // most segments: no clipping
-        box.extend(from), box.extend(to);
-        return;
-    }
     const Vec3 d = to - from;
     double t0 = 0, t1 = 1;
     for (int axis = 0; axis < 3; ++axis) {
@@ -42,6 +38,45 @@ void extendByPartInside(Bounds3& box, const Segment& s, const Bounds3& clip) {
     box.extend(t0 == 0 ? from : from + d * t0);
     box.extend(t1 == 1 ? to : from + d * t1);
 }
+
+// The box of a path's segments' parts inside a clip box. Most segments lie inside it,
+// and their corners' floats are the box's: compared and gathered in float (the clip
+// box rounded inwards, so the comparisons answer as in double); a segment that leaves
+// it is clipped in double.
+class PartsInside {
+public:
+    explicit PartsInside(const Bounds3& clip) : clip_(clip) {
+        for (int a = 0; a < 3; ++a) {
+            lo_[a] = float(clip.lo[a]), hi_[a] = float(clip.hi[a]);
+            if (double(lo_[a]) < clip.lo[a]) lo_[a] = std::nextafter(lo_[a], kInfF);
+            if (double(hi_[a]) > clip.hi[a]) hi_[a] = std::nextafter(hi_[a], -kInfF);
+        }
+    }
+    bool inside(const std::array<float, 3>& p) const {
+        return p[0] >= lo_[0] && p[0] <= hi_[0] && p[1] >= lo_[1] && p[1] <= hi_[1] && p[2] >= lo_[2] && p[2] <= hi_[2];
+    }
+    // The box of `segments`' parts inside the clip box (empty if none).
+    Bounds3 of(std::span<const Segment> segments) const {
+        std::array<float, 3> lo{kInfF, kInfF, kInfF}, hi{-kInfF, -kInfF, -kInfF};
+        Bounds3 clipped;
+        for (const Segment& s : segments) {
+            if (!inside(s.from) || !inside(s.to)) {
+                extendByPartInside(clipped, s, clip_);
+                continue;
+            }
+            for (int a = 0; a < 3; ++a) {
+                lo[a] = std::min(lo[a], std::min(s.from[a], s.to[a]));
+                hi[a] = std::max(hi[a], std::max(s.from[a], s.to[a]));
+            }
+        }
+        if (lo[0] <= hi[0]) clipped.extend(Bounds3(Vec3(lo[0], lo[1], lo[2]), Vec3(hi[0], hi[1], hi[2])));
+        return clipped;
+    }
+
+private:
+    Bounds3 clip_;
+    std::array<float, 3> lo_, hi_;  // clip_ rounded inwards to float
+};
 
 // A cluster's triangles are tested one by one once a segment crosses its box, up to
 // this many (a larger cluster: its box alone decides).
@@ -282,8 +317,7 @@ void PathCache::keep(size_t work, int path, const PathContributions& contributio
         r.firstSegment = uint32_t(p.traced.segments.size()), r.segmentCount = uint32_t(n);
         r.firstTest = uint32_t(p.traced.tests.size()), r.testCount = uint32_t(footprint.tests.size());
         p.traced.segments.insert(p.traced.segments.end(), footprint.segments.begin(), footprint.segments.end());
-        Bounds3 box;
-        for (const Segment& s : footprint.segments) extendByPartInside(box, s, reach_);
+        const Bounds3 box = PartsInside(reach_).of(footprint.segments);
         for (int a = 0; a < 3; ++a) {  // padded, and rounded outwards to float
             r.lo[a] = box.empty() ? kInfF : std::nextafter(float(box.lo[a] - kBoxPad), -kInfF);
             r.hi[a] = box.empty() ? -kInfF : std::nextafter(float(box.hi[a] + kBoxPad), kInfF);
