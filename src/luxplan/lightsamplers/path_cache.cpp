@@ -269,10 +269,10 @@ PathCache::Record PathCache::Paths::append(const Record& r, const Paths& from) {
 
 void PathCache::prefetchAfter(const Paths& paths, size_t path) {
     // A work item's paths are asked for one after another, and a check waits on memory
-    // for the path's segments (the cache holds hundreds of megabytes): those of the
-    // path after next are fetched while this one is checked or traced (the next one's
-    // came with the last call; most checks take less than a fetch from memory), and
-    // the record two further on, whose segments the call after next will fetch.
+    // for the path's segments (the kept paths take megabytes, the core's cache one):
+    // those of the path after next are fetched while this one is checked or traced (the
+    // next one's came with the last call; most checks take less than a fetch from
+    // memory), and the record two further on, whose segments the call after next fetches.
     const auto& records = paths.records;
     if (path + kPrefetchPaths + 2 < records.size()) {
         const char* ahead = reinterpret_cast<const char*>(&records[path + kPrefetchPaths + 2]);
