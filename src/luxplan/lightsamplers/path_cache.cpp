@@ -39,45 +39,6 @@ void extendByPartInside(Bounds3& box, const Segment& s, const Bounds3& clip) {
     box.extend(t1 == 1 ? to : from + d * t1);
 }
 
-// The box of a path's segments' parts inside a clip box. Most segments lie inside it,
-// and their corners' floats are the box's: compared and gathered in float (the clip
-// box rounded inwards, so the comparisons answer as in double); a segment that leaves
-// it is clipped in double.
-class PartsInside {
-public:
-    explicit PartsInside(const Bounds3& clip) : clip_(clip) {
-        for (int a = 0; a < 3; ++a) {
-            lo_[a] = float(clip.lo[a]), hi_[a] = float(clip.hi[a]);
-            if (double(lo_[a]) < clip.lo[a]) lo_[a] = std::nextafter(lo_[a], kInfF);
-            if (double(hi_[a]) > clip.hi[a]) hi_[a] = std::nextafter(hi_[a], -kInfF);
-        }
-    }
-    bool inside(const std::array<float, 3>& p) const {
-        return p[0] >= lo_[0] && p[0] <= hi_[0] && p[1] >= lo_[1] && p[1] <= hi_[1] && p[2] >= lo_[2] && p[2] <= hi_[2];
-    }
-    // The box of `segments`' parts inside the clip box (empty if none).
-    Bounds3 of(std::span<const Segment> segments) const {
-        std::array<float, 3> lo{kInfF, kInfF, kInfF}, hi{-kInfF, -kInfF, -kInfF};
-        Bounds3 clipped;
-        for (const Segment& s : segments) {
-            if (!inside(s.from) || !inside(s.to)) {
-                extendByPartInside(clipped, s, clip_);
-                continue;
-            }
-            for (int a = 0; a < 3; ++a) {
-                lo[a] = std::min(lo[a], std::min(s.from[a], s.to[a]));
-                hi[a] = std::max(hi[a], std::max(s.from[a], s.to[a]));
-            }
-        }
-        if (lo[0] <= hi[0]) clipped.extend(Bounds3(Vec3(lo[0], lo[1], lo[2]), Vec3(hi[0], hi[1], hi[2])));
-        return clipped;
-    }
-
-private:
-    Bounds3 clip_;
-    std::array<float, 3> lo_, hi_;  // clip_ rounded inwards to float
-};
-
 // A cluster's triangles are tested one by one once a segment crosses its box, up to
 // this many (a larger cluster: its box alone decides).
 constexpr size_t kMostTrianglesTested = 32;
@@ -157,12 +118,41 @@ void clusterParts(const TriangleMesh& mesh, std::vector<Bounds3>& out, std::vect
 
 }  // namespace
 
+PathCache::PartsInside::PartsInside(const Bounds3& clip) : clip_(clip) {
+    for (int a = 0; a < 3; ++a) {  // rounded inwards, so that float compares as double does
+        lo_[a] = float(clip.lo[a]), hi_[a] = float(clip.hi[a]);
+        if (double(lo_[a]) < clip.lo[a]) lo_[a] = std::nextafter(lo_[a], kInfF);
+        if (double(hi_[a]) > clip.hi[a]) hi_[a] = std::nextafter(hi_[a], -kInfF);
+    }
+}
+
+Bounds3 PathCache::PartsInside::of(std::span<const Segment> segments) const {
+    auto inside = [&](const std::array<float, 3>& p) {
+        return p[0] >= lo_[0] && p[0] <= hi_[0] && p[1] >= lo_[1] && p[1] <= hi_[1] && p[2] >= lo_[2] && p[2] <= hi_[2];
+    };
+    std::array<float, 3> lo{kInfF, kInfF, kInfF}, hi{-kInfF, -kInfF, -kInfF};
+    Bounds3 clipped;
+    for (const Segment& s : segments) {
+        if (!inside(s.from) || !inside(s.to)) {
+            extendByPartInside(clipped, s, clip_);
+            continue;
+        }
+        for (int a = 0; a < 3; ++a) {
+            lo[a] = std::min(lo[a], std::min(s.from[a], s.to[a]));
+            hi[a] = std::max(hi[a], std::max(s.from[a], s.to[a]));
+        }
+    }
+    if (lo[0] <= hi[0]) clipped.extend(Bounds3(Vec3(lo[0], lo[1], lo[2]), Vec3(hi[0], hi[1], hi[2])));
+    return clipped;
+}
+
 PathCache::PathCache(const Scene& scene, size_t maxSegments) : scene_(scene), maxSegments_(maxSegments) {
     reach_ = Bounds3(Vec3(-kInf, -kInf, -kInf), Vec3(kInf, kInf, kInf));
     if (const RoomShell* room = scene.room()) {
         const Vec3 pad(kReachMargin, kReachMargin, kReachMargin);
         reach_ = Bounds3(room->box.lo - pad, room->box.hi + pad);
     }
+    reachParts_ = PartsInside(reach_);
     localClusters_.resize(scene.entities.size());
     clusterTriangles_.resize(scene.entities.size());
     for (size_t i = 0; i < scene.entities.size(); ++i) {
@@ -317,7 +307,7 @@ void PathCache::keep(size_t work, int path, const PathContributions& contributio
         r.firstSegment = uint32_t(p.traced.segments.size()), r.segmentCount = uint32_t(n);
         r.firstTest = uint32_t(p.traced.tests.size()), r.testCount = uint32_t(footprint.tests.size());
         p.traced.segments.insert(p.traced.segments.end(), footprint.segments.begin(), footprint.segments.end());
-        const Bounds3 box = PartsInside(reach_).of(footprint.segments);
+        const Bounds3 box = reachParts_.of(footprint.segments);
         for (int a = 0; a < 3; ++a) {  // padded, and rounded outwards to float
             r.lo[a] = box.empty() ? kInfF : std::nextafter(float(box.lo[a] - kBoxPad), -kInfF);
             r.hi[a] = box.empty() ? -kInfF : std::nextafter(float(box.hi[a] + kBoxPad), kInfF);
