@@ -455,6 +455,77 @@ TEST(PathFootprint, TheSegmentBoxFilterNeverMissesWhatTheSlabsMeet) {
     EXPECT_FALSE(SegmentBoxFilter(Bounds3()).mayMeet(seg({0, 0, 0}, {1, 1, 1})));       // empty
 }
 
+// A kept path's box (PartsInside): it holds every part of its segments inside the clip
+// box, as long double slabs clip them, and no more than their parts inside the clip box
+// widened by its micrometre. Segments inside, leaving (to the 1e6 m a ray with no end
+// keeps), passing through, missing, along an axis, in a face's plane, single points.
+TEST(PathFootprint, PartsInsideHoldEveryPartInsideTheClipBoxAndNoMore) {
+    using Real = long double;
+    const Bounds3 clip({-0.5, -0.5, -0.5}, {7.5, 5.5, 3.5});
+    const PartsInside parts(clip);
+    Rng rng(9);
+    auto point = [&](double r) { return Vec3(r * (2 * rng.uniform() - 1), r * (2 * rng.uniform() - 1), r * (2 * rng.uniform() - 1)); };
+    auto seg = [](Vec3 a, Vec3 b) { return Segment{{float(a.x), float(a.y), float(a.z)}, {float(b.x), float(b.y), float(b.z)}}; };
+    // The exact part of s inside clip widened by `pad`, extended into box.
+    auto reference = [&](const Segment& s, double pad, Bounds3& box) {
+        Real t0 = 0, t1 = 1;
+        for (int a = 0; a < 3; ++a) {
+            const Real from = s.from[a], d = Real(s.to[a]) - from, lo = Real(clip.lo[a]) - pad, hi = Real(clip.hi[a]) + pad;
+            if (d == 0) {
+                if (from < lo || from > hi) return;
+                continue;
+            }
+            Real enter = (lo - from) / d, leave = (hi - from) / d;
+            if (enter > leave) std::swap(enter, leave);
+            t0 = std::max(t0, enter), t1 = std::min(t1, leave);
+        }
+        if (t0 > t1) return;
+        for (Real t : {t0, t1}) {
+            Vec3 p;
+            for (int a = 0; a < 3; ++a) p[a] = double(s.from[a] + (Real(s.to[a]) - s.from[a]) * t);
+            box.extend(p);
+        }
+    };
+    const Vec3 centre = (clip.lo + clip.hi) * 0.5, lo = clip.lo;
+    int leaving = 0, empty = 0;
+    for (int i = 0; i < 20000; ++i) {
+        std::vector<Segment> segments;
+        for (int k = 0; k < 1 + i % 9; ++k) {
+            Vec3 p = centre + point(6), q = centre + point(6);
+            if (k % 3 == 1) q = p + point(1) * 1e6;        // escapes
+            if (k % 5 == 2) q = Vec3(p.x, p.y, p.z + 9);   // along an axis
+            if (k % 7 == 3) p.y = q.y = lo.y;              // in a face's plane
+            if (k % 11 == 4) q = p;                        // a point
+            if (i % 13 == 5) p = p + Vec3(30, 0, 0);        // far outside
+            segments.push_back(seg(p, q));
+        }
+        Bounds3 exact, widened;
+        for (const Segment& s : segments) {
+            reference(s, 0, exact);
+            reference(s, 1e-6, widened);
+            leaving += std::abs(s.to[0]) > 1e5 && !parts.of(std::span(&s, 1)).empty();
+        }
+        const Bounds3 got = parts.of(segments);
+        empty += exact.empty();
+        if (widened.empty()) {
+            EXPECT_TRUE(got.empty()) << "segment set " << i;
+            continue;
+        }
+        ASSERT_FALSE(got.empty()) << "segment set " << i;
+        for (int a = 0; a < 3; ++a) {  // long double against double: a few 1e-10 m
+            if (!exact.empty()) {
+                ASSERT_LE(got.lo[a], exact.lo[a] + 1e-9) << "set " << i << " axis " << a;
+                ASSERT_GE(got.hi[a], exact.hi[a] - 1e-9) << "set " << i << " axis " << a;
+            }
+            ASSERT_GE(got.lo[a], widened.lo[a] - 1e-9) << "set " << i << " axis " << a;
+            ASSERT_LE(got.hi[a], widened.hi[a] + 1e-9) << "set " << i << " axis " << a;
+        }
+    }
+    EXPECT_GT(leaving, 1000);
+    EXPECT_GT(empty, 100);
+    EXPECT_TRUE(parts.of({}).empty());
+}
+
 // The distance from x to triangle (a, b, c), exactly (the closest point by regions:
 // Ericson, "Real-Time Collision Detection", 5.1.5).
 double distanceToTriangle(const Vec3& x, const Vec3& a, const Vec3& b, const Vec3& c) {

@@ -1,6 +1,7 @@
 #include <luxplan/lightsamplers/path_cache.h>
 
 #include <algorithm>
+#include <bit>
 #include <limits>
 #include <map>
 
@@ -20,24 +21,14 @@ constexpr float kInfF = std::numeric_limits<float>::infinity();
 constexpr double kBoxPad = 1e-4;      // over the clipping's rounding (moved boxes carry kMargin)
 constexpr double kReachMargin = 0.5;  // m around the room's box: where moves happen (reach_)
 
-// `box` extended by the part of segment s inside `clip` (slabs, in double).
-void extendByPartInside(Bounds3& box, const Segment& s, const Bounds3& clip) {
-    const Vec3 from(s.from[0], s.from[1], s.from[2]), to(s.to[0], s.to[1], s.to[2]);
-    const Vec3 d = to - from;
-    double t0 = 0, t1 = 1;
-    for (int axis = 0; axis < 3; ++axis) {
-        if (d[axis] == 0) {
-            if (from[axis] < clip.lo[axis] || from[axis] > clip.hi[axis]) return;
-            continue;
-        }
-        double a = (clip.lo[axis] - from[axis]) / d[axis], b = (clip.hi[axis] - from[axis]) / d[axis];
-        if (a > b) std::swap(a, b);
-        t0 = std::max(t0, a), t1 = std::min(t1, b);
-        if (t0 > t1) return;
-    }
-    box.extend(t0 == 0 ? from : from + d * t0);
-    box.extend(t1 == 1 ? to : from + d * t1);
+// The next float below and above x (finite), as std::nextafter towards -inf and +inf
+// gives, without a call into the maths library.
+float floatBelow(float x) {
+    if (x == 0) return -std::numeric_limits<float>::denorm_min();
+    const uint32_t bits = std::bit_cast<uint32_t>(x);
+    return std::bit_cast<float>(x > 0 ? bits - 1 : bits + 1);
 }
+float floatAbove(float x) { return -floatBelow(-x); }
 
 // A cluster's triangles are tested one by one once a segment crosses its box, up to
 // this many (a larger cluster: its box alone decides).
@@ -117,34 +108,6 @@ void clusterParts(const TriangleMesh& mesh, std::vector<Bounds3>& out, std::vect
 }
 
 }  // namespace
-
-PathCache::PartsInside::PartsInside(const Bounds3& clip) : clip_(clip) {
-    for (int a = 0; a < 3; ++a) {  // rounded inwards, so that float compares as double does
-        lo_[a] = float(clip.lo[a]), hi_[a] = float(clip.hi[a]);
-        if (double(lo_[a]) < clip.lo[a]) lo_[a] = std::nextafter(lo_[a], kInfF);
-        if (double(hi_[a]) > clip.hi[a]) hi_[a] = std::nextafter(hi_[a], -kInfF);
-    }
-}
-
-Bounds3 PathCache::PartsInside::of(std::span<const Segment> segments) const {
-    auto inside = [&](const std::array<float, 3>& p) {
-        return p[0] >= lo_[0] && p[0] <= hi_[0] && p[1] >= lo_[1] && p[1] <= hi_[1] && p[2] >= lo_[2] && p[2] <= hi_[2];
-    };
-    std::array<float, 3> lo{kInfF, kInfF, kInfF}, hi{-kInfF, -kInfF, -kInfF};
-    Bounds3 clipped;
-    for (const Segment& s : segments) {
-        if (!inside(s.from) || !inside(s.to)) {
-            extendByPartInside(clipped, s, clip_);
-            continue;
-        }
-        for (int a = 0; a < 3; ++a) {
-            lo[a] = std::min(lo[a], std::min(s.from[a], s.to[a]));
-            hi[a] = std::max(hi[a], std::max(s.from[a], s.to[a]));
-        }
-    }
-    if (lo[0] <= hi[0]) clipped.extend(Bounds3(Vec3(lo[0], lo[1], lo[2]), Vec3(hi[0], hi[1], hi[2])));
-    return clipped;
-}
 
 PathCache::PathCache(const Scene& scene, size_t maxSegments) : scene_(scene), maxSegments_(maxSegments) {
     reach_ = Bounds3(Vec3(-kInf, -kInf, -kInf), Vec3(kInf, kInf, kInf));
@@ -309,8 +272,8 @@ void PathCache::keep(size_t work, int path, const PathContributions& contributio
         p.traced.segments.insert(p.traced.segments.end(), footprint.segments.begin(), footprint.segments.end());
         const Bounds3 box = reachParts_.of(footprint.segments);
         for (int a = 0; a < 3; ++a) {  // padded, and rounded outwards to float
-            r.lo[a] = box.empty() ? kInfF : std::nextafter(float(box.lo[a] - kBoxPad), -kInfF);
-            r.hi[a] = box.empty() ? -kInfF : std::nextafter(float(box.hi[a] + kBoxPad), kInfF);
+            r.lo[a] = box.empty() ? kInfF : floatBelow(float(box.lo[a] - kBoxPad));
+            r.hi[a] = box.empty() ? -kInfF : floatAbove(float(box.hi[a] + kBoxPad));
         }
         p.traced.tests.insert(p.traced.tests.end(), footprint.tests.begin(), footprint.tests.end());
     }

@@ -138,19 +138,6 @@ private:
     // Where moves happen: the room's box with a margin (rays to the sky leave it, and
     // their parts outside never meet a move inside), or everywhere without a room.
     Bounds3 reach_;
-    // The box of a path's segments' parts inside a clip box (a kept path's box). Most
-    // segments lie inside it, and their corners' floats are the box's: compared and
-    // gathered in float; a segment that leaves it is clipped in double.
-    class PartsInside {
-    public:
-        PartsInside() = default;
-        explicit PartsInside(const Bounds3& clip);
-        Bounds3 of(std::span<const Segment> segments) const;  // empty if no part is inside
-
-    private:
-        Bounds3 clip_;
-        std::array<float, 3> lo_{}, hi_{};  // clip_ rounded inwards to float
-    };
     PartsInside reachParts_;  // reach_'s
 
     // Committed state.

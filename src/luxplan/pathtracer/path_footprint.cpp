@@ -13,6 +13,31 @@ constexpr double kFar = 1e6;
 
 std::array<float, 3> toFloat(const Vec3& p) { return {float(p.x), float(p.y), float(p.z)}; }
 
+constexpr float kInfF = std::numeric_limits<float>::infinity();
+
+// `box` extended by the part of segment s inside `clip` (slabs, in double, without
+// branches). Along an axis where s does not move, the slab distances are infinite: no
+// limit inside the slab, an empty part outside it (and where s lies in a widened
+// slab's plane, outside `clip` itself, a NaN that leaves it empty or passes over).
+// Multiplying by a reciprocal can round an ulp away from dividing: the clip is widened
+// by far more, so no part inside is lost (the box only needs to hold them all).
+void extendByPartInside(Bounds3& box, const Segment& s, const Bounds3& clip) {
+    constexpr double kWiden = 1e-6;  // m
+    const Vec3 from(s.from[0], s.from[1], s.from[2]), to(s.to[0], s.to[1], s.to[2]);
+    const Vec3 d = to - from;
+    double t0 = 0, t1 = 1;
+    for (int axis = 0; axis < 3; ++axis) {
+        const double inverse = 1.0 / d[axis];
+        const double a = (clip.lo[axis] - kWiden - from[axis]) * inverse;
+        const double b = (clip.hi[axis] + kWiden - from[axis]) * inverse;
+        t0 = std::max(t0, a < b ? a : b);
+        t1 = std::min(t1, a < b ? b : a);
+    }
+    if (!(t0 <= t1)) return;
+    box.extend(t0 == 0 ? from : from + d * t0);
+    box.extend(t1 == 1 ? to : from + d * t1);
+}
+
 }  // namespace
 
 void PathFootprint::add(const Vec3& p, const Vec3& d, double tMin, double tEnd) {
@@ -148,6 +173,34 @@ bool PlacedBoxes::meets(const Segment& s, const SegmentProbe& probe) const {
             if (t.near(from, to, localMargin_)) return true;
     }
     return false;
+}
+
+PartsInside::PartsInside(const Bounds3& clip) : clip_(clip) {
+    for (int a = 0; a < 3; ++a) {  // rounded inwards, so that float compares as double does
+        lo_[a] = float(clip.lo[a]), hi_[a] = float(clip.hi[a]);
+        if (double(lo_[a]) < clip.lo[a]) lo_[a] = std::nextafter(lo_[a], kInfF);
+        if (double(hi_[a]) > clip.hi[a]) hi_[a] = std::nextafter(hi_[a], -kInfF);
+    }
+}
+
+Bounds3 PartsInside::of(std::span<const Segment> segments) const {
+    auto inside = [&](const std::array<float, 3>& p) {
+        return p[0] >= lo_[0] && p[0] <= hi_[0] && p[1] >= lo_[1] && p[1] <= hi_[1] && p[2] >= lo_[2] && p[2] <= hi_[2];
+    };
+    std::array<float, 3> lo{kInfF, kInfF, kInfF}, hi{-kInfF, -kInfF, -kInfF};
+    Bounds3 clipped;
+    for (const Segment& s : segments) {
+        if (!inside(s.from) || !inside(s.to)) {
+            extendByPartInside(clipped, s, clip_);
+            continue;
+        }
+        for (int a = 0; a < 3; ++a) {
+            lo[a] = std::min(lo[a], std::min(s.from[a], s.to[a]));
+            hi[a] = std::max(hi[a], std::max(s.from[a], s.to[a]));
+        }
+    }
+    if (lo[0] <= hi[0]) clipped.extend(Bounds3(Vec3(lo[0], lo[1], lo[2]), Vec3(hi[0], hi[1], hi[2])));
+    return clipped;
 }
 
 }  // namespace luxplan

@@ -99,6 +99,22 @@ private:
     double centre_[3] = {}, half_[3] = {-1, -1, -1};  // an empty box: nothing meets it
 };
 
+// The box of segments' parts inside a clip box (a kept path's box, clipped to where
+// moves happen). Most segments lie inside, and their corners' floats are the box's:
+// compared and gathered in float; a segment that leaves the clip box is clipped in
+// double. The box holds every part inside the clip box, and at most the parts inside
+// the clip box widened by a micrometre.
+class PartsInside {
+public:
+    PartsInside() = default;
+    explicit PartsInside(const Bounds3& clip);
+    Bounds3 of(std::span<const Segment> segments) const;  // empty if no part is inside
+
+private:
+    Bounds3 clip_;
+    std::array<float, 3> lo_{}, hi_{};  // clip_ rounded inwards to float
+};
+
 // A triangle prepared for "does a segment come within a margin of it?": its plane and
 // its edges' inward normals in that plane, so that the test is a few dot products.
 class TriangleProximity {
