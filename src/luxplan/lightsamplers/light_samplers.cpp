@@ -378,6 +378,29 @@ MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& op
     // items, so each runs its own rounds, all at once: none waits for the others' rounds.
     std::vector<int> traced(work.size(), 0);
     std::vector<char> needed(work.size(), 1), paused(work.size(), 0);
+    // Sampler k's result once its paths are all in: on the thread that traced them, while
+    // the other samplers still trace (a result's estimates and error take tens of
+    // microseconds, and done serially after the rounds they left a core idle).
+    MeasureResult result;
+    result.samplers.resize(samplers);
+    auto finish = [&](size_t k) {
+        SamplerResult& r = result.samplers[k];
+        for (size_t index = firstWork[k]; index < firstWork[k + 1]; ++index) {
+            r.droppedNonFinite += done[index].dropped;
+            r.pathsPerPoint = std::max(r.pathsPerPoint, traced[index]);
+        }
+        if (firstWork[k + 1] == firstWork[k]) return;
+        const ItemEstimates e = estimates(k);
+        for (int i = 0; i < e.items(); ++i) {
+            Estimate x = e.of(i);
+            r.points.push_back(x.value);
+            r.pointErrors.push_back(x.standardError);
+        }
+        Estimate value = placed[k]->combine(e);
+        r.value = value.value;
+        r.standardError = options.choiceError ? placed[k]->reportedError(e, value) : value.standardError;
+        if (const auto* glare = dynamic_cast<const PlacedGlare*>(placed[k].get())) r.glare = glare->survey(r.points);
+    };
     parallelFor(samplers, [&](size_t k) {
         const int batch = std::max(1, options.batchPaths);
         int to = !options.adaptive ? paths : std::min(paths, std::max(options.minPaths, batch));
@@ -425,34 +448,19 @@ MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& op
             }
             to = std::min(paths, std::max(to + batch, nextLook(spec, value, to, batch, zValue)));
         }
+        finish(k);
     });
 
-    // Reduce per sampler, in a fixed order.
-    MeasureResult result;
+    // Sums over the samplers, in a fixed order.
     if (cache) result.reusedPaths = cache->reused();
     result.cacheCheck.on = cache && options.checkCache;
     for (const WorkResult& w : done) result.cacheCheck.add(w.check);
-    result.samplers.resize(samplers);
     for (size_t k = 0; k < samplers; ++k) {
-        SamplerResult& r = result.samplers[k];
         for (size_t index = firstWork[k]; index < firstWork[k + 1]; ++index) {
-            r.droppedNonFinite += done[index].dropped;
             result.rays += done[index].stats;
-            r.pathsPerPoint = std::max(r.pathsPerPoint, traced[index]);
             result.paths += uint64_t(traced[index]);
         }
-        result.droppedNonFinite += r.droppedNonFinite;
-        if (firstWork[k + 1] == firstWork[k]) continue;
-        const ItemEstimates e = estimates(k);
-        for (int i = 0; i < e.items(); ++i) {
-            Estimate x = e.of(i);
-            r.points.push_back(x.value);
-            r.pointErrors.push_back(x.standardError);
-        }
-        Estimate value = placed[k]->combine(e);
-        r.value = value.value;
-        r.standardError = options.choiceError ? placed[k]->reportedError(e, value) : value.standardError;
-        if (const auto* glare = dynamic_cast<const PlacedGlare*>(placed[k].get())) r.glare = glare->survey(r.points);
+        result.droppedNonFinite += result.samplers[k].droppedNonFinite;
     }
     return result;
 }
