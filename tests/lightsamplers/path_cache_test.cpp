@@ -455,6 +455,36 @@ TEST(PathFootprint, TheSegmentBoxFilterNeverMissesWhatTheSlabsMeet) {
     EXPECT_FALSE(SegmentBoxFilter(Bounds3()).mayMeet(seg({0, 0, 0}, {1, 1, 1})));       // empty
 }
 
+// Up to 32 segments at once (two per vector): bit i answers for segment i as it would
+// alone, for every count (odd ones share their last pair with themselves), and no bit
+// at or above the count is set.
+TEST(PathFootprint, TheSegmentBoxFilterAnswersManySegmentsAsOneByOne) {
+    Rng rng(11);
+    auto point = [&](double r) { return Vec3(r * (2 * rng.uniform() - 1), r * (2 * rng.uniform() - 1), r * (2 * rng.uniform() - 1)); };
+    const SegmentBoxFilter filter(Bounds3({1, 1, 0}, {2.6, 1.8, 1.2}));
+    int mayMeet = 0;
+    for (int trial = 0; trial < 2000; ++trial) {
+        std::array<Segment, 32> segments;
+        for (Segment& s : segments) {
+            const Vec3 p = Vec3(2, 1.5, 0.5) + point(3), q = trial % 5 == 0 ? p + point(1) * 1e6 : Vec3(2, 1.5, 0.5) + point(3);
+            s = {{float(p.x), float(p.y), float(p.z)}, {float(q.x), float(q.y), float(q.z)}};
+        }
+        const uint32_t n = 1 + uint32_t(trial % 32);
+        const uint32_t mask = filter.mayMeet(segments.data(), n);
+        for (uint32_t i = 0; i < 32; ++i) {
+            const bool bit = (mask >> i) & 1;
+            if (i >= n) {
+                ASSERT_FALSE(bit) << "trial " << trial << ": bit " << i << " of " << n << " segments";
+                continue;
+            }
+            ASSERT_EQ(bit, filter.mayMeet(segments[i])) << "trial " << trial << ", segment " << i << " of " << n;
+            mayMeet += bit;
+        }
+    }
+    EXPECT_GT(mayMeet, 2000);  // both answers are common
+    EXPECT_LT(mayMeet, 25000);
+}
+
 // A kept path's box (PartsInside): it holds every part of its segments inside the clip
 // box, as long double slabs clip them, and no more than their parts inside the clip box
 // widened by its micrometre. Segments inside, leaving (to the 1e6 m a ray with no end

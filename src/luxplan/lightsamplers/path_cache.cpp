@@ -187,21 +187,25 @@ PathCache::Verdict PathCache::check(size_t work, const Record& r, const Paths& i
     uint32_t test = 0;  // the first test whose segment is at or after the current one
     thread_local std::vector<const OcclusionTest*> again;
     again.clear();
-    for (uint32_t index = 0; index < r.segmentCount; ++index) {
-        const Segment& s = segments[index];
-        if (!movedFilter_.mayMeet(s)) continue;
-        const SegmentProbe probe(s);
-        bool meets = false;
-        for (const PlacedBoxes& b : moved_)
-            if (b.meets(s, probe)) {
-                meets = true;
-                break;
-            }
-        if (!meets) continue;
-        if (!requery) return Verdict::Changed;
-        while (test < r.testCount && tests[test].segment < index) ++test;
-        if (test == r.testCount || tests[test].segment != index) return Verdict::Changed;
-        again.push_back(&tests[test]);
+    for (uint32_t first = 0; first < r.segmentCount; first += 32) {
+        // The segments that may meet the move, 32 at a time, in order.
+        for (uint32_t may = movedFilter_.mayMeet(segments + first, std::min(32u, r.segmentCount - first)); may != 0;
+             may &= may - 1) {
+            const uint32_t index = first + uint32_t(std::countr_zero(may));
+            const Segment& s = segments[index];
+            const SegmentProbe probe(s);
+            bool meets = false;
+            for (const PlacedBoxes& b : moved_)
+                if (b.meets(s, probe)) {
+                    meets = true;
+                    break;
+                }
+            if (!meets) continue;
+            if (!requery) return Verdict::Changed;
+            while (test < r.testCount && tests[test].segment < index) ++test;
+            if (test == r.testCount || tests[test].segment != index) return Verdict::Changed;
+            again.push_back(&tests[test]);
+        }
     }
     for (const OcclusionTest* t : again) {
         const Ray ray{Vec3(t->origin[0], t->origin[1], t->origin[2]), Vec3(t->direction[0], t->direction[1], t->direction[2]),

@@ -100,6 +100,35 @@ SegmentBoxFilter::SegmentBoxFilter(const Bounds3& box) {
     }
 }
 
+uint32_t SegmentBoxFilter::mayMeet(const Segment* segments, uint32_t n) const {
+    // Two segments in the two lanes of a vector of doubles (GCC's vector extensions:
+    // SSE2, which every x86-64 has); an odd last one shares the pair with itself. The
+    // same arithmetic as one segment at a time, so the same answers, in half the time.
+    using Pair = double __attribute__((vector_size(16)));
+    using PairMask = long long __attribute__((vector_size(16)));
+    auto abs = [](Pair x) { return Pair(PairMask(x) & ~PairMask(Pair{-0.0, -0.0})); };
+    const Pair half = {0.5, 0.5};
+    uint32_t mask = 0;
+    for (uint32_t i = 0; i < n; i += 2) {
+        const Segment& s0 = segments[i];
+        const Segment& s1 = segments[std::min(i + 1, n - 1)];
+        Pair m[3], d[3], a[3];
+        for (int k = 0; k < 3; ++k) {
+            const Pair from = {double(s0.from[k]), double(s1.from[k])}, to = {double(s0.to[k]), double(s1.to[k])};
+            d[k] = half * (to - from);
+            m[k] = half * (to + from) - centre_[k];
+            a[k] = abs(d[k]);
+        }
+        const PairMask apart = (abs(m[0]) > half_[0] + a[0]) | (abs(m[1]) > half_[1] + a[1]) |
+                               (abs(m[2]) > half_[2] + a[2]) |
+                               (abs(m[1] * d[2] - m[2] * d[1]) > half_[1] * a[2] + half_[2] * a[1]) |
+                               (abs(m[2] * d[0] - m[0] * d[2]) > half_[0] * a[2] + half_[2] * a[0]) |
+                               (abs(m[0] * d[1] - m[1] * d[0]) > half_[0] * a[1] + half_[1] * a[0]);
+        mask |= uint32_t(apart[0] == 0) << i | uint32_t(apart[1] == 0 && i + 1 < n) << (i + 1);
+    }
+    return mask;
+}
+
 TriangleProximity::TriangleProximity(const Vec3& a, const Vec3& b, const Vec3& c) {
     const Vec3 n = cross(b - a, c - a);
     const double area2 = length(n);

@@ -71,29 +71,16 @@ private:
 
 // A box for the first, cheap test of many segments against it: no divisions and no
 // branch per axis (the separating axis theorem: the box's three axes and their cross
-// products with the segment). Padded for rounding, so that it never says "apart" of a
-// segment that SegmentProbe says meets the box; it may say "may meet" of one a
-// micrometre outside.
+// products with the segment), two segments at a time. Padded for rounding, so that it
+// never says "apart" of a segment that SegmentProbe says meets the box; it may say
+// "may meet" of one a micrometre outside.
 class SegmentBoxFilter {
 public:
     SegmentBoxFilter() = default;
     explicit SegmentBoxFilter(const Bounds3& box);
-    bool mayMeet(const Segment& s) const {
-        double m[3], d[3], a[3];
-        for (int k = 0; k < 3; ++k) {
-            d[k] = 0.5 * (double(s.to[k]) - double(s.from[k]));
-            m[k] = 0.5 * (double(s.to[k]) + double(s.from[k])) - centre_[k];
-            a[k] = std::abs(d[k]);
-        }
-        // Evaluated whole, then combined: the outcome is unpredictable, and a branch
-        // each would cost more than the arithmetic.
-        const bool apart = (std::abs(m[0]) > half_[0] + a[0]) | (std::abs(m[1]) > half_[1] + a[1]) |
-                           (std::abs(m[2]) > half_[2] + a[2]) |
-                           (std::abs(m[1] * d[2] - m[2] * d[1]) > half_[1] * a[2] + half_[2] * a[1]) |
-                           (std::abs(m[2] * d[0] - m[0] * d[2]) > half_[0] * a[2] + half_[2] * a[0]) |
-                           (std::abs(m[0] * d[1] - m[1] * d[0]) > half_[0] * a[1] + half_[1] * a[0]);
-        return !apart;
-    }
+    // Bit i: segments[i] may meet the box (n <= 32).
+    uint32_t mayMeet(const Segment* segments, uint32_t n) const;
+    bool mayMeet(const Segment& s) const { return mayMeet(&s, 1) != 0; }
 
 private:
     double centre_[3] = {}, half_[3] = {-1, -1, -1};  // an empty box: nothing meets it
