@@ -22,6 +22,31 @@ PathTracedLighting::PathTracedLighting(const Scene& scene, const DaylightEnviron
     }
 }
 
+PathTracedLighting::~PathTracedLighting() noexcept {
+    try {
+        settleCache();
+    } catch (...) {  // an error of the cache's update, with no caller left to report it to
+    }
+}
+
+void PathTracedLighting::commit() {
+    settleCache();
+    cacheUpdate_.run([this] { cache_.commit(); });
+    cacheUpdating_ = true;
+}
+
+void PathTracedLighting::revert() {
+    settleCache();
+    cacheUpdate_.run([this] { cache_.discard(); });
+    cacheUpdating_ = true;
+}
+
+void PathTracedLighting::settleCache() {
+    if (!cacheUpdating_) return;
+    cacheUpdating_ = false;
+    cacheUpdate_.wait();
+}
+
 double PathTracedLighting::evaluate(const Layout& /*layout*/, const std::vector<Transform>& world, LightingBreakdown* out) {
     if (fresh_) {
         MeasureOptions fresh = options_;
@@ -49,6 +74,7 @@ double PathTracedLighting::measure(PathTracer& tracer, const std::vector<Transfo
     // The moved entities' vertices are rewritten and the top level rebuilt (EmbreeScene).
     for (size_t i = 0; i < world.size(); ++i) rt_.setEntityTransform(int(i), world[i]);
     rt_.commit();
+    settleCache();  // the cache reads the new layout (begin) and measureSamplers traces in it
     tracer.updateLayout();
     if (glareTracer) glareTracer->updateLayout();
     last_ = measureSamplers(tracer, options, cache, glareTracer);

@@ -2,6 +2,8 @@
 // light sampler, for the layout the chain proposes.
 #pragma once
 
+#include <tbb/task_group.h>
+
 #include <luxplan/lightsamplers/light_samplers.h>
 #include <luxplan/optimizer/lighting.h>
 
@@ -18,6 +20,7 @@ public:
     // report's error, and a survey's adaptive stops need them (measureSamplers).
     PathTracedLighting(const Scene& scene, const DaylightEnvironment* daylight, const MeasureOptions& options,
                        const PathTracerOptions& searchTracing = {}, const PathTracerOptions& reportTracing = {});
+    ~PathTracedLighting() noexcept override;  // tbb::task_group's may throw: waited for first
 
     double evaluate(const Layout& layout, const std::vector<Transform>& world, LightingBreakdown* out) override;
     // A fixed number of paths per point (setReportPaths; by default the search's), from
@@ -25,8 +28,11 @@ public:
     double measureIndependently(const Layout& layout, const std::vector<Transform>& world, LightingBreakdown* out,
                                 uint64_t seed) override;
     void setReportPaths(int pathsPerPoint) { reportPaths_ = pathsPerPoint; }
-    void commit() override { cache_.commit(); }
-    void revert() override { cache_.discard(); }
+    // The path cache takes in or drops the last evaluation's paths in the background:
+    // the next evaluation waits for it only once its own layout is in the ray tracer,
+    // whose rebuild runs on one thread, so that the two overlap.
+    void commit() override;
+    void revert() override;
     // Whether evaluations reuse the paths a move cannot change (on by default; the
     // numbers are the same either way, lightsamplers/path_cache.h).
     void setIncremental(bool on) { incremental_ = on; }
@@ -60,6 +66,9 @@ private:
     MeasureOptions options_;
     int reportPaths_ = 0;  // 0: options_.pathsPerPoint
     PathCache cache_;
+    tbb::task_group cacheUpdate_;  // commit() or revert() under way
+    bool cacheUpdating_ = false;
+    void settleCache();            // waits for it
     bool incremental_ = true;
     bool fresh_ = false;
     uint64_t freshDraws_ = 0;
