@@ -13,30 +13,14 @@ constexpr double kFar = 1e6;
 
 std::array<float, 3> toFloat(const Vec3& p) { return {float(p.x), float(p.y), float(p.z)}; }
 
-constexpr float kInfF = std::numeric_limits<float>::infinity();
-
-// `box` extended by the part of segment s inside `clip` (slabs, in double, without
-// branches). Along an axis where s does not move, the slab distances are infinite: no
-// limit inside the slab, an empty part outside it (and where s lies in a widened
-// slab's plane, outside `clip` itself, a NaN that leaves it empty or passes over).
-// Multiplying by a reciprocal can round an ulp away from dividing: the clip is widened
-// by far more, so no part inside is lost (the box only needs to hold them all).
-void extendByPartInside(Bounds3& box, const Segment& s, const Bounds3& clip) {
-    constexpr double kWiden = 1e-6;  // m
-    const Vec3 from(s.from[0], s.from[1], s.from[2]), to(s.to[0], s.to[1], s.to[2]);
-    const Vec3 d = to - from;
-    double t0 = 0, t1 = 1;
-    for (int axis = 0; axis < 3; ++axis) {
-        const double inverse = 1.0 / d[axis];
-        const double a = (clip.lo[axis] - kWiden - from[axis]) * inverse;
-        const double b = (clip.hi[axis] + kWiden - from[axis]) * inverse;
-        t0 = std::max(t0, a < b ? a : b);
-        t1 = std::min(t1, a < b ? b : a);
-    }
-    if (!(t0 <= t1)) return;
-    box.extend(t0 == 0 ? from : from + d * t0);
-    box.extend(t1 == 1 ? to : from + d * t1);
-}
+// Two doubles in one SSE2 register (GCC's vector extensions; every x86-64 has SSE2), for
+// tests of two segments at a time, and the lanes' comparisons (all bits set where true).
+using Pair = double __attribute__((vector_size(16)));
+using PairMask = long long __attribute__((vector_size(16)));
+Pair pair(double x) { return Pair{x, x}; }
+Pair absolute(Pair x) { return Pair(PairMask(x) & ~PairMask(pair(-0.0))); }
+// a where `take` is set, else b; bitwise, since `take ? a : b` becomes a branch per lane.
+Pair select(PairMask take, Pair a, Pair b) { return Pair((take & PairMask(a)) | (~take & PairMask(b))); }
 
 }  // namespace
 
@@ -101,13 +85,10 @@ SegmentBoxFilter::SegmentBoxFilter(const Bounds3& box) {
 }
 
 uint32_t SegmentBoxFilter::mayMeet(const Segment* segments, uint32_t n) const {
-    // Two segments in the two lanes of a vector of doubles (GCC's vector extensions:
-    // SSE2, which every x86-64 has); an odd last one shares the pair with itself. The
-    // same arithmetic as one segment at a time, so the same answers, in half the time.
-    using Pair = double __attribute__((vector_size(16)));
-    using PairMask = long long __attribute__((vector_size(16)));
-    auto abs = [](Pair x) { return Pair(PairMask(x) & ~PairMask(Pair{-0.0, -0.0})); };
-    const Pair half = {0.5, 0.5};
+    // Two segments in the two lanes of a Pair; an odd last one shares the pair with
+    // itself. The same arithmetic as one segment at a time, so the same answers, in half
+    // the time.
+    const Pair half = pair(0.5);
     uint32_t mask = 0;
     for (uint32_t i = 0; i < n; i += 2) {
         const Segment& s0 = segments[i];
@@ -117,13 +98,13 @@ uint32_t SegmentBoxFilter::mayMeet(const Segment* segments, uint32_t n) const {
             const Pair from = {double(s0.from[k]), double(s1.from[k])}, to = {double(s0.to[k]), double(s1.to[k])};
             d[k] = half * (to - from);
             m[k] = half * (to + from) - centre_[k];
-            a[k] = abs(d[k]);
+            a[k] = absolute(d[k]);
         }
-        const PairMask apart = (abs(m[0]) > half_[0] + a[0]) | (abs(m[1]) > half_[1] + a[1]) |
-                               (abs(m[2]) > half_[2] + a[2]) |
-                               (abs(m[1] * d[2] - m[2] * d[1]) > half_[1] * a[2] + half_[2] * a[1]) |
-                               (abs(m[2] * d[0] - m[0] * d[2]) > half_[0] * a[2] + half_[2] * a[0]) |
-                               (abs(m[0] * d[1] - m[1] * d[0]) > half_[0] * a[1] + half_[1] * a[0]);
+        const PairMask apart = (absolute(m[0]) > half_[0] + a[0]) | (absolute(m[1]) > half_[1] + a[1]) |
+                               (absolute(m[2]) > half_[2] + a[2]) |
+                               (absolute(m[1] * d[2] - m[2] * d[1]) > half_[1] * a[2] + half_[2] * a[1]) |
+                               (absolute(m[2] * d[0] - m[0] * d[2]) > half_[0] * a[2] + half_[2] * a[0]) |
+                               (absolute(m[0] * d[1] - m[1] * d[0]) > half_[0] * a[1] + half_[1] * a[0]);
         mask |= uint32_t(apart[0] == 0) << i | uint32_t(apart[1] == 0 && i + 1 < n) << (i + 1);
     }
     return mask;
@@ -204,32 +185,49 @@ bool PlacedBoxes::meets(const Segment& s, const SegmentProbe& probe) const {
     return false;
 }
 
-PartsInside::PartsInside(const Bounds3& clip) : clip_(clip) {
-    for (int a = 0; a < 3; ++a) {  // rounded inwards, so that float compares as double does
-        lo_[a] = float(clip.lo[a]), hi_[a] = float(clip.hi[a]);
-        if (double(lo_[a]) < clip.lo[a]) lo_[a] = std::nextafter(lo_[a], kInfF);
-        if (double(hi_[a]) > clip.hi[a]) hi_[a] = std::nextafter(hi_[a], -kInfF);
-    }
+PartsInside::PartsInside(const Bounds3& clip) {
+    for (int k = 0; k < 3; ++k) lo_[k] = clip.lo[k] - kWiden, hi_[k] = clip.hi[k] + kWiden;
 }
 
 Bounds3 PartsInside::of(std::span<const Segment> segments) const {
-    auto inside = [&](const std::array<float, 3>& p) {
-        return p[0] >= lo_[0] && p[0] <= hi_[0] && p[1] >= lo_[1] && p[1] <= hi_[1] && p[2] >= lo_[2] && p[2] <= hi_[2];
-    };
-    std::array<float, 3> lo{kInfF, kInfF, kInfF}, hi{-kInfF, -kInfF, -kInfF};
-    Bounds3 clipped;
-    for (const Segment& s : segments) {
-        if (!inside(s.from) || !inside(s.to)) {
-            extendByPartInside(clipped, s, clip_);
-            continue;
+    // Two segments in the two lanes of a Pair (as SegmentBoxFilter); an odd last one
+    // shares the pair with itself. Every segment is clipped, without branches:
+    // half of a path's segments leave the room (to the sky, through a window), and a
+    // branch on it would be a coin's toss. Along an axis where a segment does not move,
+    // the slab distances are infinite (no limit inside the slab, an empty part outside
+    // it; where it lies in a widened slab's plane, outside the clip box itself, a NaN
+    // that leaves it empty or passes over). Multiplying by a reciprocal can round an ulp
+    // away from dividing: the widening is far more, so no part inside is lost.
+    Pair lo[3] = {pair(kInf), pair(kInf), pair(kInf)}, hi[3] = {pair(-kInf), pair(-kInf), pair(-kInf)};
+    const size_t n = segments.size();
+    for (size_t i = 0; i < n; i += 2) {
+        const Segment& s0 = segments[i];
+        const Segment& s1 = segments[std::min(i + 1, n - 1)];
+        Pair from[3], d[3], t0 = pair(0), t1 = pair(1);
+        for (int k = 0; k < 3; ++k) {
+            from[k] = Pair{double(s0.from[k]), double(s1.from[k])};
+            d[k] = Pair{double(s0.to[k]), double(s1.to[k])} - from[k];
+            const Pair inverse = 1.0 / d[k];
+            const Pair a = (lo_[k] - from[k]) * inverse, b = (hi_[k] - from[k]) * inverse;
+            const PairMask ordered = a < b;
+            const Pair enter = select(ordered, a, b), leave = select(ordered, b, a);
+            t0 = select(t0 < enter, enter, t0);  // a NaN's comparisons are false: t0 stays
+            t1 = select(leave < t1, leave, t1);
         }
-        for (int a = 0; a < 3; ++a) {
-            lo[a] = std::min(lo[a], std::min(s.from[a], s.to[a]));
-            hi[a] = std::max(hi[a], std::max(s.from[a], s.to[a]));
+        const PairMask inside = t0 <= t1;
+        for (int k = 0; k < 3; ++k) {
+            const Pair p = from[k] + d[k] * t0, q = from[k] + d[k] * t1;
+            const PairMask ordered = p < q;
+            const Pair least = select(ordered, p, q), most = select(ordered, q, p);
+            lo[k] = select(inside & (least < lo[k]), least, lo[k]);
+            hi[k] = select(inside & (most > hi[k]), most, hi[k]);
         }
     }
-    if (lo[0] <= hi[0]) clipped.extend(Bounds3(Vec3(lo[0], lo[1], lo[2]), Vec3(hi[0], hi[1], hi[2])));
-    return clipped;
+    Bounds3 box;
+    for (int lane = 0; lane < 2; ++lane)
+        if (lo[0][lane] <= hi[0][lane])
+            box.extend(Bounds3(Vec3(lo[0][lane], lo[1][lane], lo[2][lane]), Vec3(hi[0][lane], hi[1][lane], hi[2][lane])));
+    return box;
 }
 
 }  // namespace luxplan

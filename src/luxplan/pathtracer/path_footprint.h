@@ -87,9 +87,7 @@ private:
 };
 
 // The box of segments' parts inside a clip box (a kept path's box, clipped to where
-// moves happen). Most segments lie inside, and their corners' floats are the box's:
-// compared and gathered in float; a segment that leaves the clip box is clipped in
-// double. The box holds every part inside the clip box, and at most the parts inside
+// moves happen). It holds every part inside the clip box, and at most the parts inside
 // the clip box widened by a micrometre.
 class PartsInside {
 public:
@@ -98,8 +96,8 @@ public:
     Bounds3 of(std::span<const Segment> segments) const;  // empty if no part is inside
 
 private:
-    Bounds3 clip_;
-    std::array<float, 3> lo_{}, hi_{};  // clip_ rounded inwards to float
+    static constexpr double kWiden = 1e-6;  // m: over the clipping's rounding
+    double lo_[3] = {}, hi_[3] = {-1, -1, -1};  // the clip box, widened
 };
 
 // A triangle prepared for "does a segment come within a margin of it?": its plane and
