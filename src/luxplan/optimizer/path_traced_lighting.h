@@ -58,6 +58,7 @@ public:
 private:
     double measure(PathTracer& tracer, const std::vector<Transform>& world, const MeasureOptions& options,
                    PathCache* cache, LightingBreakdown* out, PathTracer* glareTracer = nullptr);
+    void settleCache();  // waits for the cache's commit() or revert() under way
 
     const Scene& scene_;
     EmbreeScene rt_;
@@ -68,7 +69,6 @@ private:
     PathCache cache_;
     tbb::task_group cacheUpdate_;  // commit() or revert() under way
     bool cacheUpdating_ = false;
-    void settleCache();            // waits for it
     bool incremental_ = true;
     bool fresh_ = false;
     uint64_t freshDraws_ = 0;
