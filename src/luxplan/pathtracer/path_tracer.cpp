@@ -435,12 +435,21 @@ double PathTracer::sample(const Sensor& sensor, PathSamples& samples, RayStats& 
                 const Vec3 f = evalCos(v, s.wi);
                 if (maxComponent(f) <= 0) return;
                 const Vec3 from = spawn(v, s.wi);
-                ++stats.closest;
                 const unsigned blockers = kOpaqueMask | kEmitterMask;
-                const std::optional<Hit> z = rt_.intersect({from, s.wi, 0, kInf, blockers, seeThrough});
+                // Most of these samples are blocked inside the room (by furniture), where
+                // what blocks them does not matter: an any-hit query up to the room's
+                // walls says so, and a move across that part of the ray changes the path
+                // only if it changes that answer (the path cache asks it again).
+                const double inside = sky_.inRoomUntil(from, s.wi);
+                ++stats.shadow;
+                const bool blocked = rt_.occluded({from, s.wi, 0, inside, blockers});
+                if (stats.footprint) stats.footprint->addOcclusion(from, s.wi, 0, inside, blockers, blocked);
+                if (blocked) return;
+                ++stats.closest;
+                const std::optional<Hit> z = rt_.intersect({from, s.wi, inside, kInf, blockers, seeThrough});
                 if (stats.footprint) {
-                    if (z) stats.footprint->add(from, s.wi, 0, z->t);
-                    else stats.footprint->addOcclusion(from, s.wi, 0, kInf, blockers, false);
+                    if (z) stats.footprint->add(from, s.wi, inside, z->t);
+                    else stats.footprint->addOcclusion(from, s.wi, inside, kInf, blockers, false);
                 }
                 Vec3 contribution;
                 int creditDepth = depth;

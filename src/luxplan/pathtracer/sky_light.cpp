@@ -17,6 +17,7 @@ SkyLight::SkyLight(const Scene& scene, const DaylightEnvironment* daylight, bool
         // Hit points on the shell lie on the box boundary, half of them a float ulp
         // outside: a millimetre of slack keeps them on the portal side.
         room_ = Bounds3(room->box.lo - Vec3(1e-3, 1e-3, 1e-3), room->box.hi + Vec3(1e-3, 1e-3, 1e-3));
+        roomForRays_ = Bounds3(room->box.lo - Vec3(5e-4, 5e-4, 5e-4), room->box.hi + Vec3(5e-4, 5e-4, 5e-4));
         for (const Opening& o : room->openings) {
             // An opening closed by an opaque panel (a door, a shutter) lets no sky in, and
             // a translucent one no sky seen straight through it (its light reaches the room
@@ -80,6 +81,16 @@ void SkyLight::compute(const Vec3& p, View& view, bool buildAll) const {
             }
         }
     }
+}
+
+double SkyLight::inRoomUntil(const Vec3& p, const Vec3& w) const {
+    if (!hasRoom_) return 0;
+    double until = kInf;
+    for (int a = 0; a < 3; ++a) {
+        if (w[a] > 0) until = std::min(until, (roomForRays_.hi[a] - p[a]) / w[a]);
+        else if (w[a] < 0) until = std::min(until, (roomForRays_.lo[a] - p[a]) / w[a]);
+    }
+    return std::max(0.0, until);
 }
 
 bool SkyLight::seenBy(const View& view, const Sensor& sensor) const {

@@ -52,6 +52,10 @@ public:
     // Whether p is in the room, a millimetre of slack around its box (where a view is
     // active); false without a room.
     bool inRoom(const Vec3& p) const { return hasRoom_ && room_.contains(p); }
+    // How far the ray p + t w, from a point inside the room, stays inside it: every
+    // point before that distance is inRoom() (it is measured to half the slack, so
+    // that the hits Embree places there in float are too); 0 without a room.
+    double inRoomUntil(const Vec3& p, const Vec3& w) const;
     // The openings as seen from a path's first vertex: cached per thread, since every
     // path of a sampler point starts at the same place. The view stays valid until the
     // thread's next call.
@@ -80,6 +84,7 @@ private:
     };
     std::vector<Portal> openings_;
     Bounds3 room_;
+    Bounds3 roomForRays_;  // the box with half of room_'s slack (inRoomUntil)
     bool hasRoom_ = false;
     uint64_t id_ = 0;  // unique per light, keys the per-thread view cache
 };
