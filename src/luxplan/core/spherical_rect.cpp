@@ -1,5 +1,7 @@
 #include <luxplan/core/spherical_rect.h>
 
+#include <luxplan/core/sin_cos.h>
+
 namespace luxplan {
 
 double Rect3::intersect(const Vec3& p, const Vec3& w) const {
@@ -40,7 +42,8 @@ SphericalRect::SphericalRect(const Rect3& rect, const Vec3& origin) : origin_(or
 Vec3 SphericalRect::sample(Vec2 u) const {
     // Pick the x coordinate so that the solid angle left of it is u.x * S ...
     double au = u.x * solidAngle_ + k_;
-    double fu = (std::cos(au) * b0_ - b1_) / std::sin(au);
+    const SinCos a = sinCos(au);
+    double fu = (a.cos * b0_ - b1_) / a.sin;
     double cu = std::clamp(std::copysign(1.0, fu) / std::sqrt(fu * fu + b0_ * b0_), -1.0, 1.0);
     double xu = std::clamp(-(cu * z0_) / std::sqrt(std::max(1e-300, 1 - cu * cu)), x0_, x1_);
     // ... then y uniformly in the projected height of that column.

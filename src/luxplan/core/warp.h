@@ -3,6 +3,7 @@
 #pragma once
 
 #include <luxplan/core/math.h>
+#include <luxplan/core/sin_cos.h>
 
 namespace luxplan {
 
@@ -13,7 +14,8 @@ inline Vec2 sampleUniformDiskConcentric(Vec2 u) {
     double r, theta;
     if (std::abs(a) > std::abs(b)) { r = a; theta = (kPi / 4) * (b / a); }
     else { r = b; theta = kPi / 2 - (kPi / 4) * (a / b); }
-    return {r * std::cos(theta), r * std::sin(theta)};
+    const SinCos t = sinCos(theta);
+    return {r * t.cos, r * t.sin};
 }
 
 // Cosine-weighted hemisphere about +z; pdf = cos(theta) / pi.
@@ -26,7 +28,8 @@ inline double cosineHemispherePdf(double cosTheta) { return cosTheta > 0 ? cosTh
 
 inline Vec3 sampleUniformHemisphere(Vec2 u) {
     double z = u.x, r = std::sqrt(std::max(0.0, 1 - z * z)), phi = 2 * kPi * u.y;
-    return {r * std::cos(phi), r * std::sin(phi), z};
+    const SinCos t = sinCos(phi);
+    return {r * t.cos, r * t.sin, z};
 }
 inline constexpr double uniformHemispherePdf() { return 1 / (2 * kPi); }
 
@@ -42,7 +45,8 @@ inline Vec3 equalAreaHemisphere(Vec2 u) {
 
 inline Vec3 sampleUniformSphere(Vec2 u) {
     double z = 1 - 2 * u.x, r = std::sqrt(std::max(0.0, 1 - z * z)), phi = 2 * kPi * u.y;
-    return {r * std::cos(phi), r * std::sin(phi), z};
+    const SinCos t = sinCos(phi);
+    return {r * t.cos, r * t.sin, z};
 }
 inline constexpr double uniformSpherePdf() { return 1 / (4 * kPi); }
 
@@ -51,7 +55,8 @@ inline Vec3 sampleUniformCone(Vec2 u, double cosThetaMax) {
     double cosTheta = (1 - u.x) + u.x * cosThetaMax;
     double sinTheta = std::sqrt(std::max(0.0, 1 - cosTheta * cosTheta));
     double phi = 2 * kPi * u.y;
-    return {sinTheta * std::cos(phi), sinTheta * std::sin(phi), cosTheta};
+    const SinCos t = sinCos(phi);
+    return {sinTheta * t.cos, sinTheta * t.sin, cosTheta};
 }
 inline double uniformConePdf(double cosThetaMax) { return 1 / (2 * kPi * (1 - cosThetaMax)); }
 

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include <luxplan/core/sin_cos.h>
 #include <luxplan/core/warp.h>
 #include <luxplan/daylight/preetham.h>
 
@@ -57,7 +58,8 @@ Vec3 SkyMap::direction(int ix, int iy, double fx, double fz) const {
     const double phi = 2 * kPi * (ix + fx) / width_;
     const double z = cosEdges_[size_t(iy)] + fz * (cosEdges_[size_t(iy) + 1] - cosEdges_[size_t(iy)]);
     const double r = std::sqrt(std::max(0.0, 1 - z * z));
-    return {r * std::cos(phi), r * std::sin(phi), z};
+    const SinCos t = sinCos(phi);
+    return {r * t.cos, r * t.sin, z};
 }
 
 DaylightEnvironment::DaylightEnvironment(SkyMap sky, std::vector<SunDisk> suns, double groundReflectance)
@@ -209,7 +211,8 @@ EnvironmentSample DaylightEnvironment::sampleSky(Vec2 u) const {
     Distribution2D::Sample d = skyDistribution_.sample(u);
     const double phi = d.p.x, z = std::clamp(-d.p.y, -1.0, 1.0);
     const double r = std::sqrt(std::max(0.0, 1 - z * z));
-    s.wi = {r * std::cos(phi), r * std::sin(phi), z};
+    const SinCos t = sinCos(phi);
+    s.wi = {r * t.cos, r * t.sin, z};
     // Evaluate through the same pixel lookup as Le()/skyPdf() so that all three agree.
     int ix, iy;
     map_.pixelOf(s.wi, ix, iy);

@@ -4,6 +4,8 @@
 #include <stdexcept>
 #include <utility>
 
+#include <luxplan/core/sin_cos.h>
+
 namespace luxplan {
 namespace {
 
@@ -174,7 +176,8 @@ void IntensityDistribution::buildSampling() {
 IntensityDistribution::DirectionSample IntensityDistribution::sample(Vec2 u) const {
     auto s = sampling_.sample(u);
     double cosG = std::clamp(1 - s.p.y, -1.0, 1.0), sinG = std::sqrt(std::max(0.0, 1 - cosG * cosG));
-    return {Vec3(sinG * std::cos(s.p.x), sinG * std::sin(s.p.x), cosG), s.pdf};
+    const SinCos t = sinCos(s.p.x);
+    return {Vec3(sinG * t.cos, sinG * t.sin, cosG), s.pdf};
 }
 
 double IntensityDistribution::pdf(const Vec3& local) const {

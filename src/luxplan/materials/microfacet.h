@@ -3,6 +3,7 @@
 #pragma once
 
 #include <luxplan/core/math.h>
+#include <luxplan/core/sin_cos.h>
 
 namespace luxplan {
 
@@ -53,7 +54,8 @@ inline Vec3 sampleGgxVisibleNormal(const Vec3& wo, double alpha, Vec2 u) {
     Vec3 t2 = cross(vh, t1);
     // Uniform point on the disk, squeezed onto the visible half of the projected hemisphere.
     double r = std::sqrt(u.x), phi = 2 * kPi * u.y;
-    double p1 = r * std::cos(phi), p2 = r * std::sin(phi);
+    const SinCos t = sinCos(phi);
+    double p1 = r * t.cos, p2 = r * t.sin;
     double s = 0.5 * (1 + vh.z);
     p2 = (1 - s) * std::sqrt(std::max(0.0, 1 - p1 * p1)) + s * p2;
     Vec3 nh = t1 * p1 + t2 * p2 + vh * std::sqrt(std::max(0.0, 1 - p1 * p1 - p2 * p2));
