@@ -432,24 +432,21 @@ std::optional<Hit> EmbreeScene::intersect(const Ray& r) const {
     // world for flat geometry.
     Vec3 ng(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z);
     if (!info.mesh && &sub == &flat_) world = nullptr;
-    bool smooth = false;  // vertex normals: a shading normal of its own
     if (info.mesh) {
         const TriangleFace& face = (*info.faces)[rh.hit.primID];
         ng = face.normal;  // exact, in double
         hit.material = face.material;
+        Vec3 ns = ng;
         if (info.mesh->normals.size() == info.mesh->positions.size()) {
-            smooth = true;
             const auto& tri = info.mesh->triangles[rh.hit.primID];
             double u = rh.hit.u, v = rh.hit.v;
-            const Vec3 ns = normalize(info.mesh->normals[tri[0]] * (1 - u - v) + info.mesh->normals[tri[1]] * u +
-                                      info.mesh->normals[tri[2]] * v);
-            hit.shadingNormal = world ? normalize(world->applyVector(ns)) : ns;
+            ns = normalize(info.mesh->normals[tri[0]] * (1 - u - v) + info.mesh->normals[tri[1]] * u +
+                           info.mesh->normals[tri[2]] * v);
         }
+        hit.shadingNormal = world ? normalize(world->applyVector(ns)) : ns;
     }
     hit.geometricNormal = normalize(world ? world->applyVector(ng) : ng);
-    // A flat face shades with its geometric normal, normalized once; static geometry
-    // with the face's own normal as stored.
-    if (!smooth) hit.shadingNormal = info.mesh && !world ? ng : hit.geometricNormal;
+    if (!info.mesh) hit.shadingNormal = hit.geometricNormal;
     return hit;
 }
 
