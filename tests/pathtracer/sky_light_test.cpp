@@ -171,5 +171,46 @@ TEST(SkyLight, ASensorSkipsTheSkyOnlyWhereNoPortalSampleWouldBeSeen) {
     EXPECT_GT(drawn, 50);
 }
 
+// The part of a ray inside the room, which the path tracer tests with an any-hit query
+// before following an exterior sky sample: it ends at the room's box (half a millimetre
+// wider), every point before its end is in the room, and the portal sample's point on
+// its opening lies just past it.
+TEST(SkyLight, AllOfARayBeforeItLeavesTheRoomIsInIt) {
+    const Scene scene = roomWithThreeOpenings();
+    const DaylightEnvironment daylight = buildDaylight(*scene.daylight, scene.site);
+    const SkyLight sky(scene, &daylight, true);
+    const Bounds3 box({0, 0, 0}, {4, 5, 3});
+    Rng rng(29);
+    for (int trial = 0; trial < 2000; ++trial) {
+        const Vec3 p(4 * rng.uniform(), 5 * rng.uniform(), 3 * rng.uniform());
+        const Vec3 w = sampleUniformSphere({rng.uniform(), rng.uniform()});
+        const double until = sky.inRoomUntil(p, w);
+        // The exit from the box, by its slabs, plus the half millimetre along w.
+        double exit = kInf, across = 0;  // across: w's component through the face it leaves by
+        for (int a = 0; a < 3; ++a) {
+            const double t = w[a] == 0 ? kInf : ((w[a] > 0 ? box.hi[a] : box.lo[a]) - p[a]) / w[a];
+            if (t < exit) exit = t, across = std::abs(w[a]);
+        }
+        ASSERT_GE(until, exit) << trial;
+        ASSERT_LE(until, exit + 5e-4 / across + 1e-12) << trial;
+        for (double f : {0.0, 0.5, 1.0}) ASSERT_TRUE(sky.inRoom(p + w * (until * f))) << trial;
+        ASSERT_FALSE(sky.inRoom(p + w * (until + 2e-3 / across))) << trial;
+    }
+    // A portal sample through the south window crosses the wall's plane within the slack.
+    const SkyLight::View& view = sky.viewFromSensor({2, 2.5, 1.5});
+    for (int k = 0; k < 200; ++k) {
+        const EnvironmentSample s = sky.sample(view, {2, 2.5, 1.5}, {rng.uniform(), rng.uniform()});
+        if (!(s.pdf > 0)) continue;
+        const double until = sky.inRoomUntil({2, 2.5, 1.5}, s.wi);
+        const Vec3 end = Vec3(2, 2.5, 1.5) + s.wi * until;
+        const bool onAWall = end.x < 1e-3 || end.x > 4 - 1e-3 || end.y < 1e-3 || end.y > 5 - 1e-3 || end.z > 3 - 1e-3;
+        EXPECT_TRUE(onAWall) << k;
+    }
+    // No room: nothing of a ray is inside.
+    const Scene open = SceneBuilder().material("grey", test::diffuse(0.5)).uniformSky(1000).build();
+    const DaylightEnvironment openSky = buildDaylight(*open.daylight, open.site);
+    EXPECT_EQ(SkyLight(open, &openSky, true).inRoomUntil({0, 0, 0}, {0, 0, 1}), 0);
+}
+
 }  // namespace
 }  // namespace luxplan
