@@ -32,6 +32,11 @@ TEST(Trig, SinCosMatchesLibm) {
     for (double x : {0.0, -0.0, 1e-300, -1e-300, 1e-8, -1e-8, 1e3, -1e3, 12345.678}) expectMatchesLibm(x);
     EXPECT_EQ(sinCos(0.0).sin, 0.0);
     EXPECT_EQ(sinCos(0.0).cos, 1.0);
+    // Not a number in, not a number out (as libm's), for NaN and the infinities.
+    for (double x : {std::nan(""), kInf, -kInf}) {
+        EXPECT_TRUE(std::isnan(sinCos(x).sin)) << x;
+        EXPECT_TRUE(std::isnan(sinCos(x).cos)) << x;
+    }
 }
 
 TEST(Trig, SinCosQuadrantsAndSigns) {

@@ -46,16 +46,19 @@ inline double cosNear(double r) {
 }
 }  // namespace sin_cos_detail
 
-// For |x| below about 10^5 (exact quadrant reduction); the samplers' angles lie in a few turns.
+// For |x| below about 10^6 (an exact reduction); the samplers' angles lie in a few turns.
 inline SinCos sinCos(double x) {
     using namespace sin_cos_detail;
-    // Rounded to the nearest integer by the addition (|x| * 2 / pi < 2^51).
-    const double q = (x * (2 / kPi) + 0x1.8p52) - 0x1.8p52;
+    // Rounded to the nearest integer by the addition (|x| * 2 / pi < 2^51), whose low
+    // mantissa bits are then q's in two's complement: no conversion to an integer,
+    // which a NaN would make undefined (a NaN in gives NaNs out).
+    const double shifted = x * (2 / kPi) + 0x1.8p52;
+    const double q = shifted - 0x1.8p52;
     const double r = ((x - q * kHalfPiHi) - q * kHalfPiMid) - q * kHalfPiLo;
     const double s = sinNear(r), c = cosNear(r);
     // Quadrant n: (s, c), (c, -s), (-s, -c), (-c, s); by selects and sign bits, since
     // the quadrant of a random angle is a coin the branch predictor cannot call.
-    const uint64_t n = uint64_t(int64_t(q));
+    const uint64_t n = std::bit_cast<uint64_t>(shifted);
     const uint64_t sSign = (n & 2) << 62, cSign = ((n + 1) & 2) << 62;
     const bool swap = n & 1;
     return {std::bit_cast<double>(std::bit_cast<uint64_t>(swap ? c : s) ^ sSign),
