@@ -50,8 +50,9 @@ struct alignas(64) WorkResult {  // a cache line of its own: two threads trace n
 
 // The work items' results of one measurement, kept on each thread for the next: a search
 // measures thousands of layouts, and the office's 144 work items hold 1152 fold vectors,
-// whose allocation and release ran on one thread before and after the rounds (2% of the
-// search's time). A measurement inside another on the same thread gets its own.
+// whose allocation and release ran on one thread before and after the rounds, the other
+// core waiting (1% of the search's profile). A measurement inside another on the same
+// thread gets its own.
 class WorkResults {
 public:
     WorkResults() : mine_(!kept().taken) {
@@ -283,7 +284,7 @@ MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& op
         const bool folds = sampler.independentFolds();
         // Each thread's buffers (this and the footprint below) keep their memory from one
         // call to the next: a measurement makes thousands of these calls, each a few paths
-        // long, and their allocations were 2% of the search's time. No call nests in
+        // long, and their allocations showed in the search's profile. No call nests in
         // another on the same thread (a path's tracing waits on no task).
         thread_local std::vector<PathSamples::Sequence> sequences;
         sequences.clear();
