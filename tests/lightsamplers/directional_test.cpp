@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <stdexcept>
 #include <utility>
@@ -336,6 +337,47 @@ TEST(ItemEstimates, HeldOutFoldMatchesTheOtherFoldsMergedFromScratch) {
             EXPECT_NEAR(e.of(i).value, mean, 1e-12 * mean) << "item " << i << ", pass " << pass;
             EXPECT_NEAR(e.of(i).standardError, std::sqrt(variance), 1e-9 * std::sqrt(variance));
         }
+}
+
+// A look refills only the cells of the sources its round traced and says so
+// (ItemEstimates::changed): every estimate, kept or computed afresh, must then equal a
+// fresh object's with the same cells, bit for bit, over rounds that refill some sources.
+TEST(ItemEstimates, RefilledSourcesEqualAFreshObject) {
+    const int items = 4, sources = 4;
+    Rng rng(9);
+    std::vector<MeanEstimator> truth(size_t(items) * sources * ItemEstimates::kFolds);
+    auto at = [&](int i, int s, int g) -> MeanEstimator& { return truth[(size_t(i) * sources + s) * ItemEstimates::kFolds + g]; };
+    ItemEstimates kept(items, sources);
+    auto refill = [&](int s) {
+        for (int i = 0; i < items; ++i) {
+            for (int g = 0; g < ItemEstimates::kFolds; ++g) {
+                for (int k = 0, n = int(4 * rng.uniform()); k < n; ++k) at(i, s, g).add(rng.uniform() < 0.5 ? 0 : 50 * rng.uniform());
+                kept.cell(i, s, g) = at(i, s, g);
+            }
+            kept.changed(i, s);
+        }
+    };
+    auto same = [](const Estimate& a, const Estimate& b) {
+        return std::bit_cast<uint64_t>(a.value) == std::bit_cast<uint64_t>(b.value) &&
+               std::bit_cast<uint64_t>(a.standardError) == std::bit_cast<uint64_t>(b.standardError);
+    };
+    for (int s = 0; s < sources; ++s) refill(s);
+    for (int round = 0; round < 12; ++round) {
+        ItemEstimates fresh(items, sources);
+        for (int i = 0; i < items; ++i)
+            for (int s = 0; s < sources; ++s)
+                for (int g = 0; g < ItemEstimates::kFolds; ++g) fresh.cell(i, s, g) = at(i, s, g);
+        for (int i = 0; i < items; ++i) {
+            EXPECT_TRUE(same(kept.of(i), fresh.of(i))) << "round " << round << ", item " << i;
+            for (int g = 0; g < ItemEstimates::kFolds; ++g) {
+                EXPECT_TRUE(same(kept.ofAllBut(i, g), fresh.ofAllBut(i, g))) << "round " << round << ", item " << i;
+                EXPECT_TRUE(same(kept.ofFold(i, g), fresh.ofFold(i, g))) << "round " << round << ", item " << i;
+            }
+        }
+        // Then one or two sources traced on, as a focused look does.
+        refill(int(rng.uniform() * sources));
+        if (round % 3 == 0) refill(int(rng.uniform() * sources));
+    }
 }
 
 // With unequal path counts per source, each source still weighs 1 / sources (a pooled

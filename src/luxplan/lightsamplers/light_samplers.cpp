@@ -124,6 +124,14 @@ Estimate ItemEstimates::ofFold(int item, int fold) const {
     return {mean / sources_, std::sqrt(variance) / sources_};
 }
 
+void ItemEstimates::changed(int item, int source) {
+    if (!allSet_.empty()) allSet_[size_t(item)] = 0;
+    if (totals_.empty()) return;
+    MeanEstimator& total = totals_[size_t(item) * sources_ + source];
+    total = MeanEstimator{};
+    for (int g = 0; g < kFolds; ++g) total.merge(cells_[index(item, source, g)]);  // as stratified() first does
+}
+
 uint64_t ItemEstimates::pathsInFold(int item, int fold) const {
     uint64_t n = 0;
     for (int source = 0; source < sources_; ++source) n += cells_[index(item, source, fold)].count();
@@ -399,24 +407,24 @@ MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& op
         }
     };
 
-    // Sampler k's item estimates from what its work items traced so far.
-    auto estimates = [&](size_t k) {
+    // Sampler k's item estimates: the cells of work item `source` (its own item, or every
+    // item of a sampler that shares paths) from what it traced so far.
+    auto fill = [&](ItemEstimates& e, size_t k, int source) {
         const PlacedSampler& sampler = *placed[k];
         const int n = sampler.items();
         const bool shares = sampler.sharesPaths();
-        ItemEstimates e(n, shares ? n : 1);
-        for (int source = 0; source < n; ++source) {
-            const WorkResult& w = done[firstWork[k] + size_t(source)];
-            for (int g = 0; g < kFolds; ++g)
-                for (int i = shares ? 0 : source; i < (shares ? n : source + 1); ++i) {
-                    // Paths that added nothing to an item count as zeros there.
-                    MeanEstimator& cell = e.cell(i, shares ? source : 0, g);
-                    cell = w.folds[g][shares ? size_t(i) : 0];
-                    cell.addZeros(w.finite[g] - cell.count());
-                }
+        const WorkResult& w = done[firstWork[k] + size_t(source)];
+        for (int i = shares ? 0 : source; i < (shares ? n : source + 1); ++i) {
+            for (int g = 0; g < kFolds; ++g) {
+                // Paths that added nothing to an item count as zeros there.
+                MeanEstimator& cell = e.cell(i, shares ? source : 0, g);
+                cell = w.folds[g][shares ? size_t(i) : 0];
+                cell.addZeros(w.finite[g] - cell.count());
+            }
+            e.changed(i, shares ? source : 0);
         }
-        return e;
     };
+
 
     // Rounds of paths per point up to the next look (one round of all when not
     // adaptive: MeasureOptions); a sampler stops once its value is settled, and an item
@@ -429,14 +437,13 @@ MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& op
     // microseconds, and done serially after the rounds they left a core idle).
     MeasureResult result;
     result.samplers.resize(samplers);
-    auto finish = [&](size_t k) {
+    auto finish = [&](size_t k, const ItemEstimates& e) {
         SamplerResult& r = result.samplers[k];
         for (size_t index = firstWork[k]; index < firstWork[k + 1]; ++index) {
             r.droppedNonFinite += done[index].dropped;
             r.pathsPerPoint = std::max(r.pathsPerPoint, traced[index]);
         }
         if (firstWork[k + 1] == firstWork[k]) return;
-        const ItemEstimates e = estimates(k);
         for (int i = 0; i < e.items(); ++i) {
             Estimate x = e.of(i);
             r.points.push_back(x.value);
@@ -450,6 +457,10 @@ MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& op
     parallelFor(samplers, [&](size_t k) {
         const int batch = std::max(1, options.batchPaths);
         int to = !options.adaptive ? paths : std::min(paths, std::max(options.minPaths, batch));
+        // The items' estimates, refilled after each round for the work items it traced
+        // only (a glare sampler's focused stratum is one of sixteen). No paths yet: every
+        // cell empty.
+        ItemEstimates e(placed[k]->items(), placed[k]->sharesPaths() ? placed[k]->items() : 1);
         for (;;) {
             // Each item from where it stopped: a paused one that resumes catches up.
             std::vector<size_t> round;
@@ -469,9 +480,11 @@ MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& op
                 parallelFor(chunks.size(), [&](size_t i) { traceChunk(chunks[i]); });
                 for (const Chunk& c : chunks) merge(c);
             }
-            for (size_t index : round) traced[index] = to;
+            for (size_t index : round) {
+                traced[index] = to;
+                fill(e, k, int(index - firstWork[k]));
+            }
             if (!options.adaptive || to == paths) break;
-            const ItemEstimates e = estimates(k);
             const Estimate value = placed[k]->combine(e);
             const double zValue = confidenceMultiplier(options.confidenceZ, value.degreesOfFreedom);
             const LightSamplerSpec& spec = scene.samplers[k];
@@ -494,7 +507,7 @@ MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& op
             }
             to = std::min(paths, std::max(to + batch, nextLook(spec, value, to, batch, zValue)));
         }
-        finish(k);
+        finish(k, e);
     });
 
     // Sums over the samplers, in a fixed order.

@@ -108,6 +108,9 @@ public:
     Estimate ofFold(int item, int fold) const;
     // How many paths of fold `fold` reach `item`.
     uint64_t pathsInFold(int item, int fold) const;
+    // After the cells of (item, source) are filled anew: what was computed from them is
+    // computed again, on first use (the same numbers as a fresh object's).
+    void changed(int item, int source);
 
 private:
     size_t index(int item, int source, int fold) const { return (size_t(item) * sources_ + source) * kFolds + fold; }
