@@ -344,6 +344,34 @@ TEST(PathCache, ShadowRaysThatAnswerAsBeforeKeepTheirPaths) {
                 (unsigned long long)moved.reusedPaths, (unsigned long long)moved.paths, (unsigned long long)cache.askedAgain());
 }
 
+// The cache's reach spans only the heights of what can move (no move of the optimizer
+// changes a height). A layout that lifts the chair above them (to 1.6-2.5 m, over the
+// cabinet's 1.2 m) is still measured right: its move lies outside the reach, so every
+// kept path's segments are read, whatever its box.
+TEST(PathCache, AChairLiftedAboveWhatMovesStillEqualsFromScratch) {
+    SceneLab lab(studio());
+    const DaylightEnvironment* daylight = lab.daylight ? &*lab.daylight : nullptr;
+    MeasureOptions o;
+    o.pathsPerPoint = 32;
+    PathCache cache(lab.scene);
+    measureSamplers(*lab.tracer, o, &cache);
+    cache.commit();
+    Layout layout = initialLayout(lab.scene);
+    Placement& chair = layout.placements[size_t(entityNamed(lab.scene, "chair"))];
+    for (double z : {1.6, 0.0}) {  // up, and back down to where the cache's paths were traced
+        chair.position.z = z;
+        chair.position.x += 0.4;
+        lab.rt->setLayout(layout);
+        lab.tracer->updateLayout();
+        const MeasureResult moved = measureSamplers(*lab.tracer, o, &cache);
+        FromScratch fresh(lab.scene, layout, daylight);
+        expectSame(moved, measureSamplers(*fresh.tracer, o), "chair at z = " + std::to_string(z));
+        EXPECT_GT(moved.reusedPaths, 0u);
+        EXPECT_LT(moved.reusedPaths, moved.paths);
+        cache.commit();
+    }
+}
+
 TEST(PathCache, MovingTheLampRetracesEveryPathThatChoseAnEmitter) {
     // Every path samples an emitter at its first vertex (the scene has two).
     EXPECT_EQ(afterMoving("lamp", 0.1, 8).reusedPaths, 0u);

@@ -7,6 +7,7 @@
 
 #include <luxplan/core/parallel.h>
 #include <luxplan/emitters/emitter_shape.h>
+#include <luxplan/scene/layout.h>
 
 namespace luxplan {
 namespace {
@@ -20,6 +21,7 @@ constexpr double kMargin = 1e-3, kRelativeMargin = 1e-6;
 constexpr float kInfF = std::numeric_limits<float>::infinity();
 constexpr double kBoxPad = 1e-4;      // over the clipping's rounding (moved boxes carry kMargin)
 constexpr double kReachMargin = 0.5;  // m around the room's box: where moves happen (reach_)
+constexpr double kHeightPad = 0.01;   // m around the heights of what moves, far over moved boxes' margin
 
 // The next float below and above x (finite), as std::nextafter towards -inf and +inf
 // gives, without a call into the maths library.
@@ -110,12 +112,6 @@ void clusterParts(const TriangleMesh& mesh, std::vector<Bounds3>& out, std::vect
 }  // namespace
 
 PathCache::PathCache(const Scene& scene, size_t maxSegments) : scene_(scene), maxSegments_(maxSegments) {
-    reach_ = Bounds3(Vec3(-kInf, -kInf, -kInf), Vec3(kInf, kInf, kInf));
-    if (const RoomShell* room = scene.room()) {
-        const Vec3 pad(kReachMargin, kReachMargin, kReachMargin);
-        reach_ = Bounds3(room->box.lo - pad, room->box.hi + pad);
-    }
-    reachParts_ = PartsInside(reach_);
     localClusters_.resize(scene.entities.size());
     clusterTriangles_.resize(scene.entities.size());
     for (size_t i = 0; i < scene.entities.size(); ++i) {
@@ -130,6 +126,37 @@ PathCache::PathCache(const Scene& scene, size_t maxSegments) : scene_(scene), ma
             clusterTriangles_[i].emplace_back();  // a luminaire: its box decides
         }
     }
+    reach_ = Bounds3(Vec3(-kInf, -kInf, -kInf), Vec3(kInf, kInf, kInf));
+    if (const RoomShell* room = scene.room()) {
+        const Vec3 pad(kReachMargin, kReachMargin, kReachMargin);
+        reach_ = Bounds3(room->box.lo - pad, room->box.hi + pad);
+        // No move changes a height: every move keeps each placement's z and turns it
+        // about the vertical (scene/layout.h, optimizer/moves.h), so what can move spans
+        // the same heights in every layout. Rays above the desks and monitors (to the
+        // ceiling, from it to a window) then leave a path's box, which misses every move.
+        const Bounds3 moving = movingBounds(scene);
+        if (!moving.empty()) {
+            reach_.lo.z = std::max(reach_.lo.z, moving.lo.z - kHeightPad);
+            reach_.hi.z = std::min(reach_.hi.z, moving.hi.z + kHeightPad);
+        }
+    }
+    reachParts_ = PartsInside(reach_);
+}
+
+Bounds3 PathCache::movingBounds(const Scene& scene) const {
+    const std::vector<Transform> world = worldTransforms(scene, initialLayout(scene));
+    std::vector<char> moves(scene.entities.size(), 0);
+    Bounds3 all;
+    for (size_t i = 0; i < scene.entities.size(); ++i) {  // parents come before their children
+        const Entity& e = scene.entities[i];
+        moves[i] = e.movable() || (e.parent >= 0 && moves[size_t(e.parent)]);
+        if (!moves[i]) continue;
+        for (const Bounds3& b : localClusters_[i])
+            for (int corner = 0; corner < 8; ++corner)
+                all.extend(world[i].applyPoint(
+                    {corner & 1 ? b.hi.x : b.lo.x, corner & 2 ? b.hi.y : b.lo.y, corner & 4 ? b.hi.z : b.lo.z}));
+    }
+    return all;
 }
 
 void PathCache::begin(const EmbreeScene& rt, const std::vector<int>& workSampler, uint64_t streams) {

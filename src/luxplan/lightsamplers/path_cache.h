@@ -136,8 +136,13 @@ private:
     std::vector<std::vector<Bounds3>> localClusters_;  // per entity: its triangles' and luminaires', entity frame
     std::vector<std::vector<BoxedTriangles>> clusterTriangles_;  // per entity, per cluster
     // Where moves happen: the room's box with a margin (rays to the sky leave it, and
-    // their parts outside never meet a move inside), or everywhere without a room.
+    // their parts outside never meet a move inside), between the lowest and the highest
+    // point of what can move; everywhere without a room. A move outside it is still
+    // found: its segments are then read whatever a path's box (movedInReach_).
     Bounds3 reach_;
+    // The world box, in the scene's own layout, of every entity that can move (movable,
+    // or carried by one that is) and its luminaires; empty if none.
+    Bounds3 movingBounds(const Scene& scene) const;
     PartsInside reachParts_;  // reach_'s
 
     // Committed state.
