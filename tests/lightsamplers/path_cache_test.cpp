@@ -354,9 +354,8 @@ TEST(PathCache, AChairLiftedAboveWhatMovesStillEqualsFromScratch) {
     MeasureOptions o;
     o.pathsPerPoint = 32;
     PathCache cache(lab.scene);
-    measureSamplers(*lab.tracer, o, &cache);
-    cache.commit();
     Layout layout = initialLayout(lab.scene);
+    commitFirst(lab, o, cache, layout);
     Placement& chair = layout.placements[size_t(entityNamed(lab.scene, "chair"))];
     for (double z : {1.6, 0.0}) {  // up, and back down to where the cache's paths were traced
         chair.position.z = z;
