@@ -130,6 +130,9 @@ private:
     Verdict check(size_t work, const Record& r, const Paths& in, bool requery) const;
     static void prefetchAfter(const Paths& paths, size_t path);
     void endMeasurement();  // no measurement pending (its paths are committed or dropped)
+    // The world box, in the scene's own layout, of every entity that can move (movable,
+    // or carried by one that is) with its luminaires; empty if none (reach_'s heights).
+    Bounds3 movingBounds(const Scene& scene) const;
 
     const Scene& scene_;
     size_t maxSegments_;
@@ -140,9 +143,6 @@ private:
     // point of what can move; everywhere without a room. A move outside it is still
     // found: its segments are then read whatever a path's box (movedInReach_).
     Bounds3 reach_;
-    // The world box, in the scene's own layout, of every entity that can move (movable,
-    // or carried by one that is) and its luminaires; empty if none.
-    Bounds3 movingBounds(const Scene& scene) const;
     PartsInside reachParts_;  // reach_'s
 
     // Committed state.
