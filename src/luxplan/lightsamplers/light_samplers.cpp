@@ -425,7 +425,6 @@ MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& op
         }
     };
 
-
     // Rounds of paths per point up to the next look (one round of all when not
     // adaptive: MeasureOptions); a sampler stops once its value is settled, and an item
     // once its sampler no longer needs it (ItemNeed). A sampler's stop reads only its own
