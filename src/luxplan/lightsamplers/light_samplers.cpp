@@ -294,16 +294,16 @@ MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& op
         // call to the next: a measurement makes thousands of these calls, each a few paths
         // long, and their allocations showed in the search's profile. No call nests in
         // another on the same thread (a path's tracing waits on no task).
+        // Made at the first path that is traced: most calls read every path back from the cache.
         thread_local std::vector<PathSamples::Sequence> sequences;
         sequences.clear();
-        if (options.lowDiscrepancy)
-            for (int g = 0; g < (folds ? kFolds : 1); ++g)
-                sequences.emplace_back(hashValues({options.seed, kSequenceTag, uint64_t(w.sampler), uint64_t(w.item),
-                                                   folds ? uint64_t(g) : uint64_t(kFolds)}));
         auto samplesOf = [&](int path, Rng& rng) {
-            return options.lowDiscrepancy ? PathSamples(rng, sequences[folds ? size_t(path % kFolds) : 0],
-                                                        uint32_t(folds ? path / kFolds : path))
-                                          : PathSamples(rng);
+            if (!options.lowDiscrepancy) return PathSamples(rng);
+            if (sequences.empty())
+                for (int g = 0; g < (folds ? kFolds : 1); ++g)
+                    sequences.emplace_back(hashValues({options.seed, kSequenceTag, uint64_t(w.sampler), uint64_t(w.item),
+                                                       folds ? uint64_t(g) : uint64_t(kFolds)}));
+            return PathSamples(rng, sequences[folds ? size_t(path % kFolds) : 0], uint32_t(folds ? path / kFolds : path));
         };
         auto rngOf = [&](int path) { return Rng(hashValues({options.seed, uint64_t(w.sampler), uint64_t(w.item), uint64_t(path)})); };
         thread_local PathFootprint scratch;  // a path's footprint as it is traced
