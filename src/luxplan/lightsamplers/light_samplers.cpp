@@ -290,11 +290,12 @@ MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& op
         const PlacedSampler& sampler = *placed[size_t(w.sampler)];
         // The item's low-discrepancy sequence (one per fold for types that compare folds).
         const bool folds = sampler.independentFolds();
-        // Each thread's buffers (this and the footprint below) keep their memory from one
-        // call to the next: a measurement makes thousands of these calls, each a few paths
-        // long, and their allocations showed in the search's profile. No call nests in
-        // another on the same thread (a path's tracing waits on no task).
-        // Made at the first path that is traced: most calls read every path back from the cache.
+        // Each thread's buffers (the sequences and the footprint below) keep their memory
+        // from one call to the next: a measurement makes thousands of these calls, each a
+        // few paths long, and their allocations showed in the search's profile. No call
+        // nests in another on the same thread (a path's tracing waits on no task). The
+        // sequences are made at the first path traced afresh: about half the calls read
+        // every path back from the cache.
         thread_local std::vector<PathSamples::Sequence> sequences;
         sequences.clear();
         auto samplesOf = [&](int path, Rng& rng) {
