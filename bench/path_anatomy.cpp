@@ -7,7 +7,11 @@
 // share of the variance (its covariance with the whole over the whole's variance; the
 // shares add up to 100%): which light the noise comes from.
 //
-//   luxplan_path_anatomy SCENE LAYOUT SAMPLER ITEM [PATHS] [--sun-patches] [--sources]
+//   luxplan_path_anatomy SCENE LAYOUT SAMPLER ITEM [PATHS] [--sun-patches] [--sources] [--light-roulette A]
+//
+// --light-roulette: the light samples' roulette with the floors a search at share A
+// would take on this layout (lightSampleFloors, MeasureOptions::lightFloors; default 0,
+// every sample).
 //
 // SAMPLER is the sampler's name, ITEM its point or stratum (measure --json's `points`
 // order). The paths are PCG-seeded, one thread. docs/performance.md quotes its output.
@@ -39,7 +43,7 @@ struct Row {
 using Parts = std::array<std::array<double, LightBudget::kBounces>, LightBudget::kKinds>;
 
 Row trace(const Scene& scene, const EmbreeScene& rt, const DaylightEnvironment* daylight, const PlacedSampler& sampler,
-          int item, int paths, int maxDepth, bool sunPatches, std::vector<Parts>* parts = nullptr) {
+          int item, int paths, int maxDepth, bool sunPatches, double lightFloor, std::vector<Parts>* parts = nullptr) {
     PathTracerOptions options;
     options.sunPatches = sunPatches;
     options.maxDepth = maxDepth;
@@ -49,6 +53,7 @@ Row trace(const Scene& scene, const EmbreeScene& rt, const DaylightEnvironment* 
     for (int path = 0; path < paths; ++path) {
         Rng rng(hashValues({scene.optimizer.seed, uint64_t(item), uint64_t(path)}));
         PathSamples samples(rng);
+        samples.setLightFloor(lightFloor);
         PathContributions c(item);
         LightBudget budget;
         stats.budget = parts ? &budget : nullptr;
@@ -133,7 +138,7 @@ void printSources(const std::vector<Parts>& parts) {
 
 int main(int argc, char** argv) try {
     if (argc < 5) {
-        std::fprintf(stderr, "usage: %s SCENE LAYOUT SAMPLER ITEM [PATHS] [--sun-patches] [--sources]\n", argv[0]);
+        std::fprintf(stderr, "usage: %s SCENE LAYOUT SAMPLER ITEM [PATHS] [--sun-patches] [--sources] [--light-roulette A]\n", argv[0]);
         return 2;
     }
     const Scene scene = io::loadScene(argv[1]);
@@ -145,8 +150,15 @@ int main(int argc, char** argv) try {
     const int item = wholeNumber(argv[4], "ITEM", 0);
     int paths = 20000;
     bool sunPatches = false, sources = false;
+    double lightRoulette = 0;
     for (int a = 5; a < argc; ++a) {
         if (std::strcmp(argv[a], "--sun-patches") == 0) sunPatches = true;
+        else if (std::strcmp(argv[a], "--light-roulette") == 0 && a + 1 < argc) {
+            char* end = nullptr;
+            lightRoulette = std::strtod(argv[++a], &end);
+            if (*end != '\0' || !(lightRoulette >= 0) || !std::isfinite(lightRoulette))
+                throw std::runtime_error(std::string("--light-roulette: expected a finite number >= 0, got ") + argv[a]);
+        }
         else if (std::strcmp(argv[a], "--sources") == 0) sources = true;
         else if (a == 5 && argv[a][0] != '-') paths = wholeNumber(argv[a], "PATHS", 100);
         else throw std::runtime_error(std::string("unknown argument \"") + argv[a] + "\"");
@@ -157,13 +169,17 @@ int main(int argc, char** argv) try {
     const PathTracer placer(rt, daylight ? &*daylight : nullptr, PathTracerOptions{});
     const auto sampler = placeSampler(scene.samplers[size_t(samplerIndex)], placer);
     if (item < 0 || item >= sampler->items()) throw std::runtime_error("ITEM " + std::to_string(item) + " is past the sampler's " + std::to_string(sampler->items()) + " items");
-    std::printf("%s, item %d, %d paths, sunlit patches %s (%s)\n", argv[3], item, paths, sunPatches ? "on" : "off",
-                scene.samplers[size_t(samplerIndex)].type->unit());
+    PathTracerOptions searchTracing;
+    searchTracing.sunPatches = sunPatches;
+    const PathTracer pilot(rt, daylight ? &*daylight : nullptr, searchTracing);
+    const double lightFloor = lightSampleFloors(pilot, lightRoulette, scene.optimizer.seed)[size_t(samplerIndex)];
+    std::printf("%s, item %d, %d paths, sunlit patches %s, light samples' floor %g (%s)\n", argv[3], item, paths,
+                sunPatches ? "on" : "off", lightFloor, scene.samplers[size_t(samplerIndex)].type->unit());
     std::printf("%-16s %9s %11s %9s %7s %8s %9s %12s %10s\n", "surface vertices", "mean", "sd per path", "sd / mean",
                 "zeros", "median", "99th pct", "top 1% share", "rays/path");
     std::vector<Parts> parts;
     for (int depth : {1, 2, 3, 4, 6, 256}) {
-        const Row r = trace(scene, rt, daylight ? &*daylight : nullptr, *sampler, item, paths, depth, sunPatches,
+        const Row r = trace(scene, rt, daylight ? &*daylight : nullptr, *sampler, item, paths, depth, sunPatches, lightFloor,
                             sources && depth == 256 ? &parts : nullptr);
         std::printf("%-16s %9.1f %11.1f %9.2f %6.0f%% %8.1f %9.1f %11.0f%% %10.1f\n",
                     depth == 256 ? "all" : std::to_string(depth).c_str(), r.mean, r.sd, r.mean > 0 ? r.sd / r.mean : 0,

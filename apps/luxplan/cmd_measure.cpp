@@ -41,6 +41,7 @@ struct MeasureArgs {
     int paths = 0;
     std::optional<uint64_t> seed;
     bool json = false, flat = false, adaptive = false;
+    double lightRoulette = 0;
     std::string sampling = "sobol";
     std::string sunPatches = "on";
     std::string exteriorSun = "on";
@@ -87,6 +88,7 @@ void runMeasure(const MeasureArgs& args) {
     warnFewPaths(scene, options.pathsPerPoint, args.paths > 0);
     options.seed = args.seed.value_or(scene.optimizer.seed);
     options.adaptive = args.adaptive;
+    if (args.lightRoulette > 0) options.lightFloors = lightSampleFloors(tracer, args.lightRoulette, options.seed);
     options.lowDiscrepancy = args.sampling == "sobol";
     MeasureResult result = measureSamplers(tracer, options);
     // The objective of Eq. 1 for this layout, as optimize reports it (report.json's C).
@@ -114,12 +116,14 @@ void runMeasure(const MeasureArgs& args) {
             // Only when it happened, so that the usual output stays as it was.
             if (r.droppedNonFinite > 0) sampler["dropped_nonfinite"] = r.droppedNonFinite;
             if (options.adaptive) sampler["paths_per_point"] = r.pathsPerPoint;
+            if (!options.lightFloors.empty()) sampler["light_floor"] = options.lightFloors[k];
             samplers.push_back(sampler);
         }
         nlohmann::json out = {{"samplers", samplers},
                               {"paths_per_point", options.pathsPerPoint},
                               {"adaptive", options.adaptive}, {"sampling", args.sampling}, {"sun_patches", tracer.samplesSunPatches()},
                               {"exterior_sun", tracer.samplesExteriorSun()},
+                              {"light_roulette", args.lightRoulette},
                               {"seed", options.seed},
                               {"L", lighting}, {"L_std_error", lightingError},
                               {"G", geometry.cost}, {"C", cost}, {"C_std_error", w * lightingError},
@@ -212,6 +216,12 @@ void registerMeasureCommand(CLI::App& app, int& threads) {
                   "Stop each sampler once value +- 3 standard errors (Student's interval for an error from fold "
                   "values) lies inside one linear piece of its penalty, looking first after 64 paths per point "
                   "(--paths is then the most per point)");
+    cmd->add_option("--light-roulette", args->lightRoulette,
+                    "Trace a light sample worth less than a floor only with probability worth / floor, weighed up when "
+                    "it is: the floor is this share of each sampler's variance per path over its mean (from 64 paths "
+                    "per point), so the samples it skips add at most this share to a path's variance (optimize's "
+                    "search: 0.2; default 0: every sample). Unbiased")
+        ->check(finiteNumber(true, kMostLightRoulette));
     cmd->add_option("--sampling", args->sampling,
                     "Random numbers of the paths' first vertices: sobol (scrambled low-discrepancy, default) or random (PCG)")
         ->check(CLI::IsMember({"sobol", "random"}));

@@ -72,6 +72,7 @@ struct OptimizeArgs {
     std::string sampling = "sobol";
     std::string sunPatches = "report";
     std::string exteriorSun = "on";
+    double lightRoulette = 0.2;
 };
 
 // One status line, redrawn in place on a terminal, printed every few seconds
@@ -191,6 +192,7 @@ int runOptimize(const OptimizeArgs& args) {
         lighting->setIncremental(!args.fullEvaluation);
         lighting->setCheckCache(args.checkCache);
         lighting->setFreshNoise(args.freshNoise);
+        lighting->setLightRoulette(args.lightRoulette);
     }
 
     // With lighting weight 0 the chain never calls it, but the result's report does.
@@ -326,6 +328,13 @@ void registerOptimizeCommand(CLI::App& app, int& threads) {
                     "that an opening sees) or find that light by BSDF sampling alone (off), in the search, the "
                     "report and the pictures; the same values either way")
         ->check(CLI::IsMember({"on", "off"}));
+    cmd->add_option("--light-roulette", args->lightRoulette,
+                    "In the search, trace a light sample worth less than a floor only with probability worth / floor, "
+                    "weighed up when it is: the floor is this share of each sampler's variance per path over its mean "
+                    "(from 64 paths per point at the scene's layout), so the samples it skips add at most this share "
+                    "to a path's variance (default 0.2; 0: every sample). Unbiased; the candidates' measurements and "
+                    "the report trace every sample")
+        ->check(finiteNumber(true, kMostLightRoulette));
     auto* full = cmd->add_flag("--full-evaluation", args->fullEvaluation,
                   "Trace every path of every evaluated layout (default: only the paths a move can change are "
                   "traced again; the numbers are the same but where two entities' faces of different materials "

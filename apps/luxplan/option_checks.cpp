@@ -3,6 +3,7 @@
 #include <charconv>
 #include <cmath>
 #include <limits>
+#include <sstream>
 #include <string>
 
 namespace luxplan::cli {
@@ -33,16 +34,25 @@ CLI::Validator wholeNumber(int least) {
         "INT >= " + std::to_string(least));
 }
 
-CLI::Validator positiveNumber() {
+CLI::Validator positiveNumber() { return finiteNumber(false); }
+
+CLI::Validator finiteNumber(bool zeroToo, double most) {
     return CLI::Validator(
-        [](std::string& text) -> std::string {
+        [zeroToo, most](std::string& text) -> std::string {
             double v = 0;
             const char* end = text.data() + text.size();
             auto [ptr, ec] = std::from_chars(text.data(), end, v);
             if (ec != std::errc() || ptr != end || text.empty()) return "expected a number, got " + text;
-            return v > 0 && std::isfinite(v) ? "" : "must be a finite number > 0, got " + text;
+            const bool ok = std::isfinite(v) && (v > 0 || (zeroToo && v == 0));
+            if (!ok) return std::string("must be a finite number ") + (zeroToo ? ">= 0" : "> 0") + ", got " + text;
+            if (v > most) {
+                std::ostringstream bound;
+                bound << most;
+                return "must be at most " + bound.str() + ", got " + text;
+            }
+            return "";
         },
-        "NUMBER > 0");
+        zeroToo ? "NUMBER >= 0" : "NUMBER > 0");
 }
 
 CLI::Option* addSeedOption(CLI::App* cmd, std::optional<uint64_t>& seed) {

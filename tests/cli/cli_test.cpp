@@ -76,6 +76,9 @@ TEST(Cli, OptionValuesAreCheckedAndSeedsReadExactly) {
     expectRefused("--threads -1", "--threads: expected a whole number, got -1 (at least 0)");
     expectRefused("--seed 18446744073709551616", "--seed: expected a whole number up to 18446744073709551615, got 18446744073709551616");
     expectRefused("--seed 1e3", "--seed: expected a whole number, got 1e3");
+    expectRefused("--light-roulette -1", "--light-roulette: must be a finite number >= 0, got -1");
+    expectRefused("--light-roulette nan", "--light-roulette: must be a finite number >= 0, got nan");
+    expectRefused("--light-roulette 11", "--light-roulette: must be at most 10, got 11");
     Result r = run("render " + kDemo + " --cell 0 -o x");
     EXPECT_EQ(r.exitCode, 2) << r.output;
     EXPECT_NE(r.output.find("--cell: must be a finite number > 0, got 0"), std::string::npos) << r.output;
@@ -124,6 +127,18 @@ TEST(Cli, MeasureJsonFollowsTheContract) {
     // Same seed and thread count: the same numbers.
     Result again = run("measure " + file.string() + " --paths 32 --seed 3 --threads 1 --json");
     EXPECT_EQ(nlohmann::json::parse(again.output)["samplers"], json["samplers"]);
+    EXPECT_EQ(json["light_roulette"], 0.0);
+    EXPECT_FALSE(p.contains("light_floor"));
+    // The light samples' roulette: each sampler's floor from its pilot, the same at
+    // any thread count (here with no surface for a path to meet, the same values too).
+    Result rouletted = run("measure " + file.string() + " --paths 32 --seed 3 --threads 2 --light-roulette 2 --json");
+    ASSERT_EQ(rouletted.exitCode, 0) << rouletted.output;
+    auto withFloors = nlohmann::json::parse(rouletted.output);
+    EXPECT_EQ(withFloors["light_roulette"], 2.0);
+    EXPECT_GT(withFloors["samplers"][0]["light_floor"].get<double>(), 0);
+    EXPECT_EQ(withFloors["samplers"][0]["points"], p["points"]);
+    Result oneThread = run("measure " + file.string() + " --paths 32 --seed 3 --threads 1 --light-roulette 2 --json");
+    EXPECT_EQ(nlohmann::json::parse(oneThread.output)["samplers"], withFloors["samplers"]);
 }
 
 // A long daylight period (five days at five-minute steps, about 700 with the sun up)

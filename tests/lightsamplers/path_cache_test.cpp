@@ -5,6 +5,9 @@
 // it traces fewer paths when a move is small.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <vector>
+
 #include <luxplan/core/rng.h>
 #include <luxplan/emitters/emitter_shape.h>
 #include <luxplan/lightsamplers/path_cache.h>
@@ -99,10 +102,12 @@ void randomMove(const Scene& scene, Layout& layout, Rng& rng) {
 // The sequences' measurement: looks from 8 paths on, so that adaptive runs stop early.
 // `chunkPaths`: how the looks at few items split their paths (MeasureOptions); the
 // measurements from scratch never split them.
-MeasureOptions sequenceOptions(bool adaptive, int paths, int chunkPaths = 0) {
+// `lightFloors`: the light samples' roulette (MeasureOptions), in both.
+MeasureOptions sequenceOptions(bool adaptive, int paths, int chunkPaths = 0, const std::vector<double>& lightFloors = {}) {
     MeasureOptions o;
     o.pathsPerPoint = paths, o.seed = 7, o.adaptive = adaptive, o.batchPaths = 8, o.minPaths = 8;
     o.chunkPaths = chunkPaths;
+    o.lightFloors = lightFloors;
     return o;
 }
 
@@ -115,12 +120,18 @@ void commitFirst(SceneLab& lab, const MeasureOptions& o, PathCache& cache, const
 }
 
 void runSequence(bool adaptive, int paths, int moves, uint64_t moveSeed, bool terrace = false, double walls = 0.6,
-                 int chunkPaths = 0) {
+                 int chunkPaths = 0, double lightRoulette = 0) {
     SceneLab lab(studio(terrace, walls));
     ASSERT_EQ(lab.tracer->samplesExteriorSun(), terrace);
     const Scene& scene = lab.scene;
     const DaylightEnvironment* daylight = lab.daylight ? &*lab.daylight : nullptr;
-    const MeasureOptions o = sequenceOptions(adaptive, paths, chunkPaths), inOrder = sequenceOptions(adaptive, paths);
+    // The search's floors come from a pilot at the scene's layout, fixed for the run.
+    const std::vector<double> floors = lightRoulette > 0 ? lightSampleFloors(*lab.tracer, lightRoulette, 7) : std::vector<double>{};
+    if (lightRoulette > 0) {
+        ASSERT_GT(*std::max_element(floors.begin(), floors.end()), 0.0);
+    }
+    const MeasureOptions o = sequenceOptions(adaptive, paths, chunkPaths, floors),
+                         inOrder = sequenceOptions(adaptive, paths, 0, floors);
     PathCache cache(scene);
     Layout committed = initialLayout(scene);
     commitFirst(lab, o, cache, committed);
@@ -166,6 +177,10 @@ TEST(PathCache, MovesEqualFromScratchWithLongPaths) { runSequence(true, 64, 24, 
 // focused stratum split into chunks of 3 paths, traced on any thread and merged in path
 // order, with the cache's reads and keeps: the same numbers as in order from scratch.
 TEST(PathCache, MovesEqualFromScratchWithLooksInChunks) { runSequence(true, 64, 16, 15, false, 0.6, 3); }
+
+// The light samples' roulette, as the search traces: a shadow ray it skipped is no
+// part of the path, whose value is the same whatever that ray would have met.
+TEST(PathCache, MovesEqualFromScratchWithTheLightSamplesRoulette) { runSequence(true, 48, 24, 16, false, 0.6, 0, 0.5); }
 
 // A monitor's foot put over one of the desk's task points (no light reaches a point in it: its
 // paths are not traced, pathtracer/sealed_boxes.h), beside them, and away again, while

@@ -10,6 +10,7 @@
 #include <luxplan/core/estimator.h>
 
 #include <luxplan/lightsamplers/light_samplers.h>
+#include "support/closed_grey_room.h"
 #include "support/scene_builder.h"
 #include "support/scene_lab.h"
 
@@ -24,31 +25,13 @@ using test::SceneLab;
 // whatever the roulette does (rho = 0.8: five bounces on average, most of them past
 // the roulette's start).
 TEST(RussianRoulette, EveryLevelKeepsTheClosedRoomsEnergyBalance) {
-    const double rho = 0.8, flux = 2000, A = 2 * (4 * 3 + 4 * 2.5 + 3 * 2.5);
-    const Scene scene = SceneBuilder()
-                            .material("grey", test::diffuse(rho))
-                            .room({0, 0, 0}, {4, 3, 2.5}, "grey", "grey", "grey")
-                            .emitter("bulb", sphereEmitter({2.1, 1.4, 1.3}, 0.01), flux)
-                            .sampler("floor", planarSampler({2, 1.5, 0.001}, {0, 0, 1}, {0, 1, 0}, {4, 3}, {4, 3}), 0, 1e9)
-                            .sampler("ceiling", planarSampler({2, 1.5, 2.499}, {0, 0, -1}, {0, 1, 0}, {4, 3}, {4, 3}), 0, 1e9)
-                            .sampler("south", planarSampler({2, 0.001, 1.25}, {0, 1, 0}, {0, 0, 1}, {4, 2.5}, {4, 3}), 0, 1e9)
-                            .sampler("north", planarSampler({2, 2.999, 1.25}, {0, -1, 0}, {0, 0, 1}, {4, 2.5}, {4, 3}), 0, 1e9)
-                            .sampler("west", planarSampler({0.001, 1.5, 1.25}, {1, 0, 0}, {0, 0, 1}, {3, 2.5}, {3, 3}), 0, 1e9)
-                            .sampler("east", planarSampler({3.999, 1.5, 1.25}, {-1, 0, 0}, {0, 0, 1}, {3, 2.5}, {3, 3}), 0, 1e9)
-                            .build();
-    const double areas[6] = {12, 12, 10, 10, 7.5, 7.5};
-    const double expected = flux / (A * (1 - rho));
+    const test::ClosedGreyRoom room(0.8, 2000);
     for (double level : {1.0, 1.0 / 3.0, 0.05}) {
         PathTracerOptions options;
         options.rouletteLevel = level;
-        const MeasureResult r = SceneLab(scene, options).measure(400);
-        double mean = 0, variance = 0;
-        for (int k = 0; k < 6; ++k) {
-            mean += areas[k] * r.samplers[size_t(k)].value / A;
-            variance += std::pow(areas[k] / A * r.samplers[size_t(k)].standardError, 2);
-        }
+        const test::ClosedGreyRoom::Mean mean = test::ClosedGreyRoom::mean(SceneLab(room.scene, options).measure(400));
         // The grid points' mean stands for each face's: 2% for that quadrature.
-        EXPECT_NEAR(mean, expected, 4 * std::sqrt(variance) + 0.02 * expected) << "level " << level;
+        EXPECT_NEAR(mean.value, room.expected, 4 * mean.standardError + 0.02 * room.expected) << "level " << level;
     }
 }
 

@@ -24,6 +24,7 @@ struct WorkItem {
 
 constexpr int kFolds = ItemEstimates::kFolds;
 constexpr uint64_t kSequenceTag = 0x5350'0bb1'5eedULL;  // keys the low-discrepancy sequences
+constexpr uint64_t kPilotTag = 0x70696c6f74ULL;            // "pilot": lightSampleFloors' paths
 // A look at fewer items than this has each item's paths traced in chunks
 // (MeasureOptions::chunkPaths): a glare sampler's focused stratum would otherwise keep
 // one core busy while the other idles.
@@ -163,6 +164,45 @@ std::unique_ptr<PlacedSampler> placeSampler(const LightSamplerSpec& s, const Pat
     return placed;
 }
 
+std::vector<double> lightSampleFloors(const PathTracer& tracer, double share, uint64_t seed, int pilotPaths) {
+    const Scene& scene = tracer.rayTracer().scene();
+    std::vector<double> floors(scene.samplers.size(), 0.0);
+    if (!(share > 0)) return floors;
+    for (size_t k = 0; k < scene.samplers.size(); ++k) {
+        const std::unique_ptr<PlacedSampler> placed = placeSampler(scene.samplers[k], tracer);
+        // A glare survey's paths measure its sources, each on a scale of its own.
+        if (dynamic_cast<const PlacedGlare*>(placed.get())) continue;
+        const int items = placed->items();
+        // Per item: the sum of its paths' values, of their squares (in the tracer's
+        // unit: what a light sample's worth is compared with), and their count.
+        std::vector<std::array<double, 3>> sums(static_cast<size_t>(items));
+        parallelFor(size_t(items), [&](size_t item) {
+            const double scale = placed->sharesPaths() ? 1.0 / items : 1.0;
+            RayStats stats;
+            for (int path = 0; path < pilotPaths; ++path) {
+                Rng rng(hashValues({seed, kPilotTag, uint64_t(k), uint64_t(item), uint64_t(path)}));
+                PathSamples samples(rng);
+                PathContributions c(static_cast<int>(item));
+                placed->sample(tracer, int(item), samples, stats, c);
+                if (!c.finite()) continue;
+                double own = 0;
+                for (int j = 0; j < c.size(); ++j)
+                    if (c.itemAt(j) == int(item)) own += c.valueAt(j);
+                own *= scale;
+                sums[item][0] += own, sums[item][1] += own * own, sums[item][2] += 1;
+            }
+        });
+        double mean = 0, variance = 0, counted = 0;
+        for (const auto& [sum, squares, n] : sums) {
+            if (n < 2) continue;
+            const double m = sum / n;
+            mean += m, variance += std::max(0.0, (squares - n * m * m) / (n - 1)), counted += 1;
+        }
+        if (counted > 0 && mean > 0) floors[k] = share * variance / mean;  // both over `counted` items
+    }
+    return floors;
+}
+
 namespace {
 
 // [lo, hi] lies inside one linear piece of a term's penalty.
@@ -248,6 +288,10 @@ MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& op
     if (glareTracer)
         for (size_t k = 0; k < samplers; ++k)
             if (dynamic_cast<const PlacedGlare*>(placed[k].get())) tracerOf[k] = glareTracer;
+    if (!options.lightFloors.empty() && options.lightFloors.size() != samplers)
+        throw std::logic_error("MeasureOptions::lightFloors: one per sampler of the scene");
+    std::vector<double> lightFloorOf = options.lightFloors;
+    lightFloorOf.resize(samplers, 0.0);
     if (cache) {
         std::vector<int> workSampler;
         for (const WorkItem& w : work) workSampler.push_back(w.sampler);
@@ -306,6 +350,7 @@ MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& op
                                                        folds ? uint64_t(g) : uint64_t(kFolds)}));
             return PathSamples(rng, sequences[folds ? size_t(path % kFolds) : 0], uint32_t(folds ? path / kFolds : path));
         };
+        const double lightFloor = lightFloorOf[size_t(w.sampler)];
         auto rngOf = [&](int path) { return Rng(hashValues({options.seed, uint64_t(w.sampler), uint64_t(w.item), uint64_t(path)})); };
         thread_local PathFootprint scratch;  // a path's footprint as it is traced
         PathContributions traced(w.item);  // ... and what it added
@@ -316,6 +361,7 @@ MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& op
                 traced = PathContributions(w.item);
                 Rng rng = rngOf(path);
                 PathSamples samples = samplesOf(path, rng);
+                samples.setLightFloor(lightFloor);
                 if (cache) {
                     scratch.clear();
                     stats.footprint = &scratch;
@@ -326,6 +372,7 @@ MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& op
                 PathContributions fresh(w.item);
                 Rng rng = rngOf(path);
                 PathSamples samples = samplesOf(path, rng);
+                samples.setLightFloor(lightFloor);
                 RayStats uncounted;
                 scratch.clear();  // onPath reads it only for a path traced afresh
                 uncounted.footprint = &scratch;

@@ -64,7 +64,20 @@ struct MeasureOptions {
     // item's paths in chunks of this many, any thread taking any chunk, and adds them
     // up in path order: the same numbers as one thread in order (0: never split).
     int chunkPaths = 32;
+    // Russian roulette on the light samples at surface vertices
+    // (PathSamples::setLightFloor): sampler k's paths take lightFloors[k] (in the
+    // tracer's unit for its paths; lightSampleFloors). Empty: every sample traced.
+    std::vector<double> lightFloors;
 };
+
+// The light samples' roulette floors (MeasureOptions::lightFloors) for the tracer's
+// current layout, one per sampler: `share` times the variance of one of its paths over
+// their mean, from `pilotPaths` paths per item (PCG, keyed by `seed`; within-item
+// variances and means, averaged over the items). A light sample worth c < F then adds
+// at most c F to its path's variance, so all of them at most F times the mean, `share`
+// times the variance per path where the pilot measured it. 0 for a sampler whose
+// pilot saw no light and for the glare surveys (their paths measure their sources).
+std::vector<double> lightSampleFloors(const PathTracer& tracer, double share, uint64_t seed, int pilotPaths = 64);
 
 struct MeasureResult {
     std::vector<SamplerResult> samplers;  // in Scene::samplers order

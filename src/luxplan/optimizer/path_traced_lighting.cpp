@@ -1,5 +1,6 @@
 #include <luxplan/optimizer/path_traced_lighting.h>
 
+#include <stdexcept>
 #include <string_view>
 
 #include <luxplan/constraints/penalty.h>
@@ -65,8 +66,15 @@ double PathTracedLighting::measureIndependently(const Layout& /*layout*/, const 
     if (reportPaths_ > 0) independent.pathsPerPoint = reportPaths_;
     independent.adaptive = false;
     independent.choiceError = true;
+    independent.lightFloors.clear();  // as `measure` traces
     // Not through the cache: its committed paths are the search's, and stay so.
     return measure(reportTracer_, world, independent, nullptr, out);
+}
+
+void PathTracedLighting::setLightRoulette(double share) {
+    // The tracer stands at the scene's own layout until the first evaluation.
+    if (evaluations_ > 0) throw std::logic_error("PathTracedLighting::setLightRoulette: after the first evaluation");
+    options_.lightFloors = share > 0 ? lightSampleFloors(tracer_, share, options_.seed) : std::vector<double>{};
 }
 
 double PathTracedLighting::measure(PathTracer& tracer, const std::vector<Transform>& world, const MeasureOptions& options,

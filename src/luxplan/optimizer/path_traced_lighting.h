@@ -39,6 +39,12 @@ public:
     // Every path the cache reads back is traced again and compared (MeasureOptions::
     // checkCache): a diagnostic, at the cost of a full evaluation and more.
     void setCheckCache(bool on) { options_.checkCache = on; }
+    // The search's light samples' roulette (MeasureOptions::lightFloors): floors at
+    // `share` times each sampler's variance per path over its mean, from a pilot at the
+    // scene's own layout (lightSampleFloors), fixed for the run; 0: every sample traced.
+    // The independent measurements trace every sample. Before the first evaluation.
+    void setLightRoulette(double share);
+    const std::vector<double>& lightFloors() const { return options_.lightFloors; }
     CacheCheck cacheCheck() const override { return check_; }
     // Fresh noise: every evaluation draws its own seed (from the seed and a count of
     // evaluations, so a run still repeats), without the path cache. The optimizer then

@@ -212,6 +212,7 @@ double PathTracer::transmittance(const Vec3& origin, const Vec3& w, double tMax,
 double PathTracer::sample(const Sensor& sensor, PathSamples& samples, RayStats& stats, bool* hitEmitterFirst,
                           SensorLight* sensorLight) const {
     if (sensorLight) sensorLight->count = 0;
+    const double lightFloor = samples.lightFloor();
     const Vec3 origin = sensor.position();
     if (Vec3 exit; sealedAt(origin, &exit)) {
         // Its value depends on the box around it and on the luminaires (one might move
@@ -405,9 +406,22 @@ double PathTracer::sample(const Sensor& sensor, PathSamples& samples, RayStats& 
                 Vec3 f = evalCos(v, wi);
                 if (maxComponent(f) <= 0) return;
                 if (throughShell && patches_.shadedByShell(spawn(v, wi), wi)) return;
+                // The light samples' roulette (PathSamples::setLightFloor), at surface
+                // vertices: a sensor's own samples count in its cells, on another scale.
+                Vec3 Le = sampledLe;
+                double survival = 1;
+                if (lightFloor > 0 && v.isSurface()) {
+                    if (skyLater) Le = daylight_->Le(wi), skyLater = false;
+                    const double c = luminance(throughput * f * Le) / lightPdf;
+                    if (c < lightFloor) {
+                        survival = c / lightFloor;
+                        if (!(samples.rng().uniform() < survival)) return;
+                    }
+                }
                 double T = transmittance(spawn(v, wi), wi, v.isSurface() ? maxT : maxT - kRayEpsilon, target, stats);
                 if (T <= 0) return;
-                const Vec3 Le = skyLater ? daylight_->Le(wi) : sampledLe;
+                T /= survival;
+                if (skyLater) Le = daylight_->Le(wi);
                 const double bsdfPdf = pdfOf(v, wi);
                 double w = powerHeuristic(1, lightPdf, 1, bsdfPdf);
                 if (source == LightBudget::kSun && arrivalDensity > 0) {
