@@ -318,6 +318,11 @@ TEST(Cli, OptimizeFindsTheLitRegionAndWritesItsOutputs) {
     EXPECT_TRUE(report.contains("C") && report.contains("L") && report.contains("G"));
     EXPECT_EQ(report["samplers"].size(), 1u);
     EXPECT_GT(report["samplers"][0]["value"].get<double>(), 300);
+    // The search's light samples' roulette: its floor per sampler (none with it off).
+    EXPECT_GT(report["samplers"][0]["search_light_floor"].get<double>(), 0) << report["samplers"][0].dump();
+    auto every = dir.path() / "every";
+    ASSERT_EQ(run("optimize " + scene.string() + " -o " + every.string() + " --threads 2 -q --no-pictures --iterations 20 --light-roulette 0").exitCode, 0);
+    EXPECT_FALSE(nlohmann::json::parse(std::ifstream(every / "report.json"))["samplers"][0].contains("search_light_floor"));
     // The layout reads back.
     Result m = run("measure " + scene.string() + " --layout " + (out / "layout.json").string() + " --paths 8 --json");
     EXPECT_EQ(m.exitCode, 0) << m.output;

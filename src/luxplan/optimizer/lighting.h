@@ -49,6 +49,9 @@ public:
     virtual uint64_t tracedPaths() const { return 0; }
     // What checking the evaluator's cache against fresh traces found (off: no check).
     virtual CacheCheck cacheCheck() const { return {}; }
+    // The floors of the light samples' roulette its evaluations took, one per sampler
+    // (empty: every light sample traced; MeasureOptions::lightFloors).
+    virtual std::vector<double> lightFloors() const { return {}; }
     // The chain accepted (commit) or refused (revert) the layout last evaluated: an
     // evaluator that keeps work between layouts (the path cache) keeps it for the
     // accepted layout only. Evaluations measure against the last committed layout.

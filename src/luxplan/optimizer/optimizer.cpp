@@ -527,7 +527,7 @@ OptimizerResult Optimizer::run(const ProgressCallback& progress, const std::atom
     r.trace = trace_;
     r.snapshots = std::move(snapshots);
     r.lightingEvaluations = lightingEvaluations_;
-    if (lighting_) r.cacheCheck = lighting_->cacheCheck();
+    if (lighting_) r.cacheCheck = lighting_->cacheCheck(), r.lightFloors = lighting_->lightFloors();
     r.options = options_;
     return r;
 }

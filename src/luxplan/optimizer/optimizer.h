@@ -179,6 +179,7 @@ struct OptimizerResult {
     std::vector<Snapshot> snapshots;  // OptimizerOptions::snapshots
     int64_t lightingEvaluations = 0;  // by the chain (not the final measurements)
     CacheCheck cacheCheck;  // the lighting evaluator's, when it checked its cache
+    std::vector<double> lightFloors;  // the search's light samples' roulette, per sampler (empty: off)
     OptimizerOptions options;
 };
 

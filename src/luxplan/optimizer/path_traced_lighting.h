@@ -44,7 +44,7 @@ public:
     // scene's own layout (lightSampleFloors), fixed for the run; 0: every sample traced.
     // The independent measurements trace every sample. Before the first evaluation.
     void setLightRoulette(double share);
-    const std::vector<double>& lightFloors() const { return options_.lightFloors; }
+    std::vector<double> lightFloors() const override { return options_.lightFloors; }
     CacheCheck cacheCheck() const override { return check_; }
     // Fresh noise: every evaluation draws its own seed (from the seed and a count of
     // evaluations, so a run still repeats), without the path cache. The optimizer then

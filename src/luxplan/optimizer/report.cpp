@@ -133,6 +133,7 @@ std::string reportJson(const Scene& scene, const OptimizerResult& r) {
                   {"value", json::numberOrNull(m.value)}, {"std_error", json::numberOrNull(m.standardError)}, {"target", {json::numberOrNull(s.targetMin), json::numberOrNull(s.targetMax)}},
                   {"tolerance", s.tolerance}, {"weight", s.weight}, {"penalty", json::numberOrNull(lightingPenalty(s, m.value))}};
         if (!m.points.empty()) e["points"] = m.points;
+        if (k < r.lightFloors.size()) e["search_light_floor"] = r.lightFloors[k];
         if (k < r.samplerRanges.size()) {
             const SamplerRange& range = r.samplerRanges[k];
             const ReachVerdict verdict = reachVerdict(s, range, m);
