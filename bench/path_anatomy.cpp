@@ -166,13 +166,13 @@ int main(int argc, char** argv) try {
     std::optional<DaylightEnvironment> daylight;
     if (scene.daylight) daylight = buildDaylight(*scene.daylight, scene.site);
     const EmbreeScene rt(scene, layout);
-    const PathTracer placer(rt, daylight ? &*daylight : nullptr, PathTracerOptions{});
-    const auto sampler = placeSampler(scene.samplers[size_t(samplerIndex)], placer);
+    // Traced as the rows below trace: it places the sampler and runs the floors' pilot.
+    PathTracerOptions tracing;
+    tracing.sunPatches = sunPatches;
+    const PathTracer tracer(rt, daylight ? &*daylight : nullptr, tracing);
+    const auto sampler = placeSampler(scene.samplers[size_t(samplerIndex)], tracer);
     if (item < 0 || item >= sampler->items()) throw std::runtime_error("ITEM " + std::to_string(item) + " is past the sampler's " + std::to_string(sampler->items()) + " items");
-    PathTracerOptions searchTracing;
-    searchTracing.sunPatches = sunPatches;
-    const PathTracer pilot(rt, daylight ? &*daylight : nullptr, searchTracing);
-    const double lightFloor = lightSampleFloors(pilot, lightRoulette, scene.optimizer.seed)[size_t(samplerIndex)];
+    const double lightFloor = lightSampleFloors(tracer, lightRoulette, scene.optimizer.seed)[size_t(samplerIndex)];
     std::printf("%s, item %d, %d paths, sunlit patches %s, light samples' floor %g (%s)\n", argv[3], item, paths,
                 sunPatches ? "on" : "off", lightFloor, scene.samplers[size_t(samplerIndex)].type->unit());
     std::printf("%-16s %9s %11s %9s %7s %8s %9s %12s %10s\n", "surface vertices", "mean", "sd per path", "sd / mean",
