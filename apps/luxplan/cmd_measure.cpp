@@ -113,6 +113,8 @@ void runMeasure(const MeasureArgs& args) {
                                       {"penalty", lightingPenalty(s, r.value)},
                                       {"points", r.points}};
             sampler.update(nlohmann::json(samplerStatisticsJson(s, r)));
+            // The points furniture covers (null in `points`), for every sampler with point statistics.
+            if (s.type->hasPointStatistics()) sampler["covered"] = r.covered;
             // Only when it happened, so that the usual output stays as it was.
             if (r.droppedNonFinite > 0) sampler["dropped_nonfinite"] = r.droppedNonFinite;
             if (options.adaptive) sampler["paths_per_point"] = r.pathsPerPoint;

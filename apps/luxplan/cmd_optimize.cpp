@@ -65,7 +65,8 @@ private:
 
 struct OptimizeArgs {
     std::string scene, out;
-    int iterations = -1, paths = 0, spp = 0, inner = -1, snapshots = 0;
+    int iterations = -1, paths = 0, spp = 0, inner = -1, snapshots = 0, suggestions = 0;
+    std::string start;  // --start LAYOUT.json
     std::optional<uint64_t> seed;
     bool flat = false, quiet = false, noPictures = false, fixedPaths = false, fullEvaluation = false, checkCache = false,
          freshNoise = false, noiseBlind = false, nested = false, cycle = false, singleTest = false;
@@ -161,6 +162,7 @@ int runOptimize(const OptimizeArgs& args) {
     if (args.singleTest) options.delayedAcceptance = false;
     if (args.inner >= 0) options.innerIterations = args.inner;
     options.snapshots = args.snapshots;
+    options.suggestions = args.suggestions;
     if (args.nested) options.focusInner = true;
     if (args.cycle) options.focusInner = false;
     // Flat: the same furniture without groups, kept together by cohesion constraints.
@@ -172,6 +174,13 @@ int runOptimize(const OptimizeArgs& args) {
                       << flattened->cohesionConstraints << " cohesion constraints\n";
     }
     const Scene& scene = flattened ? flattened->scene : original;
+    if (!args.start.empty()) {
+        // The designer's own layout (readLayout names the file and entry of any error:
+        // an unknown or fixed entity, a pose outside its regions).
+        const Layout given = io::readLayout(args.start, original);
+        options.start = StartFrom::Given;
+        options.startLayout = flattened ? flatLayoutOf(original, *flattened, given) : given;
+    }
 
     MeasureOptions measure;
     measure.pathsPerPoint = args.paths > 0 ? args.paths : scene.optimizer.searchPathsPerPoint;
@@ -230,6 +239,14 @@ int runOptimize(const OptimizeArgs& args) {
                         hierarchicalLayoutOf(original, *flattened, result.best));
     } else {
         io::writeLayout(std::filesystem::path(args.out) / "layout.json", scene, result.best);
+    }
+    // The suggestions, in the scene file's hierarchy like layout.json.
+    if (!result.suggestions.empty()) std::filesystem::create_directories(std::filesystem::path(args.out) / "suggestions");
+    for (size_t i = 0; i < result.suggestions.size(); ++i) {
+        const Layout& layout = result.suggestions[i].layout;
+        const std::filesystem::path file = std::filesystem::path(args.out) / suggestionFile(i);
+        if (flattened) io::writeLayout(file, original, hierarchicalLayoutOf(original, *flattened, layout));
+        else io::writeLayout(file, scene, layout);
     }
     std::cout << "optimize: " << result.iterations << " iterations in " << durationText(result.seconds) << " ("
               << stopReasonName(result.stop) << ")";
@@ -364,6 +381,13 @@ void registerOptimizeCommand(CLI::App& app, int& threads) {
                     "Write snapshots.json: the best layout so far at N checkpoints (iteration ceil(iterations (k/N)^2)), "
                     "with its wall time and lighting evaluations")
         ->check(CLI::Range(0, 1000));
+    cmd->add_option("--suggestions", args->suggestions,
+                    "Also write OUTDIR/suggestions/1.json ... K.json: the K best mutually distinct layouts (some movable "
+                    "entity more than 0.5 m or 45 degrees apart, or in another region), each measured again like the result")
+        ->check(CLI::Range(1, kMostSuggestions));
+    cmd->add_option("--start", args->start,
+                    "Start the search from this layout file (as layout.json; entities it does not name keep the scene's "
+                    "placement) instead of a uniform draw");
     cmd->add_flag("-q,--quiet", args->quiet, "No progress line");
     cmd->add_flag("--no-pictures", args->noPictures, "Skip the pictures, scene.glb and report.html");
     cmd->add_option("--spp", args->spp, "Samples per pixel of render.png (default 16)")->check(wholeNumber(1));

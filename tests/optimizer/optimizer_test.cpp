@@ -172,6 +172,7 @@ TEST_F(OptimizerTest, LevelsAndInnerIterations) {
     OptimizerOptions o = optimizerOptions(scene);
     o.iterations = 1000;
     o.stopAtZeroCost = false;
+    o.polishShare = 0;  // the polish's own level: OptimizerTest.ThePolish...
     OptimizerResult r = Optimizer(scene, o).run();
     ASSERT_EQ(r.levels.size(), 2u);
     EXPECT_EQ(r.levels[0].name, "group");
@@ -384,7 +385,7 @@ TEST_F(OptimizerTest, WritesReportAndTrace) {
     std::ifstream trace(out / "trace.csv");
     std::string header, line;
     std::getline(trace, header);
-    EXPECT_EQ(header, "iteration,current,best,feasible");
+    EXPECT_EQ(header, "iteration,current,best,feasible,temperature,acceptance");
     int rows = 0;
     while (std::getline(trace, line)) ++rows;
     EXPECT_EQ(rows, int(r.trace.size()));

@@ -11,8 +11,9 @@ Progress running() {
     p.iteration = 1400, p.iterations = 3000;
     p.current = 0.01612, p.best = 0.01491;
     p.feasible = p.lightingMeasured = true;
-    p.acceptance = {0.52, 0.74, 0.0, 0.0};
-    p.proposed = {700, 500, 0, 0};
+    p.acceptance = {0.52, 0.74, 0.0, 0.0, 0.0};
+    p.proposed = {700, 500, 0, 0, 0};
+    p.temperature = 0.0123, p.recentAcceptance = 0.31;
     p.seconds = 37, p.etaSeconds = 42.4;
     return p;
 }
@@ -20,7 +21,17 @@ Progress running() {
 TEST(ProgressLine, SaysWhereTheSearchIsInWords) {
     EXPECT_EQ(progressLine(running()),
               "iteration 1400 of 3000 | cost 0.0161, best 0.0149 (light and rules) | accepted: translate 52%, rotate 74% | "
-              "37s, about 42s left");
+              "temperature 0.012, 31% accepted lately | 37s, about 42s left");
+    Progress cold = running();
+    cold.temperature = 0.00042;
+    EXPECT_NE(progressLine(cold).find("| temperature 4.2e-04, 31% accepted lately |"), std::string::npos);
+    Progress polish = running();
+    polish.polishing = true;
+    polish.temperature = 0;
+    polish.proposed[4] = 30, polish.acceptance[4] = 0.2;
+    EXPECT_EQ(progressLine(polish),
+              "iteration 1400 of 3000 | cost 0.0161, best 0.0149 (light and rules) | accepted: translate 52%, rotate 74%, "
+              "snap 20% | polishing the best (zero temperature), 31% kept lately | 37s, about 42s left");
 }
 
 TEST(ProgressLine, NamesTheArrangingPhase) {
@@ -31,7 +42,8 @@ TEST(ProgressLine, NamesTheArrangingPhase) {
     p.proposed[3] = 10, p.acceptance[3] = 0.1;
     EXPECT_EQ(progressLine(p),
               "iteration 1400 of 3000 | arranging: no layout keeps every rule within its limit yet (rules' cost 0.8400, "
-              "light not measured) | accepted: translate 52%, rotate 74%, jump 10% | 37s, about 42s left");
+              "light not measured) | accepted: translate 52%, rotate 74%, jump 10% | temperature 0.012, 31% accepted lately | "
+              "37s, about 42s left");
     p.feasible = true;
     EXPECT_EQ(lightingStartsLine(p), "by iteration 1400: a layout keeps every rule within its limit");
     p.lightingMeasured = true;

@@ -46,19 +46,22 @@ struct PointStatistics {
 // min of noisy points is biased low by up to a few of their errors when several points
 // are near the minimum). U0's error is the delta method's, with the covariance of the
 // min point and the mean (its variance over n). An unlit set (mean <= 0) has U0 = 0.
-// No points: all zero.
+// No points: all zero. NaN values (covered points) are left out.
 inline PointStatistics pointStatistics(const std::vector<double>& values, const std::vector<double>& errors) {
     PointStatistics s;
-    const size_t n = values.size();
-    if (n == 0) return s;
     auto error = [&](size_t i) { return i < errors.size() ? errors[i] : 0.0; };
+    // A NaN is a point covered by furniture (SamplerResult::covered): not on the task.
+    size_t n = 0, lo = 0, hi = 0;
     double sum = 0, variance = 0;
-    size_t lo = 0, hi = 0;
-    for (size_t i = 0; i < n; ++i) {
+    for (size_t i = 0; i < values.size(); ++i) {
+        if (std::isnan(values[i])) continue;
+        if (n == 0) lo = hi = i;
+        ++n;
         sum += values[i], variance += error(i) * error(i);
         if (values[i] < values[lo]) lo = i;
         if (values[i] > values[hi]) hi = i;
     }
+    if (n == 0) return s;
     s.mean = {sum / double(n), std::sqrt(variance) / double(n)};
     s.min = {values[lo], error(lo)};
     s.max = {values[hi], error(hi)};

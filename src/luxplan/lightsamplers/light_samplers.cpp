@@ -36,6 +36,7 @@ struct alignas(64) WorkResult {  // a cache line of its own: two threads trace n
     std::array<std::vector<MeanEstimator>, kFolds> folds;
     uint64_t finite[kFolds] = {};  // paths kept, per fold
     uint64_t dropped = 0;
+    uint64_t fresh = 0;  // paths traced afresh (not read from the path cache)
     RayStats stats;
     CacheCheck check;  // MeasureOptions::checkCache (its rays are not counted in `stats`)
 
@@ -44,6 +45,7 @@ struct alignas(64) WorkResult {  // a cache line of its own: two threads trace n
         for (auto& f : folds) f.assign(width, MeanEstimator{});
         std::fill(std::begin(finite), std::end(finite), uint64_t(0));
         dropped = 0;
+        fresh = 0;
         stats = RayStats{};
         check = CacheCheck{};
     }
@@ -145,15 +147,45 @@ std::vector<char> PlacedSampler::stillNeeded(const ItemEstimates& items, double,
 
 Estimate PlacedSampler::combine(const ItemEstimates& items) const {
     Estimate e;
-    if (items.items() == 0) return e;
+    int n = 0;
     double sum = 0, var = 0;
     for (int i = 0; i < items.items(); ++i) {
+        if (covered(i)) continue;  // not on the task: left out
         Estimate x = items.of(i);
-        sum += x.value, var += x.standardError * x.standardError;
+        sum += x.value, var += x.standardError * x.standardError, ++n;
     }
-    e.value = sum / items.items();
-    e.standardError = std::sqrt(var) / items.items();
+    if (n == 0) return e;  // nothing measured, or every point covered: no light on the task
+    e.value = sum / n;
+    e.standardError = std::sqrt(var) / n;
     return e;
+}
+
+std::vector<char> findCoveredPoints(const EmbreeScene& rt, const std::vector<Vec3>& points, Vec3 normal, int carrier) {
+    // Inside a closed solid every ray leaves through a face seen from behind: five rays
+    // from 1 mm above the point (along the normal and tilted 27 degrees four ways) must
+    // all meet, first, the back of another entity's face. The carrier's own faces (the
+    // desk under its work plane) never cover; static geometry is a hard limit elsewhere.
+    std::vector<char> covered(points.size(), 0);
+    const Vec3 n = normalize(normal);
+    const Vec3 a = normalize(std::abs(n.z) < 0.9 ? cross(n, Vec3(0, 0, 1)) : cross(n, Vec3(1, 0, 0)));
+    const Vec3 b = cross(n, a);
+    const Vec3 directions[] = {n, normalize(n + a * 0.5), normalize(n - a * 0.5), normalize(n + b * 0.5),
+                               normalize(n - b * 0.5)};
+    for (size_t i = 0; i < points.size(); ++i) {
+        bool inside = true;
+        for (const Vec3& d : directions) {
+            Ray ray;
+            ray.origin = points[i] + n * 1e-3;
+            ray.direction = d;
+            const std::optional<Hit> hit = rt.intersect(ray);
+            if (!hit || hit->kind != HitKind::Entity || hit->index == carrier || dot(hit->geometricNormal, d) <= 0) {
+                inside = false;
+                break;
+            }
+        }
+        covered[i] = inside;
+    }
+    return covered;
 }
 
 std::unique_ptr<PlacedSampler> placeSampler(const LightSamplerSpec& s, const PathTracer& tracer) {
@@ -161,6 +193,9 @@ std::unique_ptr<PlacedSampler> placeSampler(const LightSamplerSpec& s, const Pat
     std::unique_ptr<PlacedSampler> placed = s.type->place(s.entity >= 0 ? rt.worldFromEntity(s.entity) : Transform());
     const DaylightEnvironment* daylight = tracer.daylight();
     placed->setSources(int(tracer.emitters().size()), daylight ? int(daylight->sunDisks().size()) : 0);
+    Vec3 normal;
+    const std::vector<Vec3> probes = placed->coverageProbes(normal);
+    if (!probes.empty()) placed->setCovered(findCoveredPoints(rt, probes, normal, s.entity));
     return placed;
 }
 
@@ -396,6 +431,7 @@ MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& op
                            cache->visit(index, path, cached != nullptr, askedAgain);
                            if (!cached) cache->keep(index, path, traced, footprint.view());
                        }
+                       if (!cached) ++r.fresh;
                        add(index, path, cached ? *cached : traced);
                    });
     };
@@ -443,6 +479,7 @@ MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& op
                 add(c.index, path, *cached);
                 continue;
             }
+            ++r.fresh;
             if (cache) {
                 const std::array<uint32_t, 2>& end = c.ends[fresh];
                 const FootprintView footprint{
@@ -479,6 +516,11 @@ MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& op
     // items, so each runs its own rounds, all at once: none waits for the others' rounds.
     std::vector<int> traced(work.size(), 0);
     std::vector<char> needed(work.size(), 1), paused(work.size(), 0);
+    // A covered point (furniture on the task) is not traced at all.
+    for (size_t k = 0; k < samplers; ++k)
+        if (placed[k]->anyCovered() && !placed[k]->sharesPaths())
+            for (size_t index = firstWork[k]; index < firstWork[k + 1]; ++index)
+                if (placed[k]->covered(int(index - firstWork[k]))) needed[index] = 0;
     // Sampler k's result once its paths are all in: on the thread that traced them, while
     // the other samplers still trace (a result's estimates and error take tens of
     // microseconds, and done serially after the rounds they left a core idle).
@@ -489,9 +531,17 @@ MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& op
         for (size_t index = firstWork[k]; index < firstWork[k + 1]; ++index) {
             r.droppedNonFinite += done[index].dropped;
             r.pathsPerPoint = std::max(r.pathsPerPoint, traced[index]);
+            r.paths += uint64_t(traced[index]);
+            r.freshPaths += done[index].fresh;
         }
         if (firstWork[k + 1] == firstWork[k]) return;
         for (int i = 0; i < e.items(); ++i) {
+            if (placed[k]->covered(i)) {
+                r.points.push_back(std::numeric_limits<double>::quiet_NaN());
+                r.pointErrors.push_back(std::numeric_limits<double>::quiet_NaN());
+                r.covered.push_back(i);
+                continue;
+            }
             Estimate x = e.of(i);
             r.points.push_back(x.value);
             r.pointErrors.push_back(x.standardError);

@@ -28,6 +28,10 @@ public:
     void sample(const PathTracer& tracer, int item, PathSamples& samples, RayStats& stats, PathContributions& out) const override {
         out.add(tracer.sample(CosineSensor(points_[size_t(item)], normal_), samples, stats));
     }
+    std::vector<Vec3> coverageProbes(Vec3& normal) const override {
+        normal = normal_;
+        return points_;
+    }
     SamplerDrawing drawing() const override {
         SamplerDrawing d;
         d.outline = corners_;

@@ -41,11 +41,18 @@ struct GlareSurvey {
 struct SamplerResult {
     double value = 0;              // in the type's unit (lx, cd/m2)
     double standardError = 0;      // of `value`, from the per-item sample variances
-    std::vector<double> points;    // per item: the type's points or strata, in its order
+    std::vector<double> points;    // per item: the type's points or strata, in its order (NaN: covered)
     std::vector<double> pointErrors;
     uint64_t droppedNonFinite = 0; // NaN/inf path samples left out (core/estimator.h)
     int pathsPerPoint = 0;         // traced per item, the most over its items (fewer than asked when adaptive)
+    // Paths over all its items, and of them those traced afresh, not read from the path
+    // cache: under common random numbers only these can differ from the last committed
+    // layout's, so they bound the noise of a difference of two estimates.
+    uint64_t paths = 0, freshPaths = 0;
     std::optional<GlareSurvey> glare = std::nullopt;  // what a ugr or dgp sampler's value is made of
+    // Planar samplers: the points covered by furniture (inside another entity's solid),
+    // left out of the value and the statistics; their `points` entries are NaN.
+    std::vector<int> covered = {};
 };
 
 }  // namespace luxplan

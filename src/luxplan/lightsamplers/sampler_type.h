@@ -5,6 +5,8 @@
 // docs/architecture.md walks through adding one.
 #pragma once
 
+#include <algorithm>
+
 #include <array>
 #include <bit>
 #include <cmath>
@@ -188,6 +190,18 @@ public:
     // Default: no more than the value's interval says.
     virtual double lowerEnd(const ItemEstimates& /*items*/, double /*z*/) const { return -kInf; }
     virtual SamplerDrawing drawing() const = 0;
+    // The points a layout's furniture covers (planar samplers: findCoveredPoints), one
+    // flag per item; none are traced and the default combine() leaves them out.
+    virtual std::vector<Vec3> coverageProbes(Vec3& normal) const {
+        (void)normal;
+        return {};
+    }
+    void setCovered(std::vector<char> covered) { covered_ = std::move(covered); }
+    bool covered(int item) const { return size_t(item) < covered_.size() && covered_[size_t(item)]; }
+    bool anyCovered() const { return std::find(covered_.begin(), covered_.end(), char(1)) != covered_.end(); }
+
+private:
+    std::vector<char> covered_;
 };
 
 // Where a sampler is in the scene: the inner boxes of the scene's rooms (world

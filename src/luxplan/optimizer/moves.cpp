@@ -1,6 +1,7 @@
 // Translation, rotation, swap and jump proposals, and their selection per level.
 #include <luxplan/optimizer/moves.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -15,6 +16,7 @@ const char* moveName(MoveType type) {
         case MoveType::Rotate: return "rotate";
         case MoveType::Swap: return "swap";
         case MoveType::Jump: return "jump";
+        case MoveType::Snap: return "snap";
     }
     return "?";
 }
@@ -22,6 +24,41 @@ const char* moveName(MoveType type) {
 double sampleStandardNormal(Rng& rng) {
     double u1 = rng.uniform(), u2 = rng.uniform();
     return std::sqrt(-2.0 * std::log(1.0 - u1)) * std::cos(2 * kPi * u2);
+}
+
+double stepFraction(const MoveOptions& options, Rng& rng) {
+    const auto& scales = options.stepScales;
+    if (scales.empty()) return options.sigmaFraction;
+    if (scales.size() == 1) return options.sigmaFraction * scales[0];
+    return options.sigmaFraction * scales[rng.uniformInt(uint32_t(scales.size()))];
+}
+
+// The entity's rotation in the world: its own plus every ancestor's (entities turn
+// about z only).
+static double worldRotationOfParent(const Scene& scene, const Layout& layout, int entity) {
+    double r = 0;
+    for (int a = scene.entities[size_t(entity)].parent; a >= 0; a = scene.entities[size_t(a)].parent)
+        r += layout.placements[size_t(a)].rotationDeg;
+    return r;
+}
+
+bool snapMove(const Entity& entity, Placement& p, double parentWorldDeg) {
+    const Region& r = entity.regions.at(size_t(p.region));
+    const double world = parentWorldDeg + p.rotationDeg;
+    const double snapped = 90.0 * std::round(world / 90.0) - parentWorldDeg;
+    if (std::abs(snapped - p.rotationDeg) < 1e-9) return false;  // already on a quarter turn
+    if (!r.continuousRotation) {
+        for (double a : distinctRotations(r))
+            if (sameRotation(a, snapped)) {
+                p.rotationDeg = a;
+                return true;
+            }
+        return false;
+    }
+    const double a = fullTurn(r) ? normalizeRotation(r, snapped) : snapped;
+    if (!fullTurn(r) && (a < r.rotationMinDeg - 1e-9 || a > r.rotationMaxDeg + 1e-9)) return false;
+    p.rotationDeg = std::clamp(a, r.rotationMinDeg, r.rotationMaxDeg);
+    return true;
 }
 
 bool translateMove(const Entity& entity, Placement& p, double sigmaFraction, Rng& rng) {
@@ -105,6 +142,10 @@ MoveSet::MoveSet(const Scene& scene, std::vector<int> entities, MoveOptions opti
                 siblings_[size_t(e)].push_back(o);
         if (translates) candidates_[int(MoveType::Translate)].push_back(e);
         if (rotates) candidates_[int(MoveType::Rotate)].push_back(e);
+        if (options_.polish) {
+            if (rotates) candidates_[int(MoveType::Snap)].push_back(e);
+            continue;
+        }
         if (!siblings_[size_t(e)].empty()) candidates_[int(MoveType::Swap)].push_back(e);
         if (entity.regions.size() > 1) candidates_[int(MoveType::Jump)].push_back(e);
     }
@@ -127,8 +168,9 @@ Proposal MoveSet::apply(MoveType type, int entity, Layout& layout, Rng& rng) con
     const Entity& e = scene_->entities[size_t(entity)];
     Placement& placement = layout.placements[size_t(entity)];
     switch (type) {
-        case MoveType::Translate: p.valid = translateMove(e, placement, options_.sigmaFraction, rng); break;
-        case MoveType::Rotate: p.valid = rotateMove(e, placement, options_.sigmaFraction, rng); break;
+        case MoveType::Translate: p.valid = translateMove(e, placement, stepFraction(options_, rng), rng); break;
+        case MoveType::Rotate: p.valid = rotateMove(e, placement, stepFraction(options_, rng), rng); break;
+        case MoveType::Snap: p.valid = snapMove(e, placement, worldRotationOfParent(*scene_, layout, entity)); break;
         case MoveType::Swap: {
             const auto& partners = siblings_[size_t(entity)];
             if (partners.empty()) break;

@@ -11,10 +11,12 @@
 
 namespace luxplan {
 
-enum class MoveType { Translate, Rotate, Swap, Jump };
-inline constexpr int kMoveTypeCount = 4;
-inline constexpr std::array<MoveType, kMoveTypeCount> kMoveTypes{MoveType::Translate, MoveType::Rotate,
-                                                                  MoveType::Swap, MoveType::Jump};
+// Snap (the polish only): the rotation to the nearest quarter turn of the room, when the
+// region allows it.
+enum class MoveType { Translate, Rotate, Swap, Jump, Snap };
+inline constexpr int kMoveTypeCount = 5;
+inline constexpr std::array<MoveType, kMoveTypeCount> kMoveTypes{MoveType::Translate, MoveType::Rotate, MoveType::Swap,
+                                                                  MoveType::Jump, MoveType::Snap};
 const char* moveName(MoveType type);
 
 // The paper's sigma_i: 25% of the interval's size.
@@ -49,10 +51,29 @@ bool swapMove(const Entity& a, Placement& pa, const Entity& b, Placement& pb);
 // in size. The entity needs two regions or more.
 double jumpMove(const Entity& entity, Placement& placement, Rng& rng);
 
+// Step sizes of translate and rotate: each proposal draws its sigma uniformly from
+// sigmaFraction x each scale. A mixture of symmetric kernels is symmetric, so no
+// Hastings factor is needed; the coarse scale (the paper's 25%) crosses the room, the
+// fine ones place the last centimetres and degrees a coarse step almost never hits.
+inline constexpr std::array<double, 3> kDefaultStepScales{1.0, 0.2, 0.04};
+
+// Snap: the rotation to the nearest quarter turn of the room (its world rotation a
+// multiple of 90 degrees, `parentWorldDeg` being its ancestors' turn), if the region
+// allows that rotation; false when it is on one already or the region does not.
+bool snapMove(const Entity& entity, Placement& placement, double parentWorldDeg);
+
 struct MoveOptions {
     double sigmaFraction = kDefaultSigmaFraction;
+    std::vector<double> stepScales{kDefaultStepScales.begin(), kDefaultStepScales.end()};
     bool jumpHastings = true;  // false: the paper's plain symmetric treatment of jumps
+    // The polish's moves (Optimizer::polish): translate and rotate only, at the fine
+    // scales, plus a snap of the rotation to the nearest quarter turn of the room.
+    bool polish = false;
 };
+
+// The sigma fraction of one translate or rotate proposal: sigmaFraction times a scale
+// drawn uniformly from stepScales (one draw of the stream only when there are two or more).
+double stepFraction(const MoveOptions& options, Rng& rng);
 
 // What a proposal did.
 struct Proposal {

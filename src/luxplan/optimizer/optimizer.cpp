@@ -22,6 +22,10 @@ constexpr uint64_t kIndependentTag = 0x696e646570ULL;  // "indep"
 constexpr uint64_t kSelectionStream = 1, kReportStream = 2;
 // The noise floor follows the last ~64 lighting evaluations.
 constexpr double kNoiseMemory = 1.0 / 64;
+constexpr uint64_t kPolishStream = 4;
+// The polish's step scales, times MoveOptions::sigmaFraction: 5%, 1% and 0.25% of a
+// region's extent (7 m: 35 cm, 7 cm, 2 cm).
+constexpr double kPolishScales[] = {0.2, 0.04, 0.01};
 
 }  // namespace
 
@@ -58,7 +62,8 @@ OptimizerOptions optimizerOptions(const Scene& scene) {
 
 Optimizer::Optimizer(const Scene& scene, OptimizerOptions options, LightingEvaluator* lighting)
     : scene_(&scene), options_(options), lighting_(lighting), geometry_(scene),
-      candidates_(scene, options.candidates, options.candidateSeparation) {
+      candidates_(scene, options.candidates, options.candidateSeparation),
+      suggestions_(scene, std::max(1, options.suggestions), options.suggestionSeparation) {
     auto check = [](bool ok, const char* what) {
         if (!ok) throw std::invalid_argument(std::string("optimizer options: ") + what);
     };
@@ -73,6 +78,11 @@ Optimizer::Optimizer(const Scene& scene, OptimizerOptions options, LightingEvalu
     check(options_.candidates >= 1, "candidates must be >= 1");
     check(options_.candidateSeparation.metres >= 0 && options_.candidateSeparation.degrees >= 0,
           "candidate separation must be >= 0");
+    check(options_.polishShare >= 0 && options_.polishShare < 1, "polish share must be in [0, 1)");
+    check(options_.suggestions >= 0, "suggestions must be >= 0");
+    check(options_.start != StartFrom::Given ||
+              (options_.startLayout && options_.startLayout->placements.size() == scene.entities.size()),
+          "a given start needs a layout of every entity");
 
     std::vector<int> all, outer, inner;
     for (size_t i = 0; i < scene.entities.size(); ++i) {
@@ -95,6 +105,14 @@ Optimizer::Optimizer(const Scene& scene, OptimizerOptions options, LightingEvalu
         addLevel("object", inner, kObjectStream);
     }
     if (levels_.size() == 2) setUpNesting(outer, inner);
+    // A constant schedule is a plain Metropolis chain (the tests sample its law): no polish.
+    if (options_.polishShare > 0 && !all.empty() && options_.schedule.kind == Schedule::Kind::Geometric) {
+        MoveOptions fine = options_.moves;
+        fine.polish = true;
+        fine.stepScales.assign(std::begin(kPolishScales), std::end(kPolishScales));
+        MoveSet polish(scene, all, fine);
+        if (!polish.empty()) polishSets_.push_back(std::move(polish));
+    }
     traceEvery_ = options_.traceEvery > 0 ? options_.traceEvery : std::max(1, options_.iterations / kTraceRows);
 }
 
@@ -150,13 +168,18 @@ double Optimizer::differenceVariance(const Evaluation& a, const Evaluation& b) c
     // count as independent estimates, which overstates the difference's noise when
     // they share paths (common random numbers): the test is then the stricter.
     const double w = scene_->objective.lightingWeight;
+    // Of a changed sampler, only the paths `b` traced afresh can differ from `a`'s (the
+    // rest are read from the path cache, the same numbers): their share of its variance
+    // counts, and those are counted as independent of `a`'s, an upper bound (they share
+    // random numbers). An evaluation that traced every path (no cache, fresh noise) counts whole.
     double variance = 0;
     const auto &x = a.samplers.samplers, &y = b.samplers.samplers;
     if (x.size() != scene_->samplers.size() || y.size() != x.size()) return 0.0;
     for (size_t k = 0; k < x.size(); ++k) {
         if (x[k].value == y[k].value) continue;
+        const double share = y[k].paths > 0 ? std::min(1.0, double(y[k].freshPaths) / double(y[k].paths)) : 1.0;
         const double ex = w * lightingTermError(*scene_, k, x[k]), ey = w * lightingTermError(*scene_, k, y[k]);
-        variance += ex * ex + ey * ey;
+        variance += share * (ex * ex + ey * ey);
     }
     return variance;
 }
@@ -201,14 +224,22 @@ void Optimizer::refreshCurrent() {
     e.cost = scene_->objective.cost(e.lighting, e.geometry);
 }
 
-void Optimizer::noteNoise(const Evaluation& e) {
-    if (!e.lightingEvaluated) return;
-    const double v = e.costError * e.costError;
-    noiseVariance_ += (v - noiseVariance_) * kNoiseMemory;
+void Optimizer::noteNoise(const Evaluation& proposed) {
+    if (!proposed.lightingEvaluated || !currentEval_.lightingEvaluated) return;
+    // The noise of the decision the test makes: that of the estimated difference.
+    const double v = differenceVariance(currentEval_, proposed);
+    ++noiseCount_;
+    noiseVariance_ += (v - noiseVariance_) * std::max(kNoiseMemory, 1.0 / double(noiseCount_));
+}
+
+int Optimizer::searchIterations() const {
+    if (polishSets_.empty()) return options_.iterations;
+    return options_.iterations - int(std::lround(options_.iterations * options_.polishShare));
 }
 
 double Optimizer::temperature() const {
-    const double t = options_.schedule.temperature(iteration_, options_.iterations);
+    if (polishing_) return 0.0;
+    const double t = options_.schedule.temperature(iteration_, searchIterations());
     if (!options_.noiseAware || options_.schedule.kind == Schedule::Kind::Constant) return t;
     return std::max(t, std::sqrt(noiseVariance_));
 }
@@ -218,15 +249,21 @@ void Optimizer::initialize(const std::function<void(int drawn, int most)>& drawi
     const auto started = Clock::now();
     auto lastHeard = started;
     samplerRanges_.clear();
+    stats_.resize(levels_.size());  // a polish's level of the last run goes
     for (size_t i = 0; i < levels_.size(); ++i) {
         rngs_[i] = Rng(hashValues({options_.seed, kStreamTag, streams_[i]}));
         stats_[i].moves = {};
     }
+    polishRng_ = Rng(hashValues({options_.seed, kStreamTag, kPolishStream}));
+    polishing_ = false;
+    polishFrom_ = options_.iterations;
+    windowProposed_ = windowAccepted_ = progressProposed_ = progressAccepted_ = 0;
     geometry_.revert();
     Rng rng(hashValues({options_.seed, kStreamTag, kStartStream}));
     Layout base = initialLayout(*scene_);
     Layout start = base;
-    if (options_.start == StartFrom::Scene) {
+    if (options_.start == StartFrom::Given) start = *options_.startLayout;
+    if (options_.start == StartFrom::Scene || options_.start == StartFrom::Given) {
         for (size_t i = 0; i < scene_->entities.size(); ++i)
             if (scene_->entities[i].movable() && start.placements[i].region < 0)
                 start.placements[i] = samplePlacement(scene_->entities[i], base.placements[i].position.z, rng);
@@ -260,9 +297,11 @@ void Optimizer::initialize(const std::function<void(int drawn, int most)>& drawi
     iteration_ = bestIteration_ = confirmations_ = independentMeasurements_ = 0;
     lightingEvaluations_ = 0;
     innerLeft_ = 0, focus_ = -1;
-    noiseVariance_ = currentEval_.costError * currentEval_.costError;
+    noiseVariance_ = 0, noiseCount_ = 0;
     candidates_.clear();
     candidates_.offer(current_, currentEval_, 0);
+    suggestions_.clear();
+    suggestions_.offer(current_, currentEval_, 0);
     trace_.clear();
     record();
     initialized_ = true;
@@ -334,13 +373,92 @@ const MoveSet& Optimizer::nextMoves(int& level) {
 }
 
 void Optimizer::record() {
-    trace_.push_back({iteration_, currentEval_.cost, feasible_ ? bestEval_.cost : kInf, !currentEval_.rejected});
+    const double acceptance = windowProposed_ > 0 ? double(windowAccepted_) / double(windowProposed_) : 0.0;
+    trace_.push_back({iteration_, currentEval_.cost, feasible_ ? bestEval_.cost : kInf, !currentEval_.rejected,
+                      temperature(), acceptance});
+    windowProposed_ = windowAccepted_ = 0;
+}
+
+void Optimizer::startPolish() {
+    // From the best layout, measured again by the search's own estimator (the best's
+    // cost may be a confirmation's, from other random numbers).
+    polishing_ = true;
+    polishFrom_ = iteration_;
+    stats_.push_back({"polish", polishSets_[0].entities(), {}});
+    if (lighting_) lighting_->revert();
+    geometry_.revert();
+    const std::vector<Transform> world = worldTransforms(*scene_, best_);
+    Evaluation e = evaluate(best_, world);
+    geometry_.commit();
+    if (lighting_) lighting_->commit();
+    current_ = best_;
+    currentEval_ = std::move(e);
+}
+
+void Optimizer::polishStep() {
+    Layout proposed = current_;
+    Proposal p = polishSets_[0].propose(proposed, polishRng_);
+    MoveStats& s = stats_.back().moves[int(p.type)];
+    ++s.proposed;
+    bool accept = false;
+    Evaluation e;
+    if (!p.valid) {
+        ++s.outside;
+    } else {
+        const std::vector<Transform> world = worldTransforms(*scene_, proposed);
+        const uint64_t tracedBefore = lighting_ ? lighting_->tracedPaths() : 0;
+        e = evaluateGeometry(world);
+        const double w = scene_->objective.lightingWeight;
+        if (e.rejected) {
+            ++s.rejectedGeometry;
+        } else if ((1 - w) * e.geometry > currentEval_.cost) {
+            ++s.screened;  // no light could bring C down to the current cost
+        } else {
+            addLighting(e, proposed, world);
+            accept = e.cost <= currentEval_.cost;
+        }
+        if (lighting_) s.pathsTraced += lighting_->tracedPaths() - tracedBefore;
+        if (accept) geometry_.commit();
+        else geometry_.revert();
+        if (lighting_) accept ? lighting_->commit() : lighting_->revert();
+    }
+    ++iteration_;
+    ++windowProposed_, ++progressProposed_;
+    if (accept) {
+        ++s.accepted;
+        acceptProposal(std::move(proposed), std::move(e));
+    }
+    if (iteration_ % traceEvery_ == 0) record();
+}
+
+void Optimizer::acceptProposal(Layout proposed, Evaluation e) {
+    ++windowAccepted_, ++progressAccepted_;
+    current_ = std::move(proposed);
+    currentEval_ = std::move(e);
+    candidates_.offer(current_, currentEval_, iteration_);
+    if (options_.suggestions > 0) suggestions_.offer(current_, currentEval_, iteration_);
+    bool better = !feasible_ || currentEval_.cost < bestEval_.cost;
+    if (!currentEval_.rejected && better) {
+        feasible_ = true;
+        best_ = current_;
+        bestEval_ = currentEval_;
+        bestIteration_ = iteration_;
+    } else if (!feasible_) {
+        best_ = current_;  // the least violating layout so far
+        bestEval_ = currentEval_;
+        bestIteration_ = iteration_;
+    }
 }
 
 void Optimizer::step() {
     if (!initialized_) initialize();
     if (levels_.empty()) {
         ++iteration_;
+        return;
+    }
+    if (!polishing_ && feasible_ && !polishSets_.empty() && iteration_ >= searchIterations()) startPolish();
+    if (polishing_) {
+        polishStep();
         return;
     }
     int level = 0;
@@ -386,29 +504,17 @@ void Optimizer::step() {
             }
         }
         if (lighting_) stats.pathsTraced += lighting_->tracedPaths() - tracedBefore;
-        noteNoise(e);
+        if (options_.noiseAware && !currentEval_.rejected) noteNoise(e);
         if (e.rejected && !accept) ++stats.rejectedGeometry;
         if (accept) geometry_.commit();
         else geometry_.revert();
         if (lighting_) accept ? lighting_->commit() : lighting_->revert();
     }
     ++iteration_;
+    ++windowProposed_, ++progressProposed_;
     if (accept) {
         ++stats.accepted;
-        current_ = std::move(proposed);
-        currentEval_ = std::move(e);
-        candidates_.offer(current_, currentEval_, iteration_);
-        bool better = !feasible_ || currentEval_.cost < bestEval_.cost;
-        if (!currentEval_.rejected && better) {
-            feasible_ = true;
-            best_ = current_;
-            bestEval_ = currentEval_;
-            bestIteration_ = iteration_;
-        } else if (!feasible_) {
-            best_ = current_;  // the least violating layout so far
-            bestEval_ = currentEval_;
-            bestIteration_ = iteration_;
-        }
+        acceptProposal(std::move(proposed), std::move(e));
     }
     if (iteration_ % traceEvery_ == 0) record();
 }
@@ -433,6 +539,9 @@ OptimizerResult Optimizer::run(const ProgressCallback& progress, const std::atom
         pr.feasible = !currentEval_.rejected;
         pr.lightingMeasured = currentEval_.lightingEvaluated;
         pr.temperature = temperature();
+        pr.polishing = polishing_;
+        pr.recentAcceptance = progressProposed_ > 0 ? double(progressAccepted_) / double(progressProposed_) : 0.0;
+        progressProposed_ = progressAccepted_ = 0;
         for (MoveType t : kMoveTypes) {
             MoveStats total;
             for (const auto& level : stats_) {
@@ -510,6 +619,7 @@ OptimizerResult Optimizer::run(const ProgressCallback& progress, const std::atom
 
     OptimizerResult r;
     chooseResult(r);
+    chooseSuggestions(r);
     // The per-term breakdown of the result; the cache goes back to the current layout.
     r.bestGeometry = geometry_.evaluate(worldTransforms(*scene_, r.best), /* breakdown = */ true);
     geometry_.revert();
@@ -527,6 +637,7 @@ OptimizerResult Optimizer::run(const ProgressCallback& progress, const std::atom
     r.trace = trace_;
     r.snapshots = std::move(snapshots);
     r.lightingEvaluations = lightingEvaluations_;
+    r.polishFrom = polishFrom_;
     if (lighting_) r.cacheCheck = lighting_->cacheCheck(), r.lightFloors = lighting_->lightFloors();
     r.options = options_;
     return r;
@@ -580,6 +691,35 @@ void Optimizer::chooseResult(OptimizerResult& r) {
     r.bestEvaluation = measure(c.layout, c.search, kReportStream);
     r.reportSeed = independentSeed(kReportStream);
     r.candidates = all;
+}
+
+void Optimizer::chooseSuggestions(OptimizerResult& r) {
+    if (options_.suggestions <= 0 || !feasible_) return;
+    // The result is a suggestion: it takes the place of the one it is the same as.
+    Candidate result{r.best, r.bestSearchEvaluation, r.bestEvaluation, r.bestIteration};
+    std::vector<Candidate> list;
+    for (const Candidate& c : suggestions_.all())
+        if (!sameCandidate(*scene_, c.layout, result.layout, options_.suggestionSeparation)) list.push_back(c);
+    const bool measured = lighting_ && !scene_->samplers.empty();
+    for (Candidate& c : list) {
+        Evaluation e = c.search;
+        if (measured) {
+            ++independentMeasurements_;
+            e.lighting = lighting_->measureIndependently(c.layout, worldTransforms(*scene_, c.layout), &e.samplers,
+                                                         independentSeed(kReportStream));
+            e.lightingEvaluated = true;
+            e.costError = costError(e);
+            e.cost = scene_->objective.cost(e.lighting, e.geometry);
+        }
+        c.independent = e;
+    }
+    list.push_back(result);
+    std::vector<size_t> order(list.size());
+    std::vector<double> cost(list.size());
+    for (size_t i = 0; i < list.size(); ++i) order[i] = i, cost[i] = list[i].independent ? list[i].independent->cost : kInf;
+    std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return cost[a] < cost[b]; });
+    order.resize(std::min(order.size(), size_t(options_.suggestions)));
+    for (size_t i : order) r.suggestions.push_back(std::move(list[i]));
 }
 
 }  // namespace luxplan

@@ -8,6 +8,7 @@
 #include <atomic>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -28,7 +29,8 @@ enum class Hierarchy { Hierarchical, Flat };
 // Uniform: the paper's start, every movable entity drawn uniformly from its regions
 // (redrawn until no geometric term rejects, up to `startAttempts` draws). Scene: the
 // placement the scene file gives (entities outside their regions drawn uniformly).
-enum class StartFrom { Uniform, Scene };
+// Given: OptimizerOptions::startLayout (a designer's own layout, optimize --start).
+enum class StartFrom { Uniform, Scene, Given };
 
 // Temperature T of the Metropolis test exp(-(C' - C) / T). Costs are dimensionless:
 // every penalty is 1 at its rule's elastic limit. Geometric cooling (Kirkpatrick et
@@ -70,8 +72,10 @@ struct OptimizerOptions {
     // it with an independent measurement (LightingEvaluator::measureIndependently); a
     // confirmed C above 0 replaces the best layout's estimate and the run goes on.
     bool stopAtZeroCost = true;
-    // Noise-aware: a geometric schedule's temperature never falls below the cost's
-    // noise (the RMS standard error of the recent estimates of C), and when the
+    // Noise-aware: a geometric schedule's temperature never falls below the noise of the
+    // decisions it makes (the RMS standard error of the recent proposals' estimated
+    // differences of C: under common random numbers only the samplers that changed and,
+    // of their paths, those traced afresh count), and when the
     // lighting evaluator draws every estimate anew the Metropolis test is the penalty
     // method of Ceperley and Dewing (1999), exp(-dC / T - s^2 / (2 T^2)) with s the
     // standard error of dC. Off: the plain test on the estimates, as the paper does.
@@ -88,6 +92,18 @@ struct OptimizerOptions {
     // the best of those measurements is the result, measured once more for the report.
     int candidates = 4;
     CandidateSeparation candidateSeparation;
+    // The polish: this share of `iterations` ends the run as a descent from the best
+    // layout at zero temperature (a proposal is kept when C does not rise), with
+    // translate and rotate at the fine step scales only and the snap to the room's
+    // quarter turns (MoveOptions::polish). The schedule cools over the iterations before
+    // it. 0: no polish; a constant schedule (a plain chain) has none either.
+    double polishShare = 0.2;
+    // Suggestions: how many mutually distinct layouts (optimize --suggestions) to keep
+    // beside the result, and what distinct means for them (0: none).
+    int suggestions = 0;
+    CandidateSeparation suggestionSeparation{0.5, 45};
+    // StartFrom::Given's layout (optimize --start): every movable entity placed.
+    std::optional<Layout> startLayout;
     // Best-so-far snapshots (OptimizerResult::snapshots) at this many checkpoints,
     // iteration ceil(iterations (k / n)^2) for k = 1..n (dense early, where the cost
     // falls fastest), and where the run stops; 0: none.
@@ -122,6 +138,8 @@ struct TracePoint {
     double current = 0;
     double best = 0;        // kInf while no feasible layout has been found
     bool feasible = false;  // the current layout passes the geometric test
+    double temperature = 0;  // of the Metropolis test (0 in the polish)
+    double acceptance = 0;   // of the proposals since the previous row
 };
 
 // The best layout so far at a checkpoint of the run, with what it had cost to find:
@@ -142,6 +160,8 @@ const char* stopReasonName(StopReason reason);
 struct Progress {
     int iteration = 0, iterations = 0;
     double current = 0, best = 0, temperature = 0;
+    double recentAcceptance = 0;  // of the proposals since the previous callback
+    bool polishing = false;       // in the final zero-temperature polish
     bool feasible = false;          // the chain's layout passes the geometric rules
     bool lightingMeasured = false;  // ... and its cost includes the light (L)
     std::array<double, kMoveTypeCount> acceptance{};  // per move type, over the run so far
@@ -180,6 +200,10 @@ struct OptimizerResult {
     int64_t lightingEvaluations = 0;  // by the chain (not the final measurements)
     CacheCheck cacheCheck;  // the lighting evaluator's, when it checked its cache
     std::vector<double> lightFloors;  // the search's light samples' roulette, per sampler (empty: off)
+    // OptimizerOptions::suggestions: distinct layouts, best independent measurement
+    // first (the report seed), the result's own among them.
+    std::vector<Candidate> suggestions;
+    int polishFrom = 0;  // the iteration the polish began at (iterations: none)
     OptimizerOptions options;
 };
 
@@ -207,6 +231,8 @@ public:
     // The temperature of the next Metropolis test: the schedule's, raised to the cost's
     // noise when noise-aware (geometric schedules only: a constant one is a plain chain).
     double temperature() const;
+    // Whether the run is in its final zero-temperature polish.
+    bool polishing() const { return polishing_; }
     const std::vector<LevelStats>& levels() const { return stats_; }
     // Evaluates a layout: G first, the lighting hook only when nothing rejects. The
     // overlap cache follows the layout until step() commits or reverts it.
@@ -230,13 +256,22 @@ private:
     bool lightingStage(const Evaluation& proposed, double temperature, Rng& rng) const;
     // The variance of the estimated difference of C between two evaluations.
     double differenceVariance(const Evaluation& a, const Evaluation& b) const;
-    void noteNoise(const Evaluation& e);
+    void noteNoise(const Evaluation& proposed);
+    // The polish: from the best layout, zero temperature, fine steps (OptimizerOptions::polishShare).
+    void startPolish();
+    // The bookkeeping of an accepted proposal: current, candidates, best.
+    void acceptProposal(Layout proposed, Evaluation e);
+    void polishStep();
+    int searchIterations() const;
     void refreshCurrent();
     double costError(const Evaluation& e) const;
     // The seed of independent measurement stream `stream`: not the search's.
     uint64_t independentSeed(uint64_t stream) const;
     // The result: the candidates measured independently, the best of them measured again.
     void chooseResult(OptimizerResult& r);
+    // OptimizerOptions::suggestions: the distinct layouts kept, each measured with the
+    // report's seed, the result among them, best measurement first.
+    void chooseSuggestions(OptimizerResult& r);
 
     const Scene* scene_;
     OptimizerOptions options_;
@@ -263,7 +298,15 @@ private:
     int64_t lightingEvaluations_ = 0;
     std::vector<TracePoint> trace_;
     Candidates candidates_;
-    double noiseVariance_ = 0;  // moving mean of costError^2 over lighting evaluations
+    double noiseVariance_ = 0;  // moving mean of the decisions' variance over lit proposals
+    int64_t noiseCount_ = 0;
+    std::vector<MoveSet> polishSets_;  // one over every movable entity (empty: nothing to polish)
+    Rng polishRng_{0};
+    bool polishing_ = false;
+    int polishFrom_ = 0;
+    int64_t windowProposed_ = 0, windowAccepted_ = 0;  // since the last trace row
+    int64_t progressProposed_ = 0, progressAccepted_ = 0;  // since the last progress callback
+    Candidates suggestions_;
     std::vector<SamplerRange> samplerRanges_;
 };
 

@@ -18,6 +18,12 @@ std::string cost(double c) {
     return fixed(c, std::abs(c) >= 10 ? 1 : std::abs(c) >= 1 ? 3 : 4);
 }
 
+std::string temperatureText(double t) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, t >= 0.01 ? "%.3f" : "%.1e", t);
+    return buf;
+}
+
 }  // namespace
 
 std::string durationText(double seconds) {
@@ -43,6 +49,8 @@ std::string progressLine(const Progress& p) {
         moves += (moves.empty() ? "" : ", ") + std::string(moveName(t)) + " " + fixed(100 * p.acceptance[int(t)], 0) + "%";
     }
     if (!moves.empty()) line += " | accepted: " + moves;
+    if (p.polishing) line += " | polishing the best (zero temperature), " + fixed(100 * p.recentAcceptance, 0) + "% kept lately";
+    else line += " | temperature " + temperatureText(p.temperature) + ", " + fixed(100 * p.recentAcceptance, 0) + "% accepted lately";
     line += " | " + durationText(p.seconds);
     if (p.iteration < p.iterations) line += ", about " + durationText(p.etaSeconds) + " left";
     return line;

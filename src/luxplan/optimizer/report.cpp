@@ -133,6 +133,7 @@ std::string reportJson(const Scene& scene, const OptimizerResult& r) {
                   {"value", json::numberOrNull(m.value)}, {"std_error", json::numberOrNull(m.standardError)}, {"target", {json::numberOrNull(s.targetMin), json::numberOrNull(s.targetMax)}},
                   {"tolerance", s.tolerance}, {"weight", s.weight}, {"penalty", json::numberOrNull(lightingPenalty(s, m.value))}};
         if (!m.points.empty()) e["points"] = m.points;
+        if (s.type->hasPointStatistics()) e["covered"] = m.covered;
         if (k < r.lightFloors.size()) e["search_light_floor"] = r.lightFloors[k];
         if (k < r.samplerRanges.size()) {
             const SamplerRange& range = r.samplerRanges[k];
@@ -166,6 +167,15 @@ std::string reportJson(const Scene& scene, const OptimizerResult& r) {
         levels.push_back({{"name", level.name}, {"entities", entities}, {"moves", m}});
     }
     j["moves"] = moves;
+    if (!r.suggestions.empty()) {
+        Json list = Json::array();
+        for (size_t i = 0; i < r.suggestions.size(); ++i) {
+            const Evaluation& e = *r.suggestions[i].independent;
+            list.push_back({{"file", suggestionFile(i)}, {"C", json::numberOrNull(e.cost)},
+                            {"C_std_error", json::numberOrNull(e.costError)}, {"iteration", r.suggestions[i].iteration}});
+        }
+        j["suggestions"] = list;
+    }
     j["levels"] = levels;
     if (r.cacheCheck.on) {  // optimize --check-cache
         Json first = Json::array();
@@ -192,9 +202,15 @@ std::string reportJson(const Scene& scene, const OptimizerResult& r) {
         {"jump_hastings", o.moves.jumpHastings},
         {"stop_at_zero_cost", o.stopAtZeroCost},
         {"noise_aware", o.noiseAware},
-        {"candidates", o.candidates}};
+        {"candidates", o.candidates},
+        {"step_scales", o.moves.stepScales},
+        {"polish_share", o.polishShare},
+        {"polish_from", r.polishFrom},
+        {"suggestions", o.suggestions}};
     return j.dump(2) + "\n";
 }
+
+std::string suggestionFile(size_t index) { return "suggestions/" + std::to_string(index + 1) + ".json"; }
 
 void writeReport(const std::filesystem::path& file, const Scene& scene, const OptimizerResult& result) {
     writeFileAtomically(file, reportJson(scene, result));
@@ -203,11 +219,11 @@ void writeReport(const std::filesystem::path& file, const Scene& scene, const Op
 void writeTrace(const std::filesystem::path& file, const OptimizerResult& result) {
     std::ostringstream out;
     out.precision(10);
-    out << "iteration,current,best,feasible\n";
+    out << "iteration,current,best,feasible,temperature,acceptance\n";
     for (const TracePoint& t : result.trace) {
         out << t.iteration << ',' << t.current << ',';
         if (std::isfinite(t.best)) out << t.best;
-        out << ',' << (t.feasible ? 1 : 0) << '\n';
+        out << ',' << (t.feasible ? 1 : 0) << ',' << t.temperature << ',' << t.acceptance << '\n';
     }
     writeFileAtomically(file, out.str());
 }

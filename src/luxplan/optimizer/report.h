@@ -11,9 +11,13 @@ namespace luxplan {
 
 // report.json as text (see docs/optimizer.md for every key).
 std::string reportJson(const Scene& scene, const OptimizerResult& result);
+// The file of suggestion `index` (0-based) in the output folder: "suggestions/1.json", ...
+std::string suggestionFile(size_t index);
+
 void writeReport(const std::filesystem::path& file, const Scene& scene, const OptimizerResult& result);
 
-// trace.csv: "iteration,current,best,feasible"; best is empty while no feasible
+// trace.csv: "iteration,current,best,feasible,temperature,acceptance" (the test's
+// temperature, 0 in the polish; the share of proposals accepted since the row before); best is empty while no feasible
 // layout has been found.
 void writeTrace(const std::filesystem::path& file, const OptimizerResult& result);
 
