@@ -2,7 +2,7 @@
 # missing Debian packages first, then configure and build in Release.
 BUILD ?= build
 JOBS ?= $(shell nproc)
-DEMO_SCENE ?= scenes/paper/fig7-office-morning.json
+DEMO_SCENE ?= scenes/demo/daylit-office.json
 DEMO_OUT ?= out/demo
 
 .PHONY: all deps configure build demo test sanitize fuzz bench clean

@@ -162,7 +162,7 @@ int runOptimize(const OptimizeArgs& args) {
     if (args.singleTest) options.delayedAcceptance = false;
     if (args.inner >= 0) options.innerIterations = args.inner;
     options.snapshots = args.snapshots;
-    options.suggestions = args.suggestions;
+    if (args.suggestions > 0) options.suggestions = args.suggestions;
     if (args.nested) options.focusInner = true;
     if (args.cycle) options.focusInner = false;
     // Flat: the same furniture without groups, kept together by cohesion constraints.
@@ -268,6 +268,11 @@ int runOptimize(const OptimizeArgs& args) {
     }
     else
         std::cout << "; no layout passed the geometric rules";
+    if (result.feasible) {
+        const GoalCount goals = countGoals(scene, result);
+        std::cout << "\n  " << goals.lightingMet << " of " << goals.lighting << " lighting goals met, " << goals.rulesHeld
+                  << " of " << goals.rules << " rules held (a rule at any penalty above 0 is not held)";
+    }
     // Each target the result misses, and whether any layout the search measured met it.
     if (result.feasible)
         for (size_t k = 0; k < scene.samplers.size() && k < result.bestEvaluation.samplers.samplers.size(); ++k) {

@@ -170,6 +170,9 @@ private:
         s.reportPathsPerPoint = o.integer("report_paths_per_point", Range::atLeast(1)).value_or(std::max(1000, s.pathsPerPoint));
         s.innerIterations = o.integer("inner_iterations", Range::closed(0, 1000)).value_or(s.innerIterations);
         s.nested = o.boolean("nested").value_or(s.nested);
+        s.polishShare = o.number("polish_share", s.polishShare, Range::closed(0, 0.9));
+        s.guided = o.boolean("guided").value_or(s.guided);
+        s.suggestions = o.integer("suggestions", Range::closed(0, 50)).value_or(s.suggestions);
         if (auto h = o.string("hierarchy")) {
             static const EnumNames<bool> hierarchies{{{false, "hierarchical"}, {true, "flat"}}};
             if (auto flat = hierarchies.parse(*h)) s.flat = *flat;

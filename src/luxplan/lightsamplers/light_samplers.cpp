@@ -160,11 +160,14 @@ Estimate PlacedSampler::combine(const ItemEstimates& items) const {
     return e;
 }
 
-std::vector<char> findCoveredPoints(const EmbreeScene& rt, const std::vector<Vec3>& points, Vec3 normal, int carrier) {
-    // Inside a closed solid every ray leaves through a face seen from behind: five rays
-    // from 1 mm above the point (along the normal and tilted 27 degrees four ways) must
-    // all meet, first, the back of another entity's face. The carrier's own faces (the
-    // desk under its work plane) never cover; static geometry is a hard limit elsewhere.
+std::vector<char> findCoveredPoints(const PathTracer& tracer, const std::vector<Vec3>& points, Vec3 normal, int carrier) {
+    // A point in a closed opaque box (the solid boxes the presets are built of: a
+    // monitor's foot) is covered: the tracer reads it 0 (PathTracer::sealedAt). In any
+    // other closed solid (a mesh) every ray leaves through a face seen from behind: five
+    // rays from 1 mm above the point (along the normal and tilted 27 degrees four ways)
+    // must all meet, first, the back of another entity's face. The carrier's own mesh
+    // faces (the desk under its work plane) never cover.
+    const EmbreeScene& rt = tracer.rayTracer();
     std::vector<char> covered(points.size(), 0);
     const Vec3 n = normalize(normal);
     const Vec3 a = normalize(std::abs(n.z) < 0.9 ? cross(n, Vec3(0, 0, 1)) : cross(n, Vec3(1, 0, 0)));
@@ -172,6 +175,10 @@ std::vector<char> findCoveredPoints(const EmbreeScene& rt, const std::vector<Vec
     const Vec3 directions[] = {n, normalize(n + a * 0.5), normalize(n - a * 0.5), normalize(n + b * 0.5),
                                normalize(n - b * 0.5)};
     for (size_t i = 0; i < points.size(); ++i) {
+        if (tracer.sealedAt(points[i])) {
+            covered[i] = 1;
+            continue;
+        }
         bool inside = true;
         for (const Vec3& d : directions) {
             Ray ray;
@@ -195,7 +202,7 @@ std::unique_ptr<PlacedSampler> placeSampler(const LightSamplerSpec& s, const Pat
     placed->setSources(int(tracer.emitters().size()), daylight ? int(daylight->sunDisks().size()) : 0);
     Vec3 normal;
     const std::vector<Vec3> probes = placed->coverageProbes(normal);
-    if (!probes.empty()) placed->setCovered(findCoveredPoints(rt, probes, normal, s.entity));
+    if (!probes.empty()) placed->setCovered(findCoveredPoints(tracer, probes, normal, s.entity));
     return placed;
 }
 

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include <luxplan/optimizer/interchangeable.h>
+#include <luxplan/optimizer/light_map.h>
 #include <luxplan/optimizer/placement.h>
 
 namespace luxplan {
@@ -17,6 +18,7 @@ const char* moveName(MoveType type) {
         case MoveType::Swap: return "swap";
         case MoveType::Jump: return "jump";
         case MoveType::Snap: return "snap";
+        case MoveType::Guided: return "guided";
     }
     return "?";
 }
@@ -125,8 +127,8 @@ double jumpMove(const Entity& entity, Placement& p, Rng& rng) {
     return std::log(regionMeasure(entity.regions[size_t(to)])) - std::log(regionMeasure(entity.regions[size_t(from)]));
 }
 
-MoveSet::MoveSet(const Scene& scene, std::vector<int> entities, MoveOptions options)
-    : scene_(&scene), entities_(std::move(entities)), options_(options), siblings_(scene.entities.size()) {
+MoveSet::MoveSet(const Scene& scene, std::vector<int> entities, MoveOptions options, const LightMap* lightMap)
+    : scene_(&scene), entities_(std::move(entities)), options_(options), siblings_(scene.entities.size()), lightMap_(lightMap) {
     for (int e : entities_) {
         const Entity& entity = scene.entities.at(size_t(e));
         if (!entity.movable()) throw std::invalid_argument("MoveSet: entity \"" + entity.path + "\" is fixed");
@@ -148,6 +150,7 @@ MoveSet::MoveSet(const Scene& scene, std::vector<int> entities, MoveOptions opti
         }
         if (!siblings_[size_t(e)].empty()) candidates_[int(MoveType::Swap)].push_back(e);
         if (entity.regions.size() > 1) candidates_[int(MoveType::Jump)].push_back(e);
+        if (lightMap_ && lightMap_->covers(e)) candidates_[int(MoveType::Guided)].push_back(e);
     }
     for (MoveType t : kMoveTypes)
         if (!candidates_[int(t)].empty()) types_.push_back(t);
@@ -180,6 +183,12 @@ Proposal MoveSet::apply(MoveType type, int entity, Layout& layout, Rng& rng) con
             if (p.valid) placement = a, layout.placements[size_t(p.partner)] = b;
             break;
         }
+        case MoveType::Guided:
+            if (!lightMap_ || !lightMap_->covers(entity)) break;
+            p.logHastings = lightMap_->propose(entity, placement, rng);
+            if (!options_.jumpHastings) p.logHastings = 0;
+            p.valid = true;
+            break;
         case MoveType::Jump:
             if (e.regions.size() < 2) break;
             p.logHastings = jumpMove(e, placement, rng);

@@ -10,13 +10,18 @@
 #include <luxplan/scene/layout.h>
 
 namespace luxplan {
+class LightMap;
+}
+
+namespace luxplan {
 
 // Snap (the polish only): the rotation to the nearest quarter turn of the room, when the
-// region allows it.
-enum class MoveType { Translate, Rotate, Swap, Jump, Snap };
-inline constexpr int kMoveTypeCount = 5;
+// region allows it. Guided: a new placement drawn from the entity's light map
+// (optimizer/light_map.h), where its own targets held in the layouts lit so far.
+enum class MoveType { Translate, Rotate, Swap, Jump, Snap, Guided };
+inline constexpr int kMoveTypeCount = 6;
 inline constexpr std::array<MoveType, kMoveTypeCount> kMoveTypes{MoveType::Translate, MoveType::Rotate, MoveType::Swap,
-                                                                  MoveType::Jump, MoveType::Snap};
+                                                                  MoveType::Jump, MoveType::Snap, MoveType::Guided};
 const char* moveName(MoveType type);
 
 // The paper's sigma_i: 25% of the interval's size.
@@ -65,7 +70,7 @@ bool snapMove(const Entity& entity, Placement& placement, double parentWorldDeg)
 struct MoveOptions {
     double sigmaFraction = kDefaultSigmaFraction;
     std::vector<double> stepScales{kDefaultStepScales.begin(), kDefaultStepScales.end()};
-    bool jumpHastings = true;  // false: the paper's plain symmetric treatment of jumps
+    bool jumpHastings = true;  // false: the paper's plain symmetric treatment of jumps (and of guided draws)
     // The polish's moves (Optimizer::polish): translate and rotate only, at the fine
     // scales, plus a snap of the rotation to the nearest quarter turn of the room.
     bool polish = false;
@@ -94,7 +99,9 @@ struct Proposal {
 //   rotations or more;  swap: a sibling in the set;  jump: two regions or more.
 class MoveSet {
 public:
-    MoveSet(const Scene& scene, std::vector<int> entities, MoveOptions options = {});
+    // `lightMap`, when given, adds the guided move for the entities it maps (not in a
+    // polish); it must outlive the set.
+    MoveSet(const Scene& scene, std::vector<int> entities, MoveOptions options = {}, const LightMap* lightMap = nullptr);
 
     bool empty() const { return types_.empty(); }
     const std::vector<int>& entities() const { return entities_; }
@@ -114,6 +121,7 @@ private:
     std::vector<MoveType> types_;
     std::array<std::vector<int>, kMoveTypeCount> candidates_;
     std::vector<std::vector<int>> siblings_;  // per entity index: swap partners in the set
+    const LightMap* lightMap_ = nullptr;
 };
 
 }  // namespace luxplan

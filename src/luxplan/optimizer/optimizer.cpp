@@ -57,6 +57,9 @@ OptimizerOptions optimizerOptions(const Scene& scene) {
     o.schedule.start = s.temperatureStart;
     o.schedule.end = s.temperatureEnd;
     o.start = s.startFromScene ? StartFrom::Scene : StartFrom::Uniform;
+    o.polishShare = s.polishShare;
+    o.guidedMoves = s.guided;
+    o.suggestions = s.suggestions;
     return o;
 }
 
@@ -90,8 +93,12 @@ Optimizer::Optimizer(const Scene& scene, OptimizerOptions options, LightingEvalu
         all.push_back(int(i));
         (scene.entities[i].parent < 0 ? outer : inner).push_back(int(i));
     }
+    if (options_.guidedMoves && lighting_ && !scene.samplers.empty() && scene.objective.lightingWeight > 0) {
+        lightMap_ = std::make_unique<LightMap>(scene, all, options_.lightMap);
+        if (lightMap_->empty()) lightMap_.reset();
+    }
     auto addLevel = [&](const char* name, const std::vector<int>& entities, uint64_t stream) {
-        MoveSet moves(scene, entities, options_.moves);
+        MoveSet moves(scene, entities, options_.moves, lightMap_.get());
         if (moves.empty()) return;
         levels_.push_back(std::move(moves));
         stats_.push_back({name, entities, {}});
@@ -141,6 +148,7 @@ void Optimizer::addLighting(Evaluation& e, const Layout& layout, const std::vect
         ++lightingEvaluations_;
         e.lightingEvaluated = true;
         e.costError = costError(e);
+        if (lightMap_) lightMap_->observe(layout, e.samplers.samplers);
         const auto& measured = e.samplers.samplers;
         if (measured.size() == scene_->samplers.size()) {
             samplerRanges_.resize(measured.size());
@@ -255,6 +263,7 @@ void Optimizer::initialize(const std::function<void(int drawn, int most)>& drawi
         stats_[i].moves = {};
     }
     polishRng_ = Rng(hashValues({options_.seed, kStreamTag, kPolishStream}));
+    if (lightMap_) lightMap_->clear();
     polishing_ = false;
     polishFrom_ = options_.iterations;
     windowProposed_ = windowAccepted_ = progressProposed_ = progressAccepted_ = 0;
@@ -556,9 +565,22 @@ OptimizerResult Optimizer::run(const ProgressCallback& progress, const std::atom
         pr.etaSeconds = done > 0 ? pr.seconds / done * std::max(0, options_.iterations - iteration_) : 0.0;
         progress(pr);
     };
+    // With suggestions asked for, the run goes on past a confirmed 0 until it holds as
+    // many distinct layouts the search estimated at 0 (or runs out of iterations).
+    int confirmedZeroAt = -1;
+    auto enoughSuggestions = [&] {
+        if (options_.suggestions <= 1) return true;
+        int zeros = 0;
+        for (const Candidate& c : suggestions_.all()) zeros += c.search.cost == 0;
+        return zeros >= options_.suggestions;
+    };
     auto solved = [&] {
         if (!options_.stopAtZeroCost || !feasible_ || bestEval_.cost != 0) return false;
-        if (!bestEval_.lightingEvaluated) return true;
+        if (confirmedZeroAt == bestIteration_) return enoughSuggestions();
+        if (!bestEval_.lightingEvaluated) {
+            confirmedZeroAt = bestIteration_;
+            return enoughSuggestions();
+        }
         // A noisy estimate of L reaches 0 before the layout does: measure it again,
         // independently of the search's random numbers.
         ++confirmations_;
@@ -573,7 +595,8 @@ OptimizerResult Optimizer::run(const ProgressCallback& progress, const std::atom
         candidates_.keep(Candidate{best_, bestEval_, confirmed, bestIteration_});
         if (bestIteration_ == iteration_) currentEval_ = confirmed;  // the current layout is the best one
         bestEval_ = confirmed;
-        return confirmed.cost == 0;
+        if (confirmed.cost == 0) confirmedZeroAt = bestIteration_;
+        return confirmed.cost == 0 && enoughSuggestions();
     };
 
     // Best-so-far snapshots at the checkpoints still ahead, and where the run stops.
@@ -695,7 +718,7 @@ void Optimizer::chooseResult(OptimizerResult& r) {
 
 void Optimizer::chooseSuggestions(OptimizerResult& r) {
     if (options_.suggestions <= 0 || !feasible_) return;
-    // The result is a suggestion: it takes the place of the one it is the same as.
+    // The result is the first suggestion: it takes the place of the one it is the same as.
     Candidate result{r.best, r.bestSearchEvaluation, r.bestEvaluation, r.bestIteration};
     std::vector<Candidate> list;
     for (const Candidate& c : suggestions_.all())
@@ -713,12 +736,13 @@ void Optimizer::chooseSuggestions(OptimizerResult& r) {
         }
         c.independent = e;
     }
-    list.push_back(result);
+    // The result first (layout.json), then the others by their measurement.
     std::vector<size_t> order(list.size());
     std::vector<double> cost(list.size());
     for (size_t i = 0; i < list.size(); ++i) order[i] = i, cost[i] = list[i].independent ? list[i].independent->cost : kInf;
     std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return cost[a] < cost[b]; });
-    order.resize(std::min(order.size(), size_t(options_.suggestions)));
+    order.resize(std::min(order.size(), size_t(options_.suggestions - 1)));
+    r.suggestions.push_back(std::move(result));
     for (size_t i : order) r.suggestions.push_back(std::move(list[i]));
 }
 

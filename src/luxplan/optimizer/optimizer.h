@@ -8,6 +8,7 @@
 #include <atomic>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -16,6 +17,7 @@
 #include <luxplan/core/rng.h>
 #include <luxplan/optimizer/candidates.h>
 #include <luxplan/optimizer/evaluation.h>
+#include <luxplan/optimizer/light_map.h>
 #include <luxplan/optimizer/lighting.h>
 #include <luxplan/optimizer/moves.h>
 #include <luxplan/optimizer/reach.h>
@@ -102,6 +104,11 @@ struct OptimizerOptions {
     // beside the result, and what distinct means for them (0: none).
     int suggestions = 0;
     CandidateSeparation suggestionSeparation{0.5, 45};
+    // The guided move (MoveType::Guided): each top-level entity that carries samplers
+    // also draws placements from a map of where its own targets held in the layouts lit
+    // so far (optimizer/light_map.h). Off: the paper's blind moves only.
+    bool guidedMoves = true;
+    LightMapOptions lightMap;
     // StartFrom::Given's layout (optimize --start): every movable entity placed.
     std::optional<Layout> startLayout;
     // Best-so-far snapshots (OptimizerResult::snapshots) at this many checkpoints,
@@ -200,8 +207,8 @@ struct OptimizerResult {
     int64_t lightingEvaluations = 0;  // by the chain (not the final measurements)
     CacheCheck cacheCheck;  // the lighting evaluator's, when it checked its cache
     std::vector<double> lightFloors;  // the search's light samples' roulette, per sampler (empty: off)
-    // OptimizerOptions::suggestions: distinct layouts, best independent measurement
-    // first (the report seed), the result's own among them.
+    // OptimizerOptions::suggestions: distinct layouts, the result first, then the others
+    // by their independent measurement (the report's seed), best first.
     std::vector<Candidate> suggestions;
     int polishFrom = 0;  // the iteration the polish began at (iterations: none)
     OptimizerOptions options;
@@ -277,6 +284,7 @@ private:
     OptimizerOptions options_;
     LightingEvaluator* lighting_;
     GeometryEvaluator geometry_;
+    std::unique_ptr<LightMap> lightMap_;  // OptimizerOptions::guidedMoves (null: off or nothing to map)
     std::vector<MoveSet> levels_;
     // Nesting: per top-level entity, the index of its members' move set in focusSets_
     // (-1: no movable members); the object-level steps each set gets; the state.

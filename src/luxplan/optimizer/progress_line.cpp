@@ -6,7 +6,7 @@
 namespace luxplan {
 namespace {
 
-std::string fixed(double v, int digits) {
+std::string withDigits(double v, int digits) {
     char buf[32];
     std::snprintf(buf, sizeof buf, "%.*f", digits, v);
     return buf;
@@ -15,7 +15,7 @@ std::string fixed(double v, int digits) {
 // Enough digits to see a cost change near zero, few when it is large.
 std::string cost(double c) {
     if (!std::isfinite(c)) return "-";
-    return fixed(c, std::abs(c) >= 10 ? 1 : std::abs(c) >= 1 ? 3 : 4);
+    return withDigits(c, std::abs(c) >= 10 ? 1 : std::abs(c) >= 1 ? 3 : 4);
 }
 
 std::string temperatureText(double t) {
@@ -46,11 +46,11 @@ std::string progressLine(const Progress& p) {
     std::string moves;
     for (MoveType t : kMoveTypes) {
         if (p.proposed[int(t)] == 0) continue;  // a move the scene does not allow
-        moves += (moves.empty() ? "" : ", ") + std::string(moveName(t)) + " " + fixed(100 * p.acceptance[int(t)], 0) + "%";
+        moves += (moves.empty() ? "" : ", ") + std::string(moveName(t)) + " " + withDigits(100 * p.acceptance[int(t)], 0) + "%";
     }
     if (!moves.empty()) line += " | accepted: " + moves;
-    if (p.polishing) line += " | polishing the best (zero temperature), " + fixed(100 * p.recentAcceptance, 0) + "% kept lately";
-    else line += " | temperature " + temperatureText(p.temperature) + ", " + fixed(100 * p.recentAcceptance, 0) + "% accepted lately";
+    if (p.polishing) line += " | polishing the best (zero temperature), " + withDigits(100 * p.recentAcceptance, 0) + "% kept lately";
+    else line += " | temperature " + temperatureText(p.temperature) + ", " + withDigits(100 * p.recentAcceptance, 0) + "% accepted lately";
     line += " | " + durationText(p.seconds);
     if (p.iteration < p.iterations) line += ", about " + durationText(p.etaSeconds) + " left";
     return line;

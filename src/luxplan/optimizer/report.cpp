@@ -69,6 +69,25 @@ Json termJson(const Scene& scene, const PenaltyTerm& t) {
 
 }  // namespace
 
+GoalCount countGoals(const Scene& scene, const OptimizerResult& r) {
+    GoalCount g;
+    const Evaluation& best = r.bestEvaluation;
+    g.lighting = int(scene.samplers.size());
+    for (size_t k = 0; k < scene.samplers.size() && k < best.samplers.samplers.size(); ++k) {
+        const SamplerRange range = k < r.samplerRanges.size() ? r.samplerRanges[k] : SamplerRange{};
+        if (reachVerdict(scene.samplers[k], range, best.samplers.samplers[k]).reach == Reach::Met) ++g.lightingMet;
+    }
+    const bool hardLimitPassed = r.bestGeometry.rejected && !r.feasible;
+    for (const PenaltyTerm& t : r.bestGeometry.terms)
+        if (!t.overlap()) {
+            ++g.rules;
+            if (!hardLimitPassed && t.penalty == 0) ++g.rulesHeld;
+        }
+    ++g.rules;  // overlap, one rule
+    if (!hardLimitPassed && r.bestGeometry.overlapPenalty == 0) ++g.rulesHeld;
+    return g;
+}
+
 std::string reportJson(const Scene& scene, const OptimizerResult& r) {
     const Evaluation& best = r.bestEvaluation;
     Json j;
@@ -84,6 +103,9 @@ std::string reportJson(const Scene& scene, const OptimizerResult& r) {
     j["lighting_evaluated"] = best.lightingEvaluated;
     j["feasible"] = r.feasible;
     if (best.rejected) j["rejected_by"] = best.rejectedBy;
+    const GoalCount goals = countGoals(scene, r);
+    j["goals"] = {{"lighting_met", goals.lightingMet}, {"lighting", goals.lighting},
+                  {"rules_held", goals.rulesHeld}, {"rules", goals.rules}};
     j["iterations"] = r.iterations;
     j["best_iteration"] = r.bestIteration;
     j["zero_cost_confirmations"] = r.confirmations;
@@ -205,6 +227,7 @@ std::string reportJson(const Scene& scene, const OptimizerResult& r) {
         {"candidates", o.candidates},
         {"step_scales", o.moves.stepScales},
         {"polish_share", o.polishShare},
+        {"guided", o.guidedMoves},
         {"polish_from", r.polishFrom},
         {"suggestions", o.suggestions}};
     return j.dump(2) + "\n";

@@ -11,6 +11,16 @@ namespace luxplan {
 
 // report.json as text (see docs/optimizer.md for every key).
 std::string reportJson(const Scene& scene, const OptimizerResult& result);
+
+// What a designer counts: lighting goals met (a sampler whose value and every statistics
+// goal lie in their targets in the result's measurement) and rules held (every
+// relational constraint at penalty 0, and the overlap rule at 0; none of them held
+// when a hard limit is passed). A rule at a penalty above 0 is not held, however small.
+struct GoalCount {
+    int lightingMet = 0, lighting = 0, rulesHeld = 0, rules = 0;
+    bool all() const { return lightingMet == lighting && rulesHeld == rules; }
+};
+GoalCount countGoals(const Scene& scene, const OptimizerResult& result);
 // The file of suggestion `index` (0-based) in the output folder: "suggestions/1.json", ...
 std::string suggestionFile(size_t index);
 

@@ -178,6 +178,9 @@ struct OptimizerSettings {
     bool constantTemperature = false;
     double temperatureStart = 0.1, temperatureEnd = 0.001;
     bool startFromScene = false;     // start from the scene's placement instead of uniform draws
+    double polishShare = 0.2;        // the run's last share: a zero-temperature polish of the best
+    bool guided = true;              // the guided move from the light map (optimizer/light_map.h)
+    int suggestions = 0;             // distinct layouts written beside the result (optimize --suggestions)
 };
 
 // The scene file's names for these enums ("south", "glossy"): one table each

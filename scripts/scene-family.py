@@ -1,0 +1,231 @@
+#!/usr/bin/env python3
+"""Families of scenes with planted solutions, and the search's success on them.
+
+    scripts/scene-family.py generate OUTDIR [--count N] [--seed S] [--luxplan build/luxplan]
+    scripts/scene-family.py run OUTDIR [--seeds 1-10] [--paths 1000] [--threads 2] [--luxplan build/luxplan]
+
+`generate` draws N scenes (offices, labs and halls of varied size, windows, hour,
+reflectances and number of workstations) and plants a solution in each: a layout built
+first (workstations on a grid that keeps every rule: aligned with the room, screens
+facing their chairs, the clearances with margin), measured with `luxplan measure` at
+2000 paths per point, and targets set around what it measured so that it meets them
+with margin (desks: the band [0.8 min, 1.25 max] of the planted desks' means, at least
+150 lx wide; screens: 1.3 times the planted maximum). The scene file holds the planted
+layout as its entities' positions and the search starts from a uniform draw, so the
+solution is known but not given. Written: OUTDIR/NAME.json and OUTDIR/NAME.planted.json.
+
+`run` optimizes every scene over the seeds (`luxplan optimize SCENE --seed S --paths P
+--threads T`), measures each result again with a seed no search used (`luxplan measure
+--layout --seed 990001 --paths P`), and prints one row per scene: success rate (every
+lighting goal met in that measurement and every rule's penalty 0), median and worst time
+and iterations to solution (a run that fails counts with its whole time), and the time
+per iteration. It also writes OUTDIR/results.json. Standard library only.
+"""
+import argparse
+import json
+import os
+import random
+import statistics
+import subprocess
+import sys
+import time
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "scenes", "paper"))
+import generate as g  # noqa: E402  (the paper scenes' building blocks)
+
+REMEASURE_SEED = 990001  # no search uses it: runs use seeds 1..99
+PLANT_PATHS = 2000
+
+
+def draw_scene(rng, index):
+    """One scene's geometry, light and furniture, the planted layout as its positions."""
+    kind = ["office", "lab", "hall"][index % 3]
+    if kind == "office":
+        W, D, H = rng.uniform(7.5, 10.5), rng.uniform(5.5, 7.5), rng.uniform(2.7, 3.0)
+        n = rng.choice([4, 5, 6])
+    elif kind == "lab":
+        W, D, H = rng.uniform(9.0, 12.0), rng.uniform(7.0, 9.0), rng.uniform(2.9, 3.2)
+        n = rng.choice([6, 7, 8])
+    else:
+        W, D, H = rng.uniform(12.0, 16.0), rng.uniform(8.0, 11.0), rng.uniform(3.2, 4.0)
+        n = rng.choice([6, 8])
+    walls = rng.sample(["east", "south", "west", "north"], k=rng.choice([1, 2]))
+    glass = rng.choice(["glass", "tinted"])
+    openings = []
+    for wall in walls:
+        length = W if wall in ("south", "north") else D
+        count = max(1, int(length // 3))
+        width = rng.uniform(1.2, 1.8)
+        for k in range(count):
+            offset = (k + 0.5) * length / count - width / 2
+            openings.append(g.window(wall, round(offset, 2), round(width, 2), material=glass))
+    hour = rng.choice(["morning", "afternoon", "night"])
+    mats = g.materials()
+    mats["floor"]["reflectance"] = round(rng.uniform(0.15, 0.4), 2)
+    mats["wall"]["reflectance"] = round(rng.uniform(0.5, 0.8), 2)
+    mats["ceiling"]["reflectance"] = round(rng.uniform(0.7, 0.9), 2)
+    scene = {"luxplan": 1, "name": f"family-{index + 1:02d}-{kind}-{hour}", "site": g.ATHENS, "materials": mats}
+    date = rng.choice(["2026-03-20", "2026-06-21", "2026-11-16"])
+    tz = "+03:00" if date == "2026-06-21" else "+02:00"
+    if hour == "morning":
+        scene["daylight"] = g.preetham(date, "08:30", "11:30", tz)
+    elif hour == "afternoon":
+        scene["daylight"] = g.preetham(date, "13:30", "16:30", tz)
+    # Ceiling panels on a grid, dimmed by day.
+    nx, ny = max(2, round(W / 3)), max(2, round(D / 3))
+    flux = rng.uniform(2500, 4000) * (1.0 if hour == "night" else rng.uniform(0.4, 0.8))
+    lum = [g.panel(f"panel{i * ny + j + 1}", [round((i + 0.5) * W / nx, 2), round((j + 0.5) * D / ny, 2), round(H - 0.01, 2)],
+                   round(flux)) for i in range(nx) for j in range(ny)]
+    region = {"min": [0.9, 0.9], "max": [round(W - 0.9, 2), round(D - 0.9, 2)], "rotations": [0, 90, 180, 270]}
+    # The planted layout: a grid of cells about 2.6 x 2.4 m (clearance 2.0 m between
+    # centres) kept 1.4 m from the walls (a workstation's reach, chair included, is
+    # 1.3 m), a random choice of n cells, each desk turned a random quarter.
+    margin = 1.4
+    cols, rows = int((W - 2 * margin) // 2.6) + 1, int((D - 2 * margin) // 2.4) + 1
+    cells = [(c, r) for c in range(cols) for r in range(rows)]
+    if len(cells) < n:
+        n = len(cells)
+    chosen = rng.sample(cells, n)
+    sx = (W - 2 * margin) / max(1, cols - 1) if cols > 1 else 0
+    sy = (D - 2 * margin) / max(1, rows - 1) if rows > 1 else 0
+    entities, constraints = [], []
+    for k, (c, r) in enumerate(chosen):
+        x = margin + c * sx if cols > 1 else W / 2
+        y = margin + r * sy if rows > 1 else D / 2
+        ws = g.workstation(f"ws{k + 1}", (round(x, 3), round(y, 3)), rng.choice([0, 90, 180, 270]), [region])
+        entities.append(ws)
+        constraints.append({"type": "alignment", "a": f"ws{k + 1}.desk", "b": "room", "tolerance_deg": 10})
+        constraints.append({"type": "focus", "a": f"ws{k + 1}.monitor", "b": f"ws{k + 1}.chair", "tolerance_deg": 15})
+    for i in range(n):
+        for j in range(i + 1, n):
+            constraints.append(g.clearance(f"ws{i + 1}", f"ws{j + 1}", 2.0))
+    constraints.append({"type": "overlap", "tolerance": 0.05})
+    scene.update({"geometry": [g.room([round(W, 2), round(D, 2), round(H, 2)], openings)], "luminaires": lum,
+                  "entities": entities, "constraints": constraints, "objective": {"lighting_weight": 0.5},
+                  "optimizer": g.optimizer(10000)})
+    return scene
+
+
+def planted_layout(scene):
+    entities = {}
+    for e in scene["entities"]:
+        entities[e["name"]] = {"position": e["position"], "rotation": e["rotation"], "region": 0}
+        entities[e["name"] + ".monitor"] = {"position": [0, 0.12], "rotation": 0, "region": 0}
+    return {"entities": entities}
+
+
+def measure(luxplan, scene_file, layout_file, paths, seed, threads):
+    out = subprocess.run([luxplan, "measure", scene_file, "--layout", layout_file, "--paths", str(paths),
+                          "--seed", str(seed), "--threads", str(threads), "--json"],
+                         check=True, capture_output=True, text=True).stdout
+    return json.loads(out)
+
+
+def goals_met(m):
+    """Lighting goals met (every term of a sampler at penalty 0) and the rules' cost."""
+    met = sum(1 for s in m["samplers"] if s["penalty"] == 0 and all(t["penalty"] == 0 for t in s.get("terms", [])))
+    return met, len(m["samplers"]), m["G"]
+
+
+def cmd_generate(args):
+    os.makedirs(args.out, exist_ok=True)
+    rng = random.Random(args.seed)
+    made = 0
+    while made < args.count:
+        scene = draw_scene(rng, made)
+        name = scene["name"]
+        scene_file = os.path.join(args.out, name + ".json")
+        layout_file = os.path.join(args.out, name + ".planted.json")
+        with open(layout_file, "w") as f:
+            json.dump(planted_layout(scene), f, indent=1)
+        with open(scene_file, "w") as f:
+            json.dump(scene, f, indent=1)
+        m = measure(args.luxplan, scene_file, layout_file, PLANT_PATHS, 4242, args.threads)
+        if m["G"] != 0 or not m["geometric_rules_pass"]:
+            print(f"{name}: the planted layout breaks a rule (G {m['G']}); drawn again", file=sys.stderr)
+            continue
+        desks = [s["value"] for s in m["samplers"] if s["name"].endswith("task")]
+        screens = [s["value"] for s in m["samplers"] if s["name"].endswith("glare")]
+        lo, hi = 0.8 * min(desks), 1.25 * max(desks)
+        if hi - lo < 150:
+            mid = (lo + hi) / 2
+            lo, hi = mid - 75, mid + 75
+        glare = max(50.0, 1.3 * max(screens))
+        for e in scene["entities"]:
+            for c in e["children"]:
+                for s in c.get("samplers", []):
+                    s["target"] = [round(lo), round(hi)] if s["name"] == "task" else [0, round(glare)]
+        with open(scene_file, "w") as f:
+            json.dump(scene, f, indent=1)
+        check = measure(args.luxplan, scene_file, layout_file, PLANT_PATHS, 4343, args.threads)
+        met, total, G = goals_met(check)
+        print(f"{name}: {len(desks)} workstations, desks {lo:.0f}-{hi:.0f} lx (planted {min(desks):.0f}-{max(desks):.0f}), "
+              f"screens <= {glare:.0f} cd/m2; the planted layout meets {met} of {total} goals, G {G}")
+        made += 1
+
+
+def seeds_of(text):
+    if "-" in text:
+        a, b = text.split("-")
+        return list(range(int(a), int(b) + 1))
+    return [int(s) for s in text.split(",")]
+
+
+def cmd_run(args):
+    scenes = sorted(f for f in os.listdir(args.out) if f.endswith(".json") and not f.endswith(".planted.json")
+                    and f != "results.json")
+    results = []
+    print("| scene | workstations | solved | median s to solution | worst s | median iterations | s per 1000 iterations |")
+    print("|---|---|---|---|---|---|---|")
+    for name in scenes:
+        scene_file = os.path.join(args.out, name)
+        with open(scene_file) as f:
+            n = len(json.load(f)["entities"])
+        runs = []
+        for seed in seeds_of(args.seeds):
+            out = os.path.join(args.out, "runs", name[:-5], str(seed))
+            t0 = time.time()
+            subprocess.run([args.luxplan, "optimize", scene_file, "-o", out, "--seed", str(seed), "--paths",
+                            str(args.paths), "--threads", str(args.threads), "-q", "--no-pictures"],
+                           check=True, capture_output=True)
+            seconds = time.time() - t0
+            with open(os.path.join(out, "report.json")) as f:
+                report = json.load(f)
+            m = measure(args.luxplan, scene_file, os.path.join(out, "layout.json"), args.paths, REMEASURE_SEED,
+                        args.threads)
+            met, total, G = goals_met(m)
+            runs.append({"seed": seed, "solved": met == total and G == 0, "goals_met": met, "goals": total, "G": G,
+                         "seconds": report["seconds"], "wall_seconds": seconds, "iterations": report["iterations"],
+                         "stop": report["stop_reason"]})
+        solved = [r for r in runs if r["solved"]]
+        secs = [r["seconds"] for r in runs]
+        its = [r["iterations"] for r in runs]
+        per1000 = 1000 * sum(secs) / max(1, sum(its))
+        results.append({"scene": name, "workstations": n, "runs": runs})
+        print(f"| {name[:-5]} | {n} | {len(solved)}/{len(runs)} | {statistics.median(secs):.1f} | {max(secs):.1f} | "
+              f"{statistics.median(its):.0f} | {per1000:.2f} |", flush=True)
+    with open(os.path.join(args.out, "results.json"), "w") as f:
+        json.dump(results, f, indent=1)
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    sub = p.add_subparsers(dest="command", required=True)
+    gen = sub.add_parser("generate")
+    gen.add_argument("out")
+    gen.add_argument("--count", type=int, default=6)
+    gen.add_argument("--seed", type=int, default=1)
+    gen.add_argument("--threads", type=int, default=2)
+    gen.add_argument("--luxplan", default="build/luxplan")
+    run = sub.add_parser("run")
+    run.add_argument("out")
+    run.add_argument("--seeds", default="1-10")
+    run.add_argument("--paths", type=int, default=1000)
+    run.add_argument("--threads", type=int, default=2)
+    run.add_argument("--luxplan", default="build/luxplan")
+    args = p.parse_args()
+    cmd_generate(args) if args.command == "generate" else cmd_run(args)
+
+
+if __name__ == "__main__":
+    main()
