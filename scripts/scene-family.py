@@ -7,10 +7,11 @@
 `generate` draws N scenes (offices, labs and halls of varied size, windows, hour,
 reflectances and number of workstations) and plants a solution in each: a layout built
 first (workstations on a grid that keeps every rule: aligned with the room, screens
-facing their chairs, the clearances with margin), measured with `luxplan measure` at
-2000 paths per point, and targets set around what it measured so that it meets them
-with margin (desks: the band [0.8 min, 1.25 max] of the planted desks' means, at least
-150 lx wide; screens: 1.3 times the planted maximum). The scene file holds the planted
+facing their chairs, the clearances with margin; each desk turned the quarter where its
+screen reflects least), measured with `luxplan measure` at 2000 paths per point, and
+targets set around what it measured so that it meets them with margin (desks: the band
+[0.8 min, 1.25 max] of the planted desks' means, at least 150 lx wide; screens: 1.3
+times the planted maximum, at least 50 cd/m2). The scene file holds the planted
 layout as its entities' positions and the search starts from a uniform draw, so the
 solution is known but not given. Written: OUTDIR/NAME.json and OUTDIR/NAME.planted.json.
 
@@ -77,33 +78,33 @@ def draw_scene(rng, index):
     lum = [g.panel(f"panel{i * ny + j + 1}", [round((i + 0.5) * W / nx, 2), round((j + 0.5) * D / ny, 2), round(H - 0.01, 2)],
                    round(flux)) for i in range(nx) for j in range(ny)]
     region = {"min": [0.9, 0.9], "max": [round(W - 0.9, 2), round(D - 0.9, 2)], "rotations": [0, 90, 180, 270]}
-    # The planted layout: a grid of cells about 2.6 x 2.4 m (clearance 2.0 m between
-    # centres) kept 1.4 m from the walls (a workstation's reach, chair included, is
-    # 1.3 m), a random choice of n cells, each desk turned a random quarter.
+    # The grid the planted layout is chosen from: cells about 2.6 x 2.4 m apart (the
+    # clearance is 2.0 m between centres) kept 1.4 m from the walls (a workstation's
+    # reach, chair included, is 1.3 m).
     margin = 1.4
     cols, rows = int((W - 2 * margin) // 2.6) + 1, int((D - 2 * margin) // 2.4) + 1
-    cells = [(c, r) for c in range(cols) for r in range(rows)]
-    if len(cells) < n:
-        n = len(cells)
-    chosen = rng.sample(cells, n)
     sx = (W - 2 * margin) / max(1, cols - 1) if cols > 1 else 0
     sy = (D - 2 * margin) / max(1, rows - 1) if rows > 1 else 0
+    cells = [(round(margin + c * sx if cols > 1 else W / 2, 3), round(margin + r * sy if rows > 1 else D / 2, 3))
+             for c in range(cols) for r in range(rows)]
+    scene.update({"geometry": [g.room([round(W, 2), round(D, 2), round(H, 2)], openings)], "luminaires": lum,
+                  "objective": {"lighting_weight": 0.5}, "optimizer": g.optimizer(10000)})
+    return scene, cells, min(n, len(cells)), region
+
+
+def furnish(scene, positions, region):
+    """The scene with one workstation at each position, and the office's rules."""
+    n = len(positions)
     entities, constraints = [], []
-    for k, (c, r) in enumerate(chosen):
-        x = margin + c * sx if cols > 1 else W / 2
-        y = margin + r * sy if rows > 1 else D / 2
-        ws = g.workstation(f"ws{k + 1}", (round(x, 3), round(y, 3)), rng.choice([0, 90, 180, 270]), [region])
-        entities.append(ws)
+    for k, (x, y) in enumerate(positions):
+        entities.append(g.workstation(f"ws{k + 1}", (x, y), 0, [region]))
         constraints.append({"type": "alignment", "a": f"ws{k + 1}.desk", "b": "room", "tolerance_deg": 10})
         constraints.append({"type": "focus", "a": f"ws{k + 1}.monitor", "b": f"ws{k + 1}.chair", "tolerance_deg": 15})
     for i in range(n):
         for j in range(i + 1, n):
             constraints.append(g.clearance(f"ws{i + 1}", f"ws{j + 1}", 2.0))
     constraints.append({"type": "overlap", "tolerance": 0.05})
-    scene.update({"geometry": [g.room([round(W, 2), round(D, 2), round(H, 2)], openings)], "luminaires": lum,
-                  "entities": entities, "constraints": constraints, "objective": {"lighting_weight": 0.5},
-                  "optimizer": g.optimizer(10000)})
-    return scene
+    return dict(scene, entities=entities, constraints=constraints)
 
 
 def planted_layout(scene):
@@ -132,10 +133,35 @@ def cmd_generate(args):
     rng = random.Random(args.seed)
     made = 0
     while made < args.count:
-        scene = draw_scene(rng, made)
-        name = scene["name"]
+        room, cells, n, region = draw_scene(rng, made)
+        name = room["name"]
         scene_file = os.path.join(args.out, name + ".json")
         layout_file = os.path.join(args.out, name + ".planted.json")
+        # A survey: a desk on every cell (rules aside), and the planted layout drawn
+        # among the darker 60% of them (out of the sun patches, which no band of a
+        # designer's would hold).
+        survey = furnish(room, cells, region)
+        for path, content in ((scene_file, survey), (layout_file, planted_layout(survey))):
+            with open(path, "w") as f:
+                json.dump(content, f, indent=1)
+        lux = [s["value"] for s in measure(args.luxplan, scene_file, layout_file, 64, 4040, args.threads)["samplers"]
+               if s["name"].endswith("task")]
+        darker = sorted(range(len(cells)), key=lambda i: lux[i])[:max(n, int(0.6 * len(cells) + 0.5))]
+        scene = furnish(room, [cells[i] for i in sorted(rng.sample(darker, n))], region)
+        with open(scene_file, "w") as f:
+            json.dump(scene, f, indent=1)
+        # Each desk turned the quarter where its screen reads least (all desks measured
+        # at each of the four quarters: a desk's own light depends on its own turn).
+        glare_at = {}
+        for turn in (0, 90, 180, 270):
+            for e in scene["entities"]:
+                e["rotation"] = turn
+            with open(layout_file, "w") as f:
+                json.dump(planted_layout(scene), f, indent=1)
+            m = measure(args.luxplan, scene_file, layout_file, 256, 4141, args.threads)
+            glare_at[turn] = {s["name"].split(".")[0]: s["value"] for s in m["samplers"] if s["name"].endswith("glare")}
+        for e in scene["entities"]:
+            e["rotation"] = min(glare_at, key=lambda t: glare_at[t][e["name"]])
         with open(layout_file, "w") as f:
             json.dump(planted_layout(scene), f, indent=1)
         with open(scene_file, "w") as f:

@@ -393,3 +393,78 @@ TEST_F(OptimizerTest, WritesReportAndTrace) {
 
 }  // namespace
 }  // namespace luxplan
+
+namespace luxplan {
+namespace {
+
+// The polish: the last share of the run starts from the best layout and never lets
+// the current cost rise (zero temperature), its proposals are counted in a level of
+// their own, and its temperature in the trace is 0. The rules-only search (no light)
+// reaches it too.
+TEST_F(OptimizerTest, ThePolishDescendsFromTheBestAndNeverRises) {
+    test::DeskLight light(scene);
+    OptimizerOptions o = optimizerOptions(scene);
+    o.stopAtZeroCost = false;
+    o.iterations = 2000;
+    o.polishShare = 0.25;
+    o.traceEvery = 1;
+    OptimizerResult r = Optimizer(scene, o, &light).run();
+    ASSERT_TRUE(r.feasible);
+    EXPECT_EQ(r.polishFrom, 1500);
+    ASSERT_EQ(r.levels.back().name, "polish");
+    int64_t proposed = 0;
+    for (const MoveStats& m : r.levels.back().moves) proposed += m.proposed;
+    EXPECT_EQ(proposed, 500);
+    EXPECT_EQ(r.levels.back().moves[int(MoveType::Swap)].proposed, 0);  // translate, rotate and snap only
+    EXPECT_EQ(r.levels.back().moves[int(MoveType::Guided)].proposed, 0);
+    double before = kInf;
+    for (const TracePoint& t : r.trace) {
+        if (t.iteration <= 1500) {
+            if (t.iteration > 0) EXPECT_GT(t.temperature, 0);
+            continue;
+        }
+        EXPECT_EQ(t.temperature, 0);
+        EXPECT_LE(t.current, before + 1e-15) << "iteration " << t.iteration;
+        EXPECT_GE(t.current, t.best);
+        before = t.current;
+    }
+    // The polish starts at the best of the chain before it, and ends at the best.
+    EXPECT_LE(r.trace.back().current, r.trace[1500].best);
+    EXPECT_DOUBLE_EQ(r.trace.back().current, r.trace.back().best);
+}
+
+// A constant schedule is a plain chain: no polish (the chain tests sample its law).
+TEST_F(OptimizerTest, AConstantScheduleHasNoPolish) {
+    test::DeskLight light(scene);
+    OptimizerOptions o = optimizerOptions(scene);
+    o.stopAtZeroCost = false;
+    o.iterations = 400;
+    o.schedule.kind = Schedule::Kind::Constant;
+    OptimizerResult r = Optimizer(scene, o, &light).run();
+    EXPECT_NE(r.levels.back().name, "polish");
+    EXPECT_EQ(r.polishFrom, 400);
+}
+
+// Suggestions at the optimizer's level: distinct, the result first, each measured.
+TEST_F(OptimizerTest, SuggestionsAreDistinctAndTheResultComesFirst) {
+    test::DeskLight light(scene);
+    OptimizerOptions o = optimizerOptions(scene);
+    o.stopAtZeroCost = false;
+    o.iterations = 1500;
+    o.suggestions = 3;
+    OptimizerResult r = Optimizer(scene, o, &light).run();
+    ASSERT_FALSE(r.suggestions.empty());
+    ASSERT_LE(r.suggestions.size(), 3u);
+    for (size_t e = 0; e < scene.entities.size(); ++e) {
+        EXPECT_EQ(r.suggestions[0].layout.placements[e].position, r.best.placements[e].position);
+    }
+    for (size_t i = 0; i < r.suggestions.size(); ++i) {
+        ASSERT_TRUE(r.suggestions[i].independent.has_value());
+        if (i >= 2) EXPECT_GE(r.suggestions[i].independent->cost, r.suggestions[i - 1].independent->cost);
+        for (size_t j = i + 1; j < r.suggestions.size(); ++j)
+            EXPECT_FALSE(sameCandidate(scene, r.suggestions[i].layout, r.suggestions[j].layout, o.suggestionSeparation));
+    }
+}
+
+}  // namespace
+}  // namespace luxplan
