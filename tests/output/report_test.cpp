@@ -92,9 +92,16 @@ TEST(ReportHtml, OptimizerResultSections) {
     Optimizer optimizer(scene, options);
     OptimizerResult result = optimizer.run();
     std::string html = reportHtml(dir.path(), scene, &result);
-    for (const char* part : {"<h2>Optimization</h2>", "<h2>Moves</h2>", "<h2>Constraints</h2>", "translate",
-                             "Not measured"})
+    for (const char* part : {"<h2>Optimization</h2>", "<h2>Moves</h2>", "<h2>Constraints</h2>", "Not measured"})
         EXPECT_NE(html.find(part), std::string::npos) << part;
+    // A row per move a level made; none for a move it never proposed.
+    for (const LevelStats& level : result.levels)
+        for (MoveType t : kMoveTypes) {
+            const std::string row = "<td>" + std::string(moveName(t)) + "</td><td class=\"num\">" +
+                                    std::to_string(level.moves[int(t)].proposed) + "</td>";
+            if (level.moves[int(t)].proposed > 0) EXPECT_NE(html.find(row), std::string::npos) << row << "\n" << html;
+        }
+    EXPECT_EQ(html.find("<td>guided</td>"), std::string::npos);  // no light, no map
     EXPECT_TRUE(links(html).empty());  // nothing written to the folder yet
 }
 

@@ -68,12 +68,25 @@ bool allMet(const std::vector<LightingTerm>& terms) {
     return true;
 }
 
-double lightingCostOfResults(const Scene& scene, const std::vector<SamplerResult>& results) {
+double marginPenalty(const LightingTerm& t, double marginZ) {
+    if (!(marginZ > 0) || !(t.standardError > 0)) return t.penalty;
+    // Each finite end moved inwards by z standard errors; a band narrower than that
+    // shrinks to its middle.
+    double lo = t.targetMin, hi = t.targetMax;
+    const double shift = marginZ * t.standardError;
+    if (std::isfinite(lo)) lo += shift;
+    if (std::isfinite(hi)) hi -= shift;
+    if (lo > hi) lo = hi = std::isfinite(t.targetMin) && std::isfinite(t.targetMax) ? (t.targetMin + t.targetMax) / 2
+                                                                                   : std::isfinite(lo) ? lo : hi;
+    return penalty(t.value, lo, hi, t.tolerance, kLightingStiffness);
+}
+
+double lightingCostOfResults(const Scene& scene, const std::vector<SamplerResult>& results, double marginZ) {
     requireSize(scene, results.size());
     double sum = 0, weights = 0;
     for (size_t k = 0; k < results.size(); ++k)
         for (const LightingTerm& t : lightingTerms(scene.samplers[k], results[k])) {
-            sum += t.weight * t.penalty;
+            sum += t.weight * marginPenalty(t, marginZ);
             weights += t.weight;
         }
     return weights > 0 ? sum / weights : 0.0;

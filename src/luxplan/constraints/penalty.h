@@ -56,7 +56,15 @@ bool allMet(const std::vector<LightingTerm>& terms);
 // too, so that L stays a weighted mean of penalties. Without statistics goals, the
 // same number as lightingCost(scene, values). (Another name, not an overload: a
 // braced list such as {} or {500} would fit both.)
-double lightingCostOfResults(const Scene& scene, const std::vector<SamplerResult>& results);
+// With `marginZ` > 0 (the search's margin, OptimizerOptions::marginZ), each term's
+// band is first narrowed by marginZ of its standard errors at each finite end
+// (marginPenalty): an estimate at 0 then lies that far inside every band, so that an
+// independent measurement finds it inside too.
+double lightingCostOfResults(const Scene& scene, const std::vector<SamplerResult>& results, double marginZ = 0);
+// A term's penalty against its band narrowed by marginZ standard errors at each finite
+// end (to its middle when narrower than that); the plain penalty when marginZ or the
+// error is 0.
+double marginPenalty(const LightingTerm& t, double marginZ);
 
 // The standard error of sampler k's share of L: each of its terms (lightingTerms)
 // contributes its weight share of L's denominator times the secant of its penalty

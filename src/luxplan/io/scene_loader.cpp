@@ -173,6 +173,7 @@ private:
         s.polishShare = o.number("polish_share", s.polishShare, Range::closed(0, 0.9));
         s.guided = o.boolean("guided").value_or(s.guided);
         s.suggestions = o.integer("suggestions", Range::closed(0, 50)).value_or(s.suggestions);
+        s.margin = o.number("margin", s.margin, Range::closed(0, 5));
         if (auto h = o.string("hierarchy")) {
             static const EnumNames<bool> hierarchies{{{false, "hierarchical"}, {true, "flat"}}};
             if (auto flat = hierarchies.parse(*h)) s.flat = *flat;

@@ -52,6 +52,11 @@ public:
     // The floors of the light samples' roulette its evaluations took, one per sampler
     // (empty: every light sample traced; MeasureOptions::lightFloors).
     virtual std::vector<double> lightFloors() const { return {}; }
+    // The search's margin (OptimizerOptions::marginZ): evaluate() narrows every band by
+    // this many standard errors of the term at each end (constraints/penalty.h,
+    // marginPenalty); measureIndependently() never does. An evaluator without errors
+    // ignores it.
+    virtual void setSearchMargin(double z) { (void)z; }
     // The chain accepted (commit) or refused (revert) the layout last evaluated: an
     // evaluator that keeps work between layouts (the path cache) keeps it for the
     // accepted layout only. Evaluations measure against the last committed layout.

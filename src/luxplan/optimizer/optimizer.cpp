@@ -60,6 +60,7 @@ OptimizerOptions optimizerOptions(const Scene& scene) {
     o.polishShare = s.polishShare;
     o.guidedMoves = s.guided;
     o.suggestions = s.suggestions;
+    o.marginZ = s.margin;
     return o;
 }
 
@@ -87,6 +88,8 @@ Optimizer::Optimizer(const Scene& scene, OptimizerOptions options, LightingEvalu
               (options_.startLayout && options_.startLayout->placements.size() == scene.entities.size()),
           "a given start needs a layout of every entity");
 
+    check(options_.marginZ >= 0 && std::isfinite(options_.marginZ), "margin must be a finite number >= 0");
+    if (lighting_) lighting_->setSearchMargin(options_.marginZ);
     std::vector<int> all, outer, inner;
     for (size_t i = 0; i < scene.entities.size(); ++i) {
         if (!scene.entities[i].movable()) continue;
@@ -593,10 +596,17 @@ OptimizerResult Optimizer::run(const ProgressCallback& progress, const std::atom
         // Kept among the candidates with its measurement, even past their capacity: the
         // run may stop on it, and the result must be chosen among what it stopped on.
         candidates_.keep(Candidate{best_, bestEval_, confirmed, bestIteration_});
-        if (bestIteration_ == iteration_) currentEval_ = confirmed;  // the current layout is the best one
-        bestEval_ = confirmed;
-        if (confirmed.cost == 0) confirmedZeroAt = bestIteration_;
-        return confirmed.cost == 0 && enoughSuggestions();
+        // The best's cost from here: the confirmation's, with the search's margin (a
+        // layout at a band's edge is met in one measurement in two: not a zero to stop on).
+        Evaluation asBest = confirmed;
+        if (confirmed.samplers.samplers.size() == scene_->samplers.size()) {
+            asBest.lighting = lightingCostOfResults(*scene_, confirmed.samplers.samplers, options_.marginZ);
+            asBest.cost = scene_->objective.cost(asBest.lighting, asBest.geometry);
+        }
+        if (bestIteration_ == iteration_) currentEval_ = asBest;  // the current layout is the best one
+        bestEval_ = asBest;
+        if (asBest.cost == 0) confirmedZeroAt = bestIteration_;
+        return asBest.cost == 0 && enoughSuggestions();
     };
 
     // Best-so-far snapshots at the checkpoints still ahead, and where the run stops.

@@ -94,6 +94,12 @@ struct OptimizerOptions {
     // the best of those measurements is the result, measured once more for the report.
     int candidates = 4;
     CandidateSeparation candidateSeparation;
+    // The search's margin: every lighting term's band narrowed by this many standard
+    // errors of the term's estimate at each finite end (LightingEvaluator::setSearchMargin),
+    // and a zero confirmed only when the confirmation lies that far inside every band
+    // too, so that a result the run stops on is met in other measurements as well, not
+    // only in the lucky one. The report's C takes no margin. 0: the plain penalty.
+    double marginZ = 2;
     // The polish: this share of `iterations` ends the run as a descent from the best
     // layout at zero temperature (a proposal is kept when C does not rise), with
     // translate and rotate at the fine step scales only and the snap to the room's

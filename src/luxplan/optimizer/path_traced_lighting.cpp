@@ -53,10 +53,10 @@ double PathTracedLighting::evaluate(const Layout& /*layout*/, const std::vector<
         MeasureOptions fresh = options_;
         fresh.seed = hashValues({options_.seed, kFreshTag, ++freshDraws_});
         fresh.choiceError = true;  // the noise penalty reads the errors
-        return measure(tracer_, world, fresh, nullptr, out, hasGlareSurveys_ ? &reportTracer_ : nullptr);
+        return measure(tracer_, world, fresh, nullptr, out, hasGlareSurveys_ ? &reportTracer_ : nullptr, margin_);
     }
     return measure(tracer_, world, options_, incremental_ ? &cache_ : nullptr, out,
-                   hasGlareSurveys_ ? &reportTracer_ : nullptr);
+                   hasGlareSurveys_ ? &reportTracer_ : nullptr, margin_);
 }
 
 double PathTracedLighting::measureIndependently(const Layout& /*layout*/, const std::vector<Transform>& world,
@@ -78,7 +78,7 @@ void PathTracedLighting::setLightRoulette(double share) {
 }
 
 double PathTracedLighting::measure(PathTracer& tracer, const std::vector<Transform>& world, const MeasureOptions& options,
-                                   PathCache* cache, LightingBreakdown* out, PathTracer* glareTracer) {
+                                   PathCache* cache, LightingBreakdown* out, PathTracer* glareTracer, double margin) {
     // The moved entities' vertices are rewritten and the top level rebuilt (EmbreeScene).
     for (size_t i = 0; i < world.size(); ++i) rt_.setEntityTransform(int(i), world[i]);
     rt_.commit();
@@ -93,7 +93,7 @@ double PathTracedLighting::measure(PathTracer& tracer, const std::vector<Transfo
     check_.add(last_.cacheCheck);
     tracedPaths_ += last_.paths - last_.reusedPaths;
     if (out) out->samplers = last_.samplers;
-    return scene_.samplers.empty() ? 0.0 : lightingCostOfResults(scene_, last_.samplers);
+    return scene_.samplers.empty() ? 0.0 : lightingCostOfResults(scene_, last_.samplers, margin);
 }
 
 }  // namespace luxplan

@@ -36,6 +36,7 @@ public:
     // Whether evaluations reuse the paths a move cannot change (on by default; the
     // numbers are the same either way, lightsamplers/path_cache.h).
     void setIncremental(bool on) { incremental_ = on; }
+    void setSearchMargin(double z) override { margin_ = z; }
     // Every path the cache reads back is traced again and compared (MeasureOptions::
     // checkCache): a diagnostic, at the cost of a full evaluation and more.
     void setCheckCache(bool on) { options_.checkCache = on; }
@@ -62,8 +63,9 @@ public:
     RayStats rays() const { return rays_; }
 
 private:
+    // L of the measurement, its bands narrowed by `margin` standard errors (the search's).
     double measure(PathTracer& tracer, const std::vector<Transform>& world, const MeasureOptions& options,
-                   PathCache* cache, LightingBreakdown* out, PathTracer* glareTracer = nullptr);
+                   PathCache* cache, LightingBreakdown* out, PathTracer* glareTracer = nullptr, double margin = 0);
     void settleCache();  // waits for the cache's commit() or revert() under way
 
     const Scene& scene_;
@@ -76,6 +78,7 @@ private:
     tbb::task_group cacheUpdate_;  // commit() or revert() under way
     bool cacheUpdating_ = false;
     bool incremental_ = true;
+    double margin_ = 0;  // the search's (setSearchMargin); independent measurements take none
     bool fresh_ = false;
     uint64_t freshDraws_ = 0;
     MeasureResult last_;

@@ -228,6 +228,7 @@ std::string reportJson(const Scene& scene, const OptimizerResult& r) {
         {"step_scales", o.moves.stepScales},
         {"polish_share", o.polishShare},
         {"guided", o.guidedMoves},
+        {"margin", o.marginZ},
         {"polish_from", r.polishFrom},
         {"suggestions", o.suggestions}};
     return j.dump(2) + "\n";

@@ -1,6 +1,8 @@
 // report.html: the run summary as one static page; every value is escaped, every
 // link is relative to the page and only made to files that exist.
 #include <luxplan/output/report_html.h>
+
+#include <luxplan/optimizer/report.h>
 #include <luxplan/output/report_viewer.h>
 #include <luxplan/optimizer/reach.h>
 
@@ -125,7 +127,7 @@ void summary(std::ostringstream& out, const Scene& scene, const ReportData& data
     out << "</dl>\n";
 }
 
-void optimizerSummary(std::ostringstream& out, const OptimizerResult& r) {
+void optimizerSummary(std::ostringstream& out, const Scene& scene, const OptimizerResult& r) {
     out << "<h2>Optimization</h2>\n<table>\n<tr><th></th><th>C</th><th>L</th><th>G</th><th>feasible</th></tr>\n";
     auto row = [&](const char* name, const Evaluation& e, bool feasible) {
         out << "<tr><th>" << name << "</th>" << cell(number(e.cost, 4), nullptr) << cell(number(e.lighting, 4))
@@ -138,6 +140,12 @@ void optimizerSummary(std::ostringstream& out, const OptimizerResult& r) {
         << r.options.seed << ", " << (r.options.hierarchy == Hierarchy::Flat ? "flat" : "hierarchical") << ".";
     if (r.bestEvaluation.rejected) out << " Rejected by " << escapeHtml(r.bestEvaluation.rejectedBy) << ".";
     out << "</p>\n";
+    if (r.feasible) {
+        const GoalCount goals = countGoals(scene, r);
+        out << "<p class=\"" << (goals.all() ? "met" : "missed") << "\">" << goals.lightingMet << " of " << goals.lighting
+            << " lighting goals met, " << goals.rulesHeld << " of " << goals.rules
+            << " rules held (a rule at any penalty above 0 is not held).</p>\n";
+    }
 }
 
 void pictures(std::ostringstream& out, const std::filesystem::path& folder) {
@@ -379,6 +387,7 @@ void moveTable(std::ostringstream& out, const OptimizerResult& r) {
     for (const LevelStats& level : r.levels) {
         for (MoveType t : kMoveTypes) {
             const MoveStats& s = level.moves[int(t)];
+            if (s.proposed == 0) continue;  // a move this level does not make
             out << "<tr>" << cell(escapeHtml(level.name) + " <span class=\"muted\">(" + std::to_string(level.entities.size()) +
                                   " entities)</span>")
                 << cell(escapeHtml(moveName(t))) << "<td class=\"num\">" << s.proposed << "</td><td class=\"num\">"
@@ -450,7 +459,7 @@ std::string reportHtml(const std::filesystem::path& folder, const Scene& scene, 
         << "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n<title>" << escapeHtml(title)
         << "</title>\n<style>" << kStyle << "</style>\n</head>\n<body>\n<h1>" << escapeHtml(title) << "</h1>\n";
     summary(out, scene, data);
-    if (result) optimizerSummary(out, *result);
+    if (result) optimizerSummary(out, scene, *result);
     pictures(out, folder);
     if (std::string viewer = viewerSection(folder); !viewer.empty()) out << viewer;
     else if (!data.viewerNote.empty()) out << "<h2>The room in 3D</h2>\n<p class=\"muted\">" << escapeHtml(data.viewerNote) << "</p>\n";

@@ -181,6 +181,7 @@ struct OptimizerSettings {
     double polishShare = 0.2;        // the run's last share: a zero-temperature polish of the best
     bool guided = true;              // the guided move from the light map (optimizer/light_map.h)
     int suggestions = 0;             // distinct layouts written beside the result (optimize --suggestions)
+    double margin = 2;               // the search's margin inside every lighting band, in standard errors
 };
 
 // The scene file's names for these enums ("south", "glossy"): one table each
