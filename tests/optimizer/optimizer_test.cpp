@@ -68,6 +68,7 @@ TEST_F(OptimizerTest, LightingOnlyForLayoutsThatPassTheGeometricTest) {
     test::DeskLight light(scene);
     OptimizerOptions o = optimizerOptions(scene);
     o.iterations = 1500;
+    o.stopAtZeroCost = false;  // every iteration, whenever C reaches 0
     OptimizerResult r = Optimizer(scene, o, &light).run();
     ASSERT_TRUE(r.startFeasible);
     EXPECT_EQ(light.rejectedCalls, 0);
@@ -80,8 +81,10 @@ TEST_F(OptimizerTest, LightingOnlyForLayoutsThatPassTheGeometricTest) {
         }
     EXPECT_GT(rejected, 0);  // the room is tight enough that some proposals collide
     EXPECT_GT(screened, 0);  // delayed acceptance: some fail on their rules' change alone
-    // The confirmations, the candidates' re-measures and the report's are the rest.
-    EXPECT_EQ(light.calls, 1 + evaluatedFeasible + r.independentMeasurements);
+    // The confirmations, the candidates' re-measures and the report's are the rest, and
+    // the polish's measurement of the best it starts from.
+    EXPECT_LT(r.polishFrom, r.iterations);
+    EXPECT_EQ(light.calls, 1 + evaluatedFeasible + r.independentMeasurements + 1);
 }
 
 TEST_F(OptimizerTest, NoLightingHookMeansLZero) {
@@ -173,6 +176,10 @@ TEST_F(OptimizerTest, LevelsAndInnerIterations) {
     o.iterations = 1000;
     o.stopAtZeroCost = false;
     o.polishShare = 0;  // the polish's own level: OptimizerTest.ThePolish...
+    // By default (0) the levels' degrees of freedom set the cycle: the object level's
+    // (a monitor's x, y and turn, a chair's x and y: 5) over the group level's (5).
+    OptimizerResult byDof = Optimizer(scene, o).run();
+    o.innerIterations = 4;
     OptimizerResult r = Optimizer(scene, o).run();
     ASSERT_EQ(r.levels.size(), 2u);
     EXPECT_EQ(r.levels[0].name, "group");
@@ -188,6 +195,8 @@ TEST_F(OptimizerTest, LevelsAndInnerIterations) {
     };
     EXPECT_EQ(proposals(r.levels[0]), 200);  // one group-level proposal per 1 + 4 iterations
     EXPECT_EQ(proposals(r.levels[1]), 800);
+    EXPECT_EQ(proposals(byDof.levels[0]), 500);
+    EXPECT_EQ(proposals(byDof.levels[1]), 500);
     o.hierarchy = Hierarchy::Flat;
     r = Optimizer(scene, o).run();
     ASSERT_EQ(r.levels.size(), 1u);

@@ -59,7 +59,7 @@ struct OptimizerOptions {
     // group-level change). 0: set by the levels' degrees of freedom, the object
     // level's over the group level's (rounded, at least 1; with focusInner, those of
     // the moved group's members over the group's own).
-    int innerIterations = 4;
+    int innerIterations = 0;
     // Nested: the object-level proposals after a group-level one move only the members
     // of the group it chose (its movable descendants), refining that group's new
     // arrangement before the next group move; a group without movable members is

@@ -173,7 +173,7 @@ struct OptimizerSettings {
     int searchPathsPerPoint = 64;    // what the search uses: paths_per_point if the file gives it, else 64
     int reportPathsPerPoint = 1000;  // for the final layout's report
     bool flat = false;               // ignore groups (the paper's Figure 6 comparison)
-    int innerIterations = 4;         // object-level proposals per group-level one; 0: by degrees of freedom
+    int innerIterations = 0;         // object-level proposals per group-level one; 0: by degrees of freedom
     bool nested = false;             // object-level proposals move the members of the group just proposed
     bool constantTemperature = false;
     double temperatureStart = 0.1, temperatureEnd = 0.001;
