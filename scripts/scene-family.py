@@ -94,17 +94,8 @@ def draw_scene(rng, index):
 
 def furnish(scene, positions, region):
     """The scene with one workstation at each position, and the office's rules."""
-    n = len(positions)
-    entities, constraints = [], []
-    for k, (x, y) in enumerate(positions):
-        entities.append(g.workstation(f"ws{k + 1}", (x, y), 0, [region]))
-        constraints.append({"type": "alignment", "a": f"ws{k + 1}.desk", "b": "room", "tolerance_deg": 10})
-        constraints.append({"type": "focus", "a": f"ws{k + 1}.monitor", "b": f"ws{k + 1}.chair", "tolerance_deg": 15})
-    for i in range(n):
-        for j in range(i + 1, n):
-            constraints.append(g.clearance(f"ws{i + 1}", f"ws{j + 1}", 2.0))
-    constraints.append({"type": "overlap", "tolerance": 0.05})
-    return dict(scene, entities=entities, constraints=constraints)
+    entities = [g.workstation(f"ws{k + 1}", (x, y), 0, [region]) for k, (x, y) in enumerate(positions)]
+    return dict(scene, entities=entities, constraints=g.workstation_rules(len(positions)))
 
 
 def planted_layout(scene):

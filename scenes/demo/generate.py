@@ -33,14 +33,7 @@ def daylit_office():
                 if s["type"] == "directional":
                     s["target"] = [0, 150]
         entities.append(ws)
-    constraints = []
-    for i in range(WORKSTATIONS):
-        constraints.append({"type": "alignment", "a": f"ws{i + 1}.desk", "b": "room", "tolerance_deg": 10})
-        constraints.append({"type": "focus", "a": f"ws{i + 1}.monitor", "b": f"ws{i + 1}.chair", "tolerance_deg": 15})
-    for i in range(WORKSTATIONS):
-        for j in range(i + 1, WORKSTATIONS):
-            constraints.append(g.clearance(f"ws{i + 1}", f"ws{j + 1}", 2.0))
-    constraints.append({"type": "overlap", "tolerance": 0.05})
+    constraints = g.workstation_rules(WORKSTATIONS)
     geometry = [
         g.room([W, D, H], [g.window("east", 0.6, 1.5, material="tinted"), g.window("east", 2.5, 1.5, material="tinted"),
                            g.window("east", 4.4, 1.5, material="tinted"), g.door("west", 0.4)]),

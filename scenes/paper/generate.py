@@ -317,22 +317,29 @@ def fig4_presenter():
 OFFICE = (9.0, 6.5, 2.8)
 
 
+def workstation_rules(n, minimum=2.0):
+    """The office's rules for workstations ws1..wsN: each desk aligned with the room,
+    each screen facing its chair, every two workstations `minimum` m apart, no overlap."""
+    constraints = []
+    for i in range(n):
+        constraints.append({"type": "alignment", "a": f"ws{i + 1}.desk", "b": "room",
+                            "tolerance_deg": 10})
+        constraints.append({"type": "focus", "a": f"ws{i + 1}.monitor", "b": f"ws{i + 1}.chair",
+                            "tolerance_deg": 15})
+    for i in range(n):
+        for j in range(i + 1, n):
+            constraints.append(clearance(f"ws{i + 1}", f"ws{j + 1}", minimum))
+    constraints.append({"type": "overlap", "tolerance": 0.05})
+    return constraints
+
+
 def office(variant):
     W, D, H = OFFICE
     regions = [{"min": [0.9, 0.9], "max": [W - 0.9, D - 0.9], "rotations": [0, 90, 180, 270]}]
     # (the first desk clear of the door's blocker, x 0 .. 1.4)
     starts = [(2.2, 1.6), (4.5, 1.6), (7.0, 1.6), (2.0, 4.6), (4.5, 4.6), (7.0, 4.6)]
     entities = [workstation(f"ws{i + 1}", p, 0, regions) for i, p in enumerate(starts)]
-    constraints = []
-    for i in range(6):
-        constraints.append({"type": "alignment", "a": f"ws{i + 1}.desk", "b": "room",
-                            "tolerance_deg": 10})
-        constraints.append({"type": "focus", "a": f"ws{i + 1}.monitor", "b": f"ws{i + 1}.chair",
-                            "tolerance_deg": 15})
-    for i in range(6):
-        for j in range(i + 1, 6):
-            constraints.append(clearance(f"ws{i + 1}", f"ws{j + 1}", 2.0))
-    constraints.append({"type": "overlap", "tolerance": 0.05})
+    constraints = workstation_rules(6)
     geometry = [
         room([W, D, H], [window("east", 0.6, 1.5), window("east", 2.5, 1.5),
                          window("east", 4.4, 1.5), door("west", 0.4)]),

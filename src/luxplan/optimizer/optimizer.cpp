@@ -430,6 +430,12 @@ void Optimizer::polishStep() {
             accept = e.cost <= currentEval_.cost;
         }
         if (lighting_) s.pathsTraced += lighting_->tracedPaths() - tracedBefore;
+    }
+    settle(p.valid, accept, s, std::move(proposed), std::move(e));
+}
+
+void Optimizer::settle(bool evaluated, bool accept, MoveStats& stats, Layout proposed, Evaluation e) {
+    if (evaluated) {
         if (accept) geometry_.commit();
         else geometry_.revert();
         if (lighting_) accept ? lighting_->commit() : lighting_->revert();
@@ -437,7 +443,7 @@ void Optimizer::polishStep() {
     ++iteration_;
     ++windowProposed_, ++progressProposed_;
     if (accept) {
-        ++s.accepted;
+        ++stats.accepted;
         acceptProposal(std::move(proposed), std::move(e));
     }
     if (iteration_ % traceEvery_ == 0) record();
@@ -518,17 +524,8 @@ void Optimizer::step() {
         if (lighting_) stats.pathsTraced += lighting_->tracedPaths() - tracedBefore;
         if (options_.noiseAware && !currentEval_.rejected) noteNoise(e);
         if (e.rejected && !accept) ++stats.rejectedGeometry;
-        if (accept) geometry_.commit();
-        else geometry_.revert();
-        if (lighting_) accept ? lighting_->commit() : lighting_->revert();
     }
-    ++iteration_;
-    ++windowProposed_, ++progressProposed_;
-    if (accept) {
-        ++stats.accepted;
-        acceptProposal(std::move(proposed), std::move(e));
-    }
-    if (iteration_ % traceEvery_ == 0) record();
+    settle(p.valid, accept, stats, std::move(proposed), std::move(e));
 }
 
 OptimizerResult Optimizer::run(const ProgressCallback& progress, const std::atomic<bool>* cancel) {

@@ -274,6 +274,9 @@ private:
     void startPolish();
     // The bookkeeping of an accepted proposal: current, candidates, best.
     void acceptProposal(Layout proposed, Evaluation e);
+    // The end of every proposal: the caches follow the decision (when it was
+    // evaluated), then the counters, the accepted state and the trace.
+    void settle(bool evaluated, bool accept, MoveStats& stats, Layout proposed, Evaluation e);
     void polishStep();
     int searchIterations() const;
     void refreshCurrent();
