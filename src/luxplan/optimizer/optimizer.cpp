@@ -702,9 +702,19 @@ void Optimizer::chooseResult(OptimizerResult& r) {
         // The winner's curse: the lowest of many noisy estimates is low by luck. Each
         // candidate is measured again (stream 1), and the lowest of those is chosen (a
         // lone candidate, as when nothing moves, is chosen without).
+        // Between equal costs (several at 0), the one with the lower cost under the
+        // search's margin: the one further inside its bands, likelier met in another
+        // measurement.
+        auto withMargin = [&](const Evaluation& e) {
+            if (e.samplers.samplers.size() != scene_->samplers.size()) return e.cost;
+            return scene_->objective.cost(lightingCostOfResults(*scene_, e.samplers.samplers, options_.marginZ), e.geometry);
+        };
+        std::vector<double> margined(all.size());
         for (size_t i = 0; i < all.size(); ++i) {
             if (!all[i].independent) all[i].independent = measure(all[i].layout, all[i].search, kSelectionStream);
-            if (all[i].independent->cost < all[chosen].independent->cost) chosen = i;
+            margined[i] = withMargin(*all[i].independent);
+            const double c = all[i].independent->cost, best = all[chosen].independent->cost;
+            if (c < best || (c == best && margined[i] < margined[chosen])) chosen = i;
         }
     } else {
         // L took no part in the run: the best by G, which is exact.
