@@ -585,6 +585,7 @@ OptimizerResult Optimizer::run(const ProgressCallback& progress, const std::atom
         // independently of the search's random numbers.
         ++confirmations_;
         ++independentMeasurements_;
+        const Evaluation bestSearch = bestEval_;
         Evaluation confirmed = bestEval_;
         confirmed.lighting = lighting_->measureIndependently(best_, worldTransforms(*scene_, best_), &confirmed.samplers,
                                                              independentSeed(kSelectionStream));
@@ -595,9 +596,18 @@ OptimizerResult Optimizer::run(const ProgressCallback& progress, const std::atom
         candidates_.keep(Candidate{best_, bestEval_, confirmed, bestIteration_});
         // The best's cost from here: the confirmation's, with the search's margin (a
         // layout at a band's edge is met in one measurement in two: not a zero to stop on).
+        // The margin's error is the larger of the confirmation's own and what the two
+        // independent estimates of the layout, the search's and the confirmation's, say
+        // by their difference (|a - b| / sqrt 2): a glare sampler's brightest stratum
+        // differs between seeds by more than its error says.
         Evaluation asBest = confirmed;
         if (confirmed.samplers.samplers.size() == scene_->samplers.size()) {
-            asBest.lighting = lightingCostOfResults(*scene_, confirmed.samplers.samplers, options_.marginZ);
+            std::vector<SamplerResult> spread = confirmed.samplers.samplers;
+            const auto& search = bestSearch.samplers.samplers;
+            for (size_t k = 0; k < spread.size() && search.size() == spread.size(); ++k)
+                spread[k].standardError =
+                    std::max(spread[k].standardError, std::abs(spread[k].value - search[k].value) / std::sqrt(2.0));
+            asBest.lighting = lightingCostOfResults(*scene_, spread, options_.marginZ);
             asBest.cost = scene_->objective.cost(asBest.lighting, asBest.geometry);
         }
         if (bestIteration_ == iteration_) currentEval_ = asBest;  // the current layout is the best one
