@@ -386,9 +386,24 @@ TEST_F(OptimizerTest, WritesReportAndTrace) {
     EXPECT_EQ(report["samplers"][0]["description"], scene.samplers[0].type->describe());
     EXPECT_EQ(report["samplers"][0]["target"][0], 300);
     int64_t proposed = 0;
-    for (const char* m : {"translate", "rotate", "swap", "jump"}) proposed += report["moves"][m]["proposed"].get<int64_t>();
-    EXPECT_EQ(proposed, r.iterations);
-    EXPECT_EQ(report["levels"].size(), 2u);
+    // Every iteration is one proposal of the group or object level, or of the polish
+    // after polish_from; the polish's level also holds the snaps tried before a zero is
+    // confirmed (one per turning entity, not iterations).
+    auto levelProposals = [&](size_t l) {
+        int64_t n = 0;
+        for (auto& [name, m] : report["levels"][l]["moves"].items()) n += m["proposed"].get<int64_t>();
+        return n;
+    };
+    ASSERT_GE(report["levels"].size(), 2u);
+    const int64_t polished = r.polishFrom < r.iterations ? r.iterations - r.polishFrom : 0;
+    proposed = levelProposals(0) + levelProposals(1);
+    EXPECT_EQ(proposed + polished, r.iterations);
+    if (report["levels"].size() == 3u) {
+        EXPECT_EQ(report["levels"][2]["name"], "polish");
+        EXPECT_GE(levelProposals(2), polished);
+    } else {
+        EXPECT_EQ(report["levels"].size(), 2u);
+    }
     EXPECT_EQ(report["settings"]["seed"], 3);
 
     std::ifstream trace(out / "trace.csv");

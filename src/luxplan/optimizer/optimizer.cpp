@@ -396,7 +396,7 @@ void Optimizer::startPolish() {
     // cost may be a confirmation's, from other random numbers).
     polishing_ = true;
     polishFrom_ = iteration_;
-    stats_.push_back({"polish", polishSets_[0].entities(), {}});
+    polishLevel();
     if (lighting_) lighting_->revert();
     geometry_.revert();
     const std::vector<Transform> world = worldTransforms(*scene_, best_);
@@ -405,6 +405,46 @@ void Optimizer::startPolish() {
     if (lighting_) lighting_->commit();
     current_ = best_;
     currentEval_ = std::move(e);
+}
+
+LevelStats& Optimizer::polishLevel() {
+    if (stats_.size() == levels_.size()) stats_.push_back({"polish", polishSets_[0].entities(), {}});
+    return stats_.back();
+}
+
+void Optimizer::snapCurrent() {
+    // Each entity that turns, once, to the room's nearest quarter turn, kept when C does
+    // not rise: a run that stops on a zero before its polish still ends square.
+    if (polishSets_.empty() || currentEval_.rejected) return;
+    const MoveSet& set = polishSets_[0];
+    for (int entity : set.candidates(MoveType::Snap)) {
+        Layout proposed = current_;
+        Proposal p = set.apply(MoveType::Snap, entity, proposed, polishRng_);
+        MoveStats& s = polishLevel().moves[int(MoveType::Snap)];
+        ++s.proposed;
+        if (!p.valid) {
+            ++s.outside;
+            continue;
+        }
+        const std::vector<Transform> world = worldTransforms(*scene_, proposed);
+        const uint64_t tracedBefore = lighting_ ? lighting_->tracedPaths() : 0;
+        Evaluation e = evaluateGeometry(world);
+        bool accept = false;
+        if (e.rejected) ++s.rejectedGeometry;
+        else if ((1 - scene_->objective.lightingWeight) * e.geometry > currentEval_.cost) ++s.screened;
+        else {
+            addLighting(e, proposed, world);
+            accept = e.cost <= currentEval_.cost;
+        }
+        if (lighting_) s.pathsTraced += lighting_->tracedPaths() - tracedBefore;
+        if (accept) geometry_.commit();
+        else geometry_.revert();
+        if (lighting_) accept ? lighting_->commit() : lighting_->revert();
+        if (!accept) continue;
+        ++s.accepted;
+        current_ = std::move(proposed);
+        currentEval_ = std::move(e);
+    }
 }
 
 void Optimizer::polishStep() {
@@ -577,6 +617,15 @@ OptimizerResult Optimizer::run(const ProgressCallback& progress, const std::atom
     auto solved = [&] {
         if (!options_.stopAtZeroCost || !feasible_ || bestEval_.cost != 0) return false;
         if (confirmedZeroAt == bestIteration_) return enoughSuggestions();
+        if (bestIteration_ == iteration_ && iteration_ > 0) {
+            // The best is the current layout: square it with the room before confirming.
+            snapCurrent();
+            if (currentEval_.cost <= bestEval_.cost) {
+                best_ = current_;
+                bestEval_ = currentEval_;
+                candidates_.offer(current_, currentEval_, iteration_);
+            }
+        }
         if (!bestEval_.lightingEvaluated) {
             confirmedZeroAt = bestIteration_;
             return enoughSuggestions();

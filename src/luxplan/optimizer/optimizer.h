@@ -272,6 +272,11 @@ private:
     void noteNoise(const Evaluation& proposed);
     // The polish: from the best layout, zero temperature, fine steps (OptimizerOptions::polishShare).
     void startPolish();
+    // The polish's level of statistics (added on first use).
+    LevelStats& polishLevel();
+    // Each turning entity of the current layout snapped to the room's quarter turns, one
+    // proposal each, kept where C does not rise (before a zero is confirmed).
+    void snapCurrent();
     // The bookkeeping of an accepted proposal: current, candidates, best.
     void acceptProposal(Layout proposed, Evaluation e);
     // The end of every proposal: the caches follow the decision (when it was
