@@ -492,3 +492,52 @@ TEST_F(OptimizerTest, SuggestionsAreDistinctAndTheResultComesFirst) {
 
 }  // namespace
 }  // namespace luxplan
+
+namespace luxplan {
+namespace {
+
+// C from the group's place on its rail alone: 0.1 |x - 7.3| (its least at one point, so
+// that small steps keep taking cost off); the member's moves change nothing.
+class RailLight : public LightingEvaluator {
+public:
+    double evaluate(const Layout&, const std::vector<Transform>& world, LightingBreakdown* out) override {
+        const double v = 0.1 * std::abs(world[0].t.x - 7.3);
+        if (out) out->samplers = {{v, 0, {}, {}}};
+        return v;
+    }
+};
+
+// The adaptive share: the object level's moves take no cost off, so after their first
+// 50 lit proposals they get the least share, 10%, not the two thirds their degrees of
+// freedom give them (the member's x and y against the group's x). A constant schedule (a plain
+// chain) keeps the fixed cycle, as does the option off.
+TEST(AdaptiveShare, TheLevelsShareFollowsWhatTheirProposalsYield) {
+    test::SceneBuilder b;
+    b.material("m", test::diffuse(0.5)).lightingWeight(1);
+    b.sampler("s", planarSampler({0, 0, 1}, {0, 0, 1}, {0, 1, 0}, {1, 1}, {2, 2}), 0, 0, 1.0);
+    b.entity("g", {1, 1, 0}).region({0, 1}, {10, 1}).part({0.5, 0.5, 0.5}, "m")
+        .entity("c", {0, 0, 0}).region({-1, -1}, {1, 1}).part({0.1, 0.1, 0.1}, "m", Vec3(0, 0, 1)).end()
+        .end();
+    const Scene scene = b.build();
+    auto objectShare = [&](bool adaptive, Schedule::Kind kind) {
+        RailLight light;
+        OptimizerOptions o;
+        o.iterations = 3000;
+        o.stopAtZeroCost = false;
+        o.polishShare = 0;
+        o.adaptiveShare = adaptive;
+        o.schedule.kind = kind;
+        OptimizerResult r = Optimizer(scene, o, &light).run();
+        EXPECT_EQ(r.levels.size(), 2u);
+        int64_t group = 0, object = 0;
+        for (const MoveStats& m : r.levels[0].moves) group += m.proposed;
+        for (const MoveStats& m : r.levels[1].moves) object += m.proposed;
+        return double(object) / double(group + object);
+    };
+    EXPECT_NEAR(objectShare(false, Schedule::Kind::Geometric), 2.0 / 3.0, 1e-9);  // 2 degrees of freedom to 1
+    EXPECT_LT(objectShare(true, Schedule::Kind::Geometric), 0.2);
+    EXPECT_NEAR(objectShare(true, Schedule::Kind::Constant), 2.0 / 3.0, 1e-9);
+}
+
+}  // namespace
+}  // namespace luxplan

@@ -174,6 +174,7 @@ private:
         s.guided = o.boolean("guided").value_or(s.guided);
         s.suggestions = o.integer("suggestions", Range::closed(0, 50)).value_or(s.suggestions);
         s.margin = o.number("margin", s.margin, Range::closed(0, 5));
+        s.adaptiveShare = o.boolean("adaptive_share").value_or(s.adaptiveShare);
         if (auto h = o.string("hierarchy")) {
             static const EnumNames<bool> hierarchies{{{false, "hierarchical"}, {true, "flat"}}};
             if (auto flat = hierarchies.parse(*h)) s.flat = *flat;

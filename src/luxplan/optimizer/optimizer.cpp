@@ -61,6 +61,7 @@ OptimizerOptions optimizerOptions(const Scene& scene) {
     o.guidedMoves = s.guided;
     o.suggestions = s.suggestions;
     o.marginZ = s.margin;
+    o.adaptiveShare = s.adaptiveShare;
     return o;
 }
 
@@ -243,6 +244,28 @@ void Optimizer::noteNoise(const Evaluation& proposed) {
     noiseVariance_ += (v - noiseVariance_) * std::max(kNoiseMemory, 1.0 / double(noiseCount_));
 }
 
+void Optimizer::noteYield(int level, double gain, uint64_t paths) {
+    if (level < 0 || level > 1) return;
+    const size_t l = size_t(level);
+    ++yieldCount_[l];
+    const double w = std::max(1.0 / 200, 1.0 / double(yieldCount_[l]));
+    yieldGain_[l] += (gain - yieldGain_[l]) * w;
+    yieldPaths_[l] += (double(paths) - yieldPaths_[l]) * w;
+}
+
+int Optimizer::objectSteps(Rng& rng) const {
+    constexpr int64_t kFirst = 50;
+    if (!options_.adaptiveShare || options_.schedule.kind != Schedule::Kind::Geometric || yieldCount_[0] < kFirst ||
+        yieldCount_[1] < kFirst)
+        return innerSteps_;
+    // Cost taken off per path traced; a level that took nothing off yet counts a little.
+    auto rate = [&](size_t l) { return (yieldGain_[l] + 1e-12) / std::max(1.0, yieldPaths_[l]); };
+    const double share = std::clamp(rate(1) / (rate(0) + rate(1)), 0.1, 0.9);
+    const double steps = share / (1 - share);  // object-level steps per group-level one, on average
+    const int whole = int(steps);
+    return whole + (rng.uniform() < steps - whole ? 1 : 0);
+}
+
 int Optimizer::searchIterations() const {
     if (polishSets_.empty()) return options_.iterations;
     return options_.iterations - int(std::lround(options_.iterations * options_.polishShare));
@@ -310,6 +333,7 @@ void Optimizer::initialize(const std::function<void(int drawn, int most)>& drawi
     lightingEvaluations_ = 0;
     innerLeft_ = 0, focus_ = -1;
     noiseVariance_ = 0, noiseCount_ = 0;
+    yieldGain_ = {}, yieldPaths_ = {}, yieldCount_ = {};
     candidates_.clear();
     candidates_.offer(current_, currentEval_, 0);
     suggestions_.clear();
@@ -528,7 +552,7 @@ void Optimizer::step() {
     if (levels_.size() == 2 && level == 0) {
         // The chosen group (valid or not: the choice never depends on the state).
         focus_ = options_.focusInner ? focusOf_[size_t(p.entity)] : -1;
-        innerLeft_ = !options_.focusInner ? innerSteps_ : focus_ >= 0 ? focusSteps_[size_t(focus_)] : 0;
+        innerLeft_ = !options_.focusInner ? objectSteps(rng) : focus_ >= 0 ? focusSteps_[size_t(focus_)] : 0;
     }
     MoveStats& stats = stats_[size_t(level)].moves[int(p.type)];
     ++stats.proposed;
@@ -562,6 +586,9 @@ void Optimizer::step() {
             }
         }
         if (lighting_) stats.pathsTraced += lighting_->tracedPaths() - tracedBefore;
+        if (e.lightingEvaluated && currentEval_.lightingEvaluated)
+            noteYield(level, accept ? std::max(0.0, currentEval_.cost - e.cost) : 0.0,
+                      lighting_ ? lighting_->tracedPaths() - tracedBefore : 0);
         if (options_.noiseAware && !currentEval_.rejected) noteNoise(e);
         if (e.rejected && !accept) ++stats.rejectedGeometry;
     }

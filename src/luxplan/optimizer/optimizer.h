@@ -100,6 +100,12 @@ struct OptimizerOptions {
     // too, so that a result the run stops on is met in other measurements as well, not
     // only in the lucky one. The report's C takes no margin. 0: the plain penalty.
     double marginZ = 2;
+    // The object level's share of proposals follows what the levels' proposals yield:
+    // cost taken off per path traced, each level's over its last ~200 lit proposals
+    // (a geometric schedule's run only; the first 50 of each level keep the fixed
+    // cycle). A level whose moves the cost does not care about (monitors the chain
+    // moves freely, 95% accepted) gets fewer; the share stays within [0.1, 0.9].
+    bool adaptiveShare = true;
     // The polish: this share of `iterations` ends the run as a descent from the best
     // layout at zero temperature (a proposal is kept when C does not rise), with
     // translate and rotate at the fine step scales only and the snap to the room's
@@ -306,6 +312,12 @@ private:
     std::vector<MoveSet> focusSets_;
     std::vector<int> focusSteps_;
     int innerSteps_ = 4;  // unfocused: object-level steps per group-level one
+    // The levels' yield (OptimizerOptions::adaptiveShare): per level, moving means of the
+    // cost a lit proposal took off (0 unless accepted and lower) and of the paths it traced.
+    std::array<double, 2> yieldGain_{}, yieldPaths_{};
+    std::array<int64_t, 2> yieldCount_{};
+    void noteYield(int level, double gain, uint64_t paths);
+    int objectSteps(Rng& rng) const;
     int innerLeft_ = 0, focus_ = -1;
     std::vector<LevelStats> stats_;
     std::vector<Rng> rngs_;  // one stream per level

@@ -229,6 +229,7 @@ std::string reportJson(const Scene& scene, const OptimizerResult& r) {
         {"polish_share", o.polishShare},
         {"guided", o.guidedMoves},
         {"margin", o.marginZ},
+        {"adaptive_share", o.adaptiveShare},
         {"polish_from", r.polishFrom},
         {"suggestions", o.suggestions}};
     return j.dump(2) + "\n";

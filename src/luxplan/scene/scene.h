@@ -182,6 +182,7 @@ struct OptimizerSettings {
     bool guided = true;              // the guided move from the light map (optimizer/light_map.h)
     int suggestions = 0;             // distinct layouts written beside the result (optimize --suggestions)
     double margin = 2;               // the search's margin inside every lighting band, in standard errors
+    bool adaptiveShare = true;       // the object level's share by what the levels' proposals yield
 };
 
 // The scene file's names for these enums ("south", "glossy"): one table each
