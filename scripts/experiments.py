@@ -463,7 +463,7 @@ room instead, as a designer would, and every goal becomes attainable at once:
   solar-control glazing (45%), six 2400 lm panels, five workstations, desks 300–750 lx,
   screens at most 150 cd/m². Seeds 1–5 at up to 1000 paths per point: every run ends
   with every goal met and every rule held in a measurement with a seed no search used
-  (5 of 5, 92–218 s each on 2 cores, 5697–10 000 iterations; commit af08ab1,
+  (5 of 5, 66–93 s each on 2 cores, 5358–6937 iterations; commit c834c36,
   [optimizer.md](optimizer.md), "Measured"); the search moves the desks out of the sun
   band by the windows and turns the screens away from them.
 - With six workstations, the same glazing, panels at 3200 lm and desks at 300–750 lx,
