@@ -450,17 +450,8 @@ void Optimizer::snapCurrent() {
             ++s.outside;
             continue;
         }
-        const std::vector<Transform> world = worldTransforms(*scene_, proposed);
-        const uint64_t tracedBefore = lighting_ ? lighting_->tracedPaths() : 0;
-        Evaluation e = evaluateGeometry(world);
-        bool accept = false;
-        if (e.rejected) ++s.rejectedGeometry;
-        else if ((1 - scene_->objective.lightingWeight) * e.geometry > currentEval_.cost) ++s.screened;
-        else {
-            addLighting(e, proposed, world);
-            accept = e.cost <= currentEval_.cost;
-        }
-        if (lighting_) s.pathsTraced += lighting_->tracedPaths() - tracedBefore;
+        Evaluation e;
+        const bool accept = descends(proposed, s, e);
         if (accept) geometry_.commit();
         else geometry_.revert();
         if (lighting_) accept ? lighting_->commit() : lighting_->revert();
@@ -478,24 +469,26 @@ void Optimizer::polishStep() {
     ++s.proposed;
     bool accept = false;
     Evaluation e;
-    if (!p.valid) {
-        ++s.outside;
-    } else {
-        const std::vector<Transform> world = worldTransforms(*scene_, proposed);
-        const uint64_t tracedBefore = lighting_ ? lighting_->tracedPaths() : 0;
-        e = evaluateGeometry(world);
-        const double w = scene_->objective.lightingWeight;
-        if (e.rejected) {
-            ++s.rejectedGeometry;
-        } else if ((1 - w) * e.geometry > currentEval_.cost) {
-            ++s.screened;  // no light could bring C down to the current cost
-        } else {
-            addLighting(e, proposed, world);
-            accept = e.cost <= currentEval_.cost;
-        }
-        if (lighting_) s.pathsTraced += lighting_->tracedPaths() - tracedBefore;
-    }
+    if (!p.valid) ++s.outside;
+    else accept = descends(proposed, s, e);
     settle(p.valid, accept, s, std::move(proposed), std::move(e));
+}
+
+bool Optimizer::descends(const Layout& proposed, MoveStats& s, Evaluation& e) {
+    const std::vector<Transform> world = worldTransforms(*scene_, proposed);
+    const uint64_t tracedBefore = lighting_ ? lighting_->tracedPaths() : 0;
+    e = evaluateGeometry(world);
+    bool accept = false;
+    if (e.rejected) {
+        ++s.rejectedGeometry;
+    } else if ((1 - scene_->objective.lightingWeight) * e.geometry > currentEval_.cost) {
+        ++s.screened;  // no light could bring C down to the current cost
+    } else {
+        addLighting(e, proposed, world);
+        accept = e.cost <= currentEval_.cost;
+    }
+    if (lighting_) s.pathsTraced += lighting_->tracedPaths() - tracedBefore;
+    return accept;
 }
 
 void Optimizer::settle(bool evaluated, bool accept, MoveStats& stats, Layout proposed, Evaluation e) {

@@ -283,6 +283,10 @@ private:
     // Each turning entity of the current layout snapped to the room's quarter turns, one
     // proposal each, kept where C does not rise (before a zero is confirmed).
     void snapCurrent();
+    // The zero-temperature test of the polish and the snaps: G, the light unless the
+    // rules alone already exceed the current C, kept when C does not rise (the caches
+    // still to commit or revert). Counts into `s`.
+    bool descends(const Layout& proposed, MoveStats& s, Evaluation& e);
     // The bookkeeping of an accepted proposal: current, candidates, best.
     void acceptProposal(Layout proposed, Evaluation e);
     // The end of every proposal: the caches follow the decision (when it was
