@@ -84,7 +84,8 @@ void runMeasure(const MeasureArgs& args) {
     tracing.exteriorSun = args.exteriorSun == "on";
     PathTracer tracer(rt, daylight ? &*daylight : nullptr, tracing);
     MeasureOptions options;
-    options.pathsPerPoint = args.paths > 0 ? args.paths : scene.optimizer.pathsPerPoint;
+    // The report's count: one number per quantity, whichever command gives it.
+    options.pathsPerPoint = args.paths > 0 ? args.paths : scene.optimizer.reportPathsPerPoint;
     warnFewPaths(scene, options.pathsPerPoint, args.paths > 0);
     options.seed = args.seed.value_or(scene.optimizer.seed);
     options.adaptive = args.adaptive;
@@ -189,7 +190,7 @@ void runMeasure(const MeasureArgs& args) {
 void warnFewPaths(const Scene& scene, int paths, bool fromOption) {
     if (paths >= 2 || scene.samplers.empty()) return;
     const std::string source = fromOption ? "--paths " + std::to_string(paths)
-                                          : scene.file.string() + ": /optimizer/paths_per_point: " + std::to_string(paths);
+                                          : scene.file.string() + ": /optimizer/report_paths_per_point: " + std::to_string(paths);
     std::string message = "warning: " + source + ": one path per point gives no standard error (reported as 0, "
                           "n/a in measure's table)";
     for (const LightSamplerSpec& s : scene.samplers)
@@ -206,7 +207,7 @@ void registerMeasureCommand(CLI::App& app, int& threads) {
     auto* cmd = app.add_subcommand("measure", "Evaluate every light sampler of a scene by path tracing");
     cmd->add_option("scene", args->scene, "Scene JSON file")->required();
     cmd->add_option("--layout", args->layout, "layout.json to measure instead of the scene's placement");
-    cmd->add_option("--paths", args->paths, "Paths per sampler point (default: optimizer.paths_per_point)")
+    cmd->add_option("--paths", args->paths, "Paths per sampler point (default: the report's, optimizer.report_paths_per_point)")
         ->check(wholeNumber(1));
     addSeedOption(cmd, args->seed);
     cmd->add_option("--threads", threads, "Worker threads (default: all cores)")->check(wholeNumber(0));

@@ -270,8 +270,7 @@ int runOptimize(const OptimizeArgs& args) {
         std::cout << "; no layout passed the geometric rules";
     if (result.feasible) {
         const GoalCount goals = countGoals(scene, result);
-        std::cout << "\n  " << goals.lightingMet << " of " << goals.lighting << " lighting goals met, " << goals.rulesHeld
-                  << " of " << goals.rules << " rules held (a rule at any penalty above 0 is not held)";
+        std::cout << "\n  " << goals.sentence() << " (a rule at any penalty above 0 is not held)";
     }
     // Each target the result misses, and whether any layout the search measured met it.
     if (result.feasible)
@@ -279,8 +278,10 @@ int runOptimize(const OptimizeArgs& args) {
             const ReachVerdict verdict =
                 reachVerdict(scene.samplers[k], result.samplerRanges[k], result.bestEvaluation.samplers.samplers[k]);
             if (verdict.reach == Reach::Met) continue;
-            std::cout << "\n  " << scene.samplers[k].name << " misses its target ("
-                      << (verdict.reach == Reach::OutOfReach ? "out of reach"
+            std::cout << "\n  " << scene.samplers[k].name
+                      << (verdict.reach == Reach::WithinNoise ? " is at its target's bound (" : " misses its target (")
+                      << (verdict.reach == Reach::WithinNoise ? "within noise"
+                          : verdict.reach == Reach::OutOfReach ? "out of reach"
                           : verdict.reach == Reach::NeverMet   ? "never met"
                           : verdict.reach == Reach::GoalMissed ? "a goal missed"
                                                                : reachName(verdict.reach)) << "): "
@@ -290,6 +291,7 @@ int runOptimize(const OptimizeArgs& args) {
     if (!args.noPictures) {
         OutputOptions pictures;
         pictures.seed = options.seed;
+        pictures.samplerPaths = scene.optimizer.reportPathsPerPoint;  // the start's too, as the result's
         pictures.tracing.sunPatches = args.sunPatches != "off";
         pictures.tracing.exteriorSun = args.exteriorSun == "on";
         pictures.initialLabel = "start";

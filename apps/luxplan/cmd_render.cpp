@@ -42,7 +42,7 @@ void addPictureOptions(CLI::App* cmd, PictureArgs& args, int& threads) {
     cmd->add_option("--spp", args.spp, "Render samples per pixel (default " + std::to_string(defaults.renderSamplesPerPixel) + ")")
         ->check(wholeNumber(1));
     cmd->add_flag("--raw", args.raw, "render.png without the denoising filter (the path tracer's pixel means)");
-    cmd->add_option("--paths", args.paths, "Paths per sampler point (default " + std::to_string(defaults.samplerPaths) + ")")
+    cmd->add_option("--paths", args.paths, "Paths per sampler point (default: the report's, optimizer.report_paths_per_point)")
         ->check(wholeNumber(1));
     cmd->add_option("--cell", args.cell, "Work-plane grid cell in metres (default 0.25)")->check(positiveNumber());
     cmd->add_option("--cell-paths", args.cellPaths, "Illuminance samples per work-plane cell (default " +
@@ -91,7 +91,7 @@ OutputOptions outputOptions(const PictureArgs& args, const Scene& scene) {
     if (args.height > 0) o.renderHeight = args.height;
     if (args.spp > 0) o.renderSamplesPerPixel = args.spp;
     o.renderDenoise = !args.raw;
-    if (args.paths > 0) o.samplerPaths = args.paths;
+    o.samplerPaths = args.paths > 0 ? args.paths : scene.optimizer.reportPathsPerPoint;  // as the report and measure
     if (args.cell > 0) o.cellSize = args.cell;
     if (args.cellPaths > 0) o.cellPaths = args.cellPaths;
     o.seed = args.seed.value_or(scene.optimizer.seed);

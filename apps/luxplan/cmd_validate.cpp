@@ -94,7 +94,8 @@ void printSummary(const Scene& s, std::ostream& out) {
     out << "  overlap rule: tolerance " << s.overlap.tolerance << " of the smaller volume, weight " << s.overlap.weight
         << "; walls, static geometry and blockers at most " << 1e3 * s.overlap.wallTolerance << " l\n";
     out << "  objective: lighting weight " << s.objective.lightingWeight << "; optimizer: " << s.optimizer.iterations
-        << " iterations, seed " << s.optimizer.seed << ", " << s.optimizer.pathsPerPoint << " paths per point\n";
+        << " iterations, seed " << s.optimizer.seed << "; paths per point: " << s.optimizer.searchPathsPerPoint
+        << " in the search, " << s.optimizer.reportPathsPerPoint << " for the report and measure\n";
 }
 
 }  // namespace

@@ -238,7 +238,9 @@ TEST_F(FlattenTest, TheOptimizerSearchesTheFlatSceneOnOneLevel) {
     ASSERT_GE(r.levels.size(), 1u);
     ASSERT_LE(r.levels.size(), 2u);  // the flat level, and the polish's when it began (or snapped a zero)
     EXPECT_EQ(r.levels[0].name, "flat");
-    if (r.levels.size() == 2) EXPECT_EQ(r.levels[1].name, "polish");
+    if (r.levels.size() == 2) {
+        EXPECT_EQ(r.levels[1].name, "polish");
+    }
     EXPECT_EQ(r.levels[0].entities.size(), 5u);
     EXPECT_TRUE(r.feasible);
     // The best layout keeps the group together (every cohesion rule within its elastic limit).

@@ -444,7 +444,9 @@ TEST_F(OptimizerTest, ThePolishDescendsFromTheBestAndNeverRises) {
     double before = kInf;
     for (const TracePoint& t : r.trace) {
         if (t.iteration <= 1500) {
-            if (t.iteration > 0) EXPECT_GT(t.temperature, 0);
+            if (t.iteration > 0) {
+                EXPECT_GT(t.temperature, 0);
+            }
             continue;
         }
         EXPECT_EQ(t.temperature, 0);
@@ -484,7 +486,9 @@ TEST_F(OptimizerTest, SuggestionsAreDistinctAndTheResultComesFirst) {
     }
     for (size_t i = 0; i < r.suggestions.size(); ++i) {
         ASSERT_TRUE(r.suggestions[i].independent.has_value());
-        if (i >= 2) EXPECT_GE(r.suggestions[i].independent->cost, r.suggestions[i - 1].independent->cost);
+        if (i >= 2) {
+            EXPECT_GE(r.suggestions[i].independent->cost, r.suggestions[i - 1].independent->cost);
+        }
         for (size_t j = i + 1; j < r.suggestions.size(); ++j)
             EXPECT_FALSE(sameCandidate(scene, r.suggestions[i].layout, r.suggestions[j].layout, o.suggestionSeparation));
     }

@@ -55,6 +55,47 @@ TEST(Reach, Verdicts) {
                              "or a longer search");
 }
 
+// 500.4 +- 16.7 lx against a 500 lx maximum is at the bound within noise, not missed;
+// one standard error further out it is.
+TEST(Reach, AValueWithinItsNoiseOfABoundIsNotMissed) {
+    const LightSamplerSpec s = desk();  // [300, 500] lx
+    ReachVerdict at = reachVerdict(s, seen(s, {{480, 15}, {500.4, 16.7}}), 500.4, 16.7);
+    EXPECT_EQ(at.reach, Reach::WithinNoise);
+    EXPECT_STREQ(reachName(at.reach), "within_noise");
+    EXPECT_EQ(at.reason, "at the target's maximum within its noise (500.4 ± 16.7 lx against 500 lx): met or missed by "
+                         "less than one standard error; a measurement with more paths decides");
+    EXPECT_EQ(reachVerdict(s, seen(s, {{290, 15}}), 290, 10).reach, Reach::WithinNoise);
+    EXPECT_EQ(reachVerdict(s, seen(s, {{289, 15}}), 289, 10).reach, Reach::NeverMet);
+    EXPECT_EQ(reachVerdict(s, seen(s, {{517.2, 16.7}}), 517.2, 16.7).reach, Reach::NeverMet);
+}
+
+// Met in every layout the search measured, missed in the result's own measurement: the
+// advice says so, never "a trade-off".
+TEST(Reach, MetEverywhereTheSearchLookedSaysSo) {
+    const LightSamplerSpec s = desk();
+    ReachVerdict v = reachVerdict(s, seen(s, {{400, 5}, {450, 5}, {490, 5}}), 540, 10);
+    EXPECT_EQ(v.reach, Reach::Reached);
+    EXPECT_EQ(v.reason.find("a trade-off"), std::string::npos) << v.reason;
+    EXPECT_EQ(v.reason, "met in all 3 layouts the search measured (it read 400 lx to 490 lx), but not in the result's own "
+                        "measurement (540.0 ± 10.0 lx): the search's estimates read it inside its band; a wider "
+                        "optimizer.margin or more optimizer.paths_per_point keeps it inside");
+}
+
+// A statistics goal past its bound by less than its standard error: within noise.
+TEST(Reach, AStatisticsGoalWithinNoiseIsNotMissed) {
+    LightSamplerSpec s = desk();
+    StatisticGoal u0;
+    u0.statistic = Statistic::U0, u0.targetMin = 0.6, u0.targetMax = 1, u0.tolerance = 0.2;
+    s.statistics = {u0};
+    SamplerResult r;
+    r.points = {236, 400, 500, 464};  // mean 400, min 236: u0 = 0.59
+    r.pointErrors = {20, 20, 20, 20};
+    r.value = 400, r.standardError = 10;
+    ReachVerdict v = reachVerdict(s, seen(s, {{400, 10}}), r);
+    EXPECT_EQ(v.reach, Reach::WithinNoise) << v.reason;
+    EXPECT_NE(v.reason.find("u0 goal is at its bound within noise"), std::string::npos) << v.reason;
+}
+
 // A mean on target with a uniformity goal missed: the verdict says which goal.
 TEST(Reach, AStatisticsGoalMissedIsNamed) {
     LightSamplerSpec s = desk();

@@ -1,5 +1,7 @@
 #include <luxplan/optimizer/reach.h>
 
+#include <cmath>
+#include <optional>
 #include <sstream>
 
 #include <luxplan/constraints/penalty.h>
@@ -19,6 +21,14 @@ std::string amount(double v, const LightSamplerSpec& s) {
     return out.str();
 }
 
+std::string withError(double v, double standardError, const LightSamplerSpec& s) {
+    if (!(standardError > 0)) return amount(v, s);
+    std::ostringstream out;
+    out.precision(std::abs(v) >= 100 ? 1 : 2);
+    out << std::fixed << v << " ± " << standardError << " " << s.type->unit();
+    return out.str();
+}
+
 }  // namespace
 
 void SamplerRange::add(const LightSamplerSpec& sampler, double value, double standardError) {
@@ -31,6 +41,7 @@ void SamplerRange::add(const LightSamplerSpec& sampler, double value, double sta
 const char* reachName(Reach reach) {
     switch (reach) {
         case Reach::Met: return "met";
+        case Reach::WithinNoise: return "within_noise";
         case Reach::GoalMissed: return "goal_missed";
         case Reach::Reached: return "reached";
         case Reach::NeverMet: return "never_met";
@@ -40,8 +51,17 @@ const char* reachName(Reach reach) {
     return "?";
 }
 
-ReachVerdict reachVerdict(const LightSamplerSpec& s, const SamplerRange& range, double value) {
+ReachVerdict reachVerdict(const LightSamplerSpec& s, const SamplerRange& range, double value, double standardError) {
     if (value >= s.targetMin && value <= s.targetMax) return {Reach::Met, ""};
+    if (std::isfinite(value) && standardError > 0) {
+        const bool low = value < s.targetMin;
+        const double bound = low ? s.targetMin : s.targetMax;
+        if (std::abs(value - bound) <= standardError)
+            return {Reach::WithinNoise, "at the target's " + std::string(low ? "minimum" : "maximum") +
+                                            " within its noise (" + withError(value, standardError, s) + " against " +
+                                            amount(bound, s) + "): met or missed by less than one standard error; "
+                                            "a measurement with more paths decides"};
+    }
     const std::string over = range.layouts == 1 ? " in the one layout the search measured"
                                                  : " over the " + std::to_string(range.layouts) + " layouts the search measured";
     // Wider regions help only where there are regions: a scene may move nothing.
@@ -61,6 +81,12 @@ ReachVerdict reachVerdict(const LightSamplerSpec& s, const SamplerRange& range, 
                                        ": everywhere the search tried gets too much light (daylight or luminaires); "
                                        "shade or dim it" + widen};
     const std::string seen = "it read " + amount(range.lowest, s) + " to " + amount(range.highest, s);
+    if (range.met == range.layouts)
+        return {Reach::Reached, "met in all " + std::to_string(range.layouts) +
+                                    " layouts the search measured (" + seen + "), but not in the result's own measurement (" +
+                                    withError(value, standardError, s) +
+                                    "): the search's estimates read it inside its band; a wider optimizer.margin or more "
+                                    "optimizer.paths_per_point keeps it inside"};
     if (range.met > 0)
         return {Reach::Reached, "met in " + std::to_string(range.met) + " of the " + std::to_string(range.layouts) +
                                     " layouts the search measured (" + seen + "): a trade-off, or a longer search"};
@@ -69,17 +95,26 @@ ReachVerdict reachVerdict(const LightSamplerSpec& s, const SamplerRange& range, 
 }
 
 ReachVerdict reachVerdict(const LightSamplerSpec& s, const SamplerRange& range, const SamplerResult& result) {
-    ReachVerdict verdict = reachVerdict(s, range, result.value);
+    ReachVerdict verdict = reachVerdict(s, range, result.value, result.standardError);
     if (verdict.reach != Reach::Met || s.statistics.empty()) return verdict;
+    std::optional<ReachVerdict> withinNoise;
     for (const LightingTerm& t : lightingTerms(s, result)) {
         if (t.statistic == Statistic::Mean || t.penalty == 0) continue;
+        const double past = t.value < t.targetMin ? t.targetMin - t.value : t.value - t.targetMax;
         std::ostringstream out;
         out.precision(3);
+        if (t.standardError > 0 && past <= t.standardError) {
+            out << "its value meets the target, and its " << statisticNames().name(t.statistic)
+                << " goal is at its bound within noise: " << t.value << " ± " << t.standardError << " against ["
+                << t.targetMin << ", " << t.targetMax << "]";
+            if (!withinNoise) withinNoise = ReachVerdict{Reach::WithinNoise, out.str()};
+            continue;
+        }
         out << "its value meets the target, but its " << statisticNames().name(t.statistic) << " goal does not: " << t.value
             << " against [" << t.targetMin << ", " << t.targetMax << "]";
         return {Reach::GoalMissed, out.str()};
     }
-    return verdict;
+    return withinNoise ? *withinNoise : verdict;
 }
 
 }  // namespace luxplan

@@ -23,6 +23,7 @@ struct SamplerRange {
 
 enum class Reach {
     Met,         // the result meets the target and every statistics goal
+    WithinNoise, // the result is outside the band (or a statistics goal's) by less than its standard error
     GoalMissed,  // the result's value meets its target, a statistics goal (u0, min, max) does not
     Reached,     // the result misses it, but some measured layout met it (a trade-off)
     NeverMet,    // no measured layout met it, though some came within two standard errors
@@ -36,9 +37,12 @@ struct ReachVerdict {
     std::string reason;  // empty when met
 };
 
-// `value`: the result's measurement of the sampler. The range and this verdict are
-// about the value (the mean of a planar sampler) against its target.
-ReachVerdict reachVerdict(const LightSamplerSpec& sampler, const SamplerRange& range, double value);
+// `value`: the result's measurement of the sampler, `standardError` its error. The
+// range and this verdict are about the value (the mean of a planar sampler) against
+// its target: a value past a bound by no more than its standard error is at the bound
+// within noise (WithinNoise), not missed.
+ReachVerdict reachVerdict(const LightSamplerSpec& sampler, const SamplerRange& range, double value,
+                          double standardError = 0);
 // The same, then, when the value meets its target, the sampler's statistics goals
 // (lightingTerms, constraints/penalty.h) on the result's points.
 ReachVerdict reachVerdict(const LightSamplerSpec& sampler, const SamplerRange& range, const SamplerResult& result);

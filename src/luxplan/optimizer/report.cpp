@@ -75,7 +75,9 @@ GoalCount countGoals(const Scene& scene, const OptimizerResult& r) {
     g.lighting = int(scene.samplers.size());
     for (size_t k = 0; k < scene.samplers.size() && k < best.samplers.samplers.size(); ++k) {
         const SamplerRange range = k < r.samplerRanges.size() ? r.samplerRanges[k] : SamplerRange{};
-        if (reachVerdict(scene.samplers[k], range, best.samplers.samplers[k]).reach == Reach::Met) ++g.lightingMet;
+        const Reach reach = reachVerdict(scene.samplers[k], range, best.samplers.samplers[k]).reach;
+        g.lightingMet += reach == Reach::Met;
+        g.lightingWithinNoise += reach == Reach::WithinNoise;
     }
     const bool hardLimitPassed = r.bestGeometry.rejected && !r.feasible;
     for (const PenaltyTerm& t : r.bestGeometry.terms)
@@ -86,6 +88,14 @@ GoalCount countGoals(const Scene& scene, const OptimizerResult& r) {
     ++g.rules;  // overlap, one rule
     if (!hardLimitPassed && r.bestGeometry.overlapPenalty == 0) ++g.rulesHeld;
     return g;
+}
+
+std::string GoalCount::sentence() const {
+    std::string s = std::to_string(lightingMet) + " of " + std::to_string(lighting) + " lighting goals met";
+    if (lightingWithinNoise > 0)
+        s += " (" + std::to_string(lightingWithinNoise) + " more at " + (lightingWithinNoise == 1 ? "its" : "their") +
+             " bound within noise)";
+    return s + ", " + std::to_string(rulesHeld) + " of " + std::to_string(rules) + " rules held";
 }
 
 std::string reportJson(const Scene& scene, const OptimizerResult& r) {
@@ -105,6 +115,7 @@ std::string reportJson(const Scene& scene, const OptimizerResult& r) {
     if (best.rejected) j["rejected_by"] = best.rejectedBy;
     const GoalCount goals = countGoals(scene, r);
     j["goals"] = {{"lighting_met", goals.lightingMet}, {"lighting", goals.lighting},
+                  {"lighting_within_noise", goals.lightingWithinNoise},
                   {"rules_held", goals.rulesHeld}, {"rules", goals.rules}};
     j["iterations"] = r.iterations;
     j["best_iteration"] = r.bestIteration;
@@ -135,7 +146,8 @@ std::string reportJson(const Scene& scene, const OptimizerResult& r) {
     j["seconds"] = r.seconds;
     j["stop_reason"] = stopReasonName(r.stop);
     const Evaluation& start = r.startEvaluation;
-    j["start"] = {{"C", start.rejected ? Json(nullptr) : json::numberOrNull(start.cost)},
+    const bool startUnlit = !start.lightingEvaluated && !scene.samplers.empty() && scene.objective.lightingWeight > 0;
+    j["start"] = {{"C", start.rejected || startUnlit ? Json(nullptr) : json::numberOrNull(start.cost)},
                   {"L", start.lightingEvaluated || scene.samplers.empty() ? json::numberOrNull(start.lighting) : Json(nullptr)},
                   {"G", start.rejected ? Json(nullptr) : json::numberOrNull(start.geometry)}, {"feasible", r.startFeasible}};
 
@@ -231,6 +243,8 @@ std::string reportJson(const Scene& scene, const OptimizerResult& r) {
         {"margin", o.marginZ},
         {"adaptive_share", o.adaptiveShare},
         {"polish_from", r.polishFrom},
+        {"restart_after", o.restartAfter},
+        {"restarts", r.restarts},
         {"suggestions", o.suggestions}};
     return j.dump(2) + "\n";
 }

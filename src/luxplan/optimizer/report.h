@@ -18,6 +18,9 @@ std::string reportJson(const Scene& scene, const OptimizerResult& result);
 // when a hard limit is passed). A rule at a penalty above 0 is not held, however small.
 struct GoalCount {
     int lightingMet = 0, lighting = 0, rulesHeld = 0, rules = 0;
+    int lightingWithinNoise = 0;  // not met, but past a bound by less than a standard error (Reach::WithinNoise)
+    // "10 of 12 lighting goals met (1 more at its bound within noise), 21 of 21 rules held"
+    std::string sentence() const;
     bool all() const { return lightingMet == lighting && rulesHeld == rules; }
 };
 GoalCount countGoals(const Scene& scene, const OptimizerResult& result);

@@ -130,7 +130,11 @@ void summary(std::ostringstream& out, const Scene& scene, const ReportData& data
 void optimizerSummary(std::ostringstream& out, const Scene& scene, const OptimizerResult& r) {
     out << "<h2>Optimization</h2>\n<table>\n<tr><th></th><th>C</th><th>L</th><th>G</th><th>feasible</th></tr>\n";
     auto row = [&](const char* name, const Evaluation& e, bool feasible) {
-        out << "<tr><th>" << name << "</th>" << cell(number(e.cost, 4), nullptr) << cell(number(e.lighting, 4))
+        // A layout whose light was never measured has no L, and so no C: never a 0.
+        const bool unlit = !e.lightingEvaluated && !scene.samplers.empty() && scene.objective.lightingWeight > 0;
+        const std::string notMeasured = "<span class=\"muted\">not measured</span>";
+        out << "<tr><th>" << name << "</th>" << cell(unlit ? notMeasured : number(e.cost, 4), nullptr)
+            << cell(unlit ? notMeasured : number(e.lighting, 4))
             << cell(number(e.geometry, 4)) << cell(feasible ? "yes" : "no", feasible ? "met" : "missed") << "</tr>\n";
     };
     row("start", r.startEvaluation, r.startFeasible);
@@ -142,9 +146,8 @@ void optimizerSummary(std::ostringstream& out, const Scene& scene, const Optimiz
     out << "</p>\n";
     if (r.feasible) {
         const GoalCount goals = countGoals(scene, r);
-        out << "<p class=\"" << (goals.all() ? "met" : "missed") << "\">" << goals.lightingMet << " of " << goals.lighting
-            << " lighting goals met, " << goals.rulesHeld << " of " << goals.rules
-            << " rules held (a rule at any penalty above 0 is not held).</p>\n";
+        out << "<p class=\"" << (goals.all() ? "met" : "missed") << "\">" << escapeHtml(goals.sentence())
+            << " (a rule at any penalty above 0 is not held).</p>\n";
     }
 }
 
@@ -171,6 +174,24 @@ std::string percent(double share) {
     char text[16];
     std::snprintf(text, sizeof text, "%.0f%%", 100 * share);
     return text;
+}
+
+// A goal's status in words and its cell's class: met, at its bound within noise (past
+// it by less than a standard error: not called missed), or missed.
+struct GoalStatus {
+    const char* words;
+    const char* cls;
+};
+GoalStatus goalStatus(bool met, double value, double standardError, double lo, double hi) {
+    if (met) return {"met", "met"};
+    const double past = value < lo ? lo - value : value - hi;
+    if (standardError > 0 && past <= standardError) return {"at bound (within noise)", "warn"};
+    return {"missed", "missed"};
+}
+GoalStatus samplerStatus(const LightSamplerSpec& s, const SamplerResult& r, const std::vector<LightingTerm>& terms) {
+    if (allMet(terms)) return {"met", "met"};
+    return reachVerdict(s, SamplerRange(), r).reach == Reach::WithinNoise ? GoalStatus{"at bound (within noise)", "warn"}
+                                                                         : GoalStatus{"missed", "missed"};
 }
 
 void samplerTable(std::ostringstream& out, const Scene& scene, const std::vector<SamplerResult>& measured,
@@ -210,10 +231,10 @@ void samplerTable(std::ostringstream& out, const Scene& scene, const std::vector
             << escapeHtml(s.type->name()) << "</td>"
             << cell(s.entity >= 0 ? escapeHtml(entityName(scene, s.entity)) : "<span class=\"muted\">fixed</span>");
         if (rows[k]) {
-            const bool ok = allMet(terms[k]);
+            const GoalStatus status = samplerStatus(s, *rows[k], terms[k]);
             out << "<td class=\"num\">" << number(rows[k]->value, 1) << "</td>" << cell(escapeHtml(s.type->unit()))
                 << cell(range(s.targetMin, s.targetMax, 0)) << "<td class=\"num\">" << number(s.tolerance, 1) << "</td>"
-                << "<td class=\"num\">" << number(terms[k][0].penalty, 3) << "</td>" << cell(ok ? "met" : "missed", ok ? "met" : "missed");
+                << "<td class=\"num\">" << number(terms[k][0].penalty, 3) << "</td>" << cell(status.words, status.cls);
             if (withBudgets) out << cell(escapeHtml(describeBudget(scene, budgets[k])));
             if (withBudgets || withRanges) {
                 std::string why;
@@ -298,11 +319,11 @@ void samplerTable(std::ostringstream& out, const Scene& scene, const std::vector
             for (size_t i = 1; i < terms[k].size(); ++i) {
                 const LightingTerm& t = terms[k][i];
                 const int digits = t.statistic == Statistic::U0 ? 2 : 1;
-                const bool ok = t.penalty == 0;
+                const GoalStatus status = goalStatus(t.penalty == 0, t.value, t.standardError, t.targetMin, t.targetMax);
                 out << "<tr>" << cell(escapeHtml(scene.samplers[k].name)) << cell(statisticNames().name(t.statistic))
                     << "<td class=\"num\">" << number(t.value, digits) << "</td>" << cell(range(t.targetMin, t.targetMax, digits))
                     << "<td class=\"num\">" << number(t.tolerance, digits) << "</td><td class=\"num\">" << number(t.penalty, 3)
-                    << "</td>" << cell(ok ? "met" : "missed", ok ? "met" : "missed") << "</tr>\n";
+                    << "</td>" << cell(status.words, status.cls) << "</tr>\n";
             }
         out << "</table>\n";
     }
@@ -325,9 +346,10 @@ void hourTable(std::ostringstream& out, const Scene& scene, const std::vector<Re
                 out << cell("&ndash;");
                 continue;
             }
-            const bool ok = allMet(lightingTerms(scene.samplers[k], h.samplers[k]));
-            met += ok;
-            out << "<td class=\"num " << (ok ? "met" : "missed") << "\">" << number(h.samplers[k].value, 1) << "</td>";
+            const std::vector<LightingTerm> terms = lightingTerms(scene.samplers[k], h.samplers[k]);
+            const GoalStatus status = samplerStatus(scene.samplers[k], h.samplers[k], terms);
+            met += allMet(terms);
+            out << "<td class=\"num " << status.cls << "\" title=\"" << status.words << "\">" << number(h.samplers[k].value, 1) << "</td>";
         }
         out << "<td class=\"num\">" << met << " of " << scene.samplers.size() << "</td></tr>\n";
     }
