@@ -167,7 +167,7 @@ TEST(Cli, OnePathPerPointWarnsThatItHasNoErrorAndNoCrossFittedMax) {
     auto planar = dir.write("planar.json", lit + "]}");
     auto both = dir.write("both.json", lit + R"(,
         {"name": "d", "type": "directional", "origin": [0,0,1], "direction": [0,0,1], "strata": 2, "target": [0, null]}]})");
-    auto fromFile = dir.write("file.json", lit + R"(], "optimizer": {"paths_per_point": 1}})");
+    auto fromFile = dir.write("file.json", lit + R"(], "optimizer": {"paths_per_point": 1, "report_paths_per_point": 1}})");
 
     Result r = run("measure " + planar.string() + " --paths 1 --threads 1");
     ASSERT_EQ(r.exitCode, 0) << r.output;
@@ -182,7 +182,7 @@ TEST(Cli, OnePathPerPointWarnsThatItHasNoErrorAndNoCrossFittedMax) {
 
     r = run("measure " + fromFile.string() + " --threads 1");
     ASSERT_EQ(r.exitCode, 0) << r.output;
-    EXPECT_NE(r.output.find(fromFile.string() + ": /optimizer/paths_per_point: 1: one path per point"), std::string::npos)
+    EXPECT_NE(r.output.find(fromFile.string() + ": /optimizer/report_paths_per_point: 1: one path per point"), std::string::npos)
         << r.output;
 
     r = run("optimize " + both.string() + " -o " + (dir.path() / "out").string() + " --paths 1 --iterations 2 -q --no-pictures");
@@ -297,8 +297,10 @@ TEST(Cli, OptimizeFlatRunsTheGrouplessBaselineAndItsLayoutsReadBack) {
     ASSERT_EQ(m.exitCode, 0) << m.output;
     auto measured = nlohmann::json::parse(m.output.substr(m.output.find('{')));
     EXPECT_DOUBLE_EQ(measured["samplers"][0]["value"].get<double>(), report["samplers"][0]["value"].get<double>());
-    // The hierarchical reading of layout.json puts everything in the same place.
-    Result h = run("measure " + scene.string() + " --layout " + (out / "layout.json").string() + repeat);
+    // The hierarchical reading of layout.json puts everything in the same place; without
+    // --paths, measure traces the report's count (one number per quantity).
+    Result h = run("measure " + scene.string() + " --layout " + (out / "layout.json").string() + " --json --seed " +
+                   std::to_string(report["report_measurement"]["seed"].get<uint64_t>()));
     ASSERT_EQ(h.exitCode, 0) << h.output;
     auto hier = nlohmann::json::parse(h.output.substr(h.output.find('{')));
     EXPECT_NEAR(hier["samplers"][0]["value"].get<double>(), report["samplers"][0]["value"].get<double>(),

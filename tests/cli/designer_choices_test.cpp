@@ -63,7 +63,9 @@ TEST(DesignerChoices, SuggestionsAreDistinctLayoutsMeasuredAgainAndReadBack) {
     for (size_t i = 0; i < list.size(); ++i) {
         EXPECT_EQ(list[i]["file"], "suggestions/" + std::to_string(i + 1) + ".json");
         const double c = list[i]["C"].get<double>();
-        if (i > 0) EXPECT_GE(c, previous);  // then the others, best first
+        if (i > 0) {
+            EXPECT_GE(c, previous);  // then the others, best first
+        }
         if (i > 0) previous = c;
         EXPECT_GE(list[i]["C_std_error"].get<double>(), 0);
         ASSERT_TRUE(std::filesystem::exists(out / list[i]["file"].get<std::string>()));

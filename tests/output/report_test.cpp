@@ -84,6 +84,24 @@ TEST(ReportHtml, SamplersConstraintsAndOnlyExistingLinks) {
     EXPECT_EQ(html.find("http"), std::string::npos);  // nothing from the network
 }
 
+// 500.4 +- 16.7 lx against a 500 lx maximum: "at bound (within noise)", never missed.
+TEST(ReportHtml, AValueWithinNoiseOfItsBoundIsNotCalledMissed) {
+    test::TempDir dir;
+    Scene scene = makeScene();  // sampler 0: 300-500 lx
+    ReportData data;
+    data.layoutLabel = "layout.json";
+    data.samplers.resize(2);
+    data.samplers[0].value = 500.4, data.samplers[0].standardError = 16.7;
+    data.samplers[1].value = 150;
+    GeometryEvaluator geometry(scene);
+    data.geometry = geometry.evaluate(worldTransforms(scene, initialLayout(scene)), true);
+    writeReportHtml(dir.path(), scene, nullptr, data);
+    std::ifstream in(dir.path() / "report.html");
+    std::string html((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_NE(html.find("class=\"warn\">at bound (within noise)"), std::string::npos) << html;
+    EXPECT_EQ(html.find("class=\"missed\">missed"), std::string::npos) << html;
+}
+
 TEST(ReportHtml, OptimizerResultSections) {
     test::TempDir dir;
     Scene scene = makeScene();
@@ -99,7 +117,9 @@ TEST(ReportHtml, OptimizerResultSections) {
         for (MoveType t : kMoveTypes) {
             const std::string row = "<td>" + std::string(moveName(t)) + "</td><td class=\"num\">" +
                                     std::to_string(level.moves[int(t)].proposed) + "</td>";
-            if (level.moves[int(t)].proposed > 0) EXPECT_NE(html.find(row), std::string::npos) << row << "\n" << html;
+            if (level.moves[int(t)].proposed > 0) {
+                EXPECT_NE(html.find(row), std::string::npos) << row << "\n" << html;
+            }
         }
     EXPECT_EQ(html.find("<td>guided</td>"), std::string::npos);  // no light, no map
     EXPECT_TRUE(links(html).empty());  // nothing written to the folder yet

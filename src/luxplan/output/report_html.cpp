@@ -349,7 +349,7 @@ void hourTable(std::ostringstream& out, const Scene& scene, const std::vector<Re
             const std::vector<LightingTerm> terms = lightingTerms(scene.samplers[k], h.samplers[k]);
             const GoalStatus status = samplerStatus(scene.samplers[k], h.samplers[k], terms);
             met += allMet(terms);
-            out << "<td class=\"num " << status.cls << "\" title=\"" << status.words << "\">" << number(h.samplers[k].value, 1) << "</td>";
+            out << "<td class=\"num " << status.cls << "\">" << number(h.samplers[k].value, 1) << "</td>";
         }
         out << "<td class=\"num\">" << met << " of " << scene.samplers.size() << "</td></tr>\n";
     }
