@@ -238,6 +238,16 @@ TEST(PhotometryFile, ChosenByExtensionAndRefusedWithItsName) {
     } catch (const IoError& e) {
         EXPECT_EQ(std::string(e.what()), (dir.path() / "none.ies").string() + ": no such file");
     }
+    // A file's own flux divides "flux_lm": a faint one (here 1e-6 cd everywhere) is refused.
+    auto faint = dir.write("faint.ies", "IESNA:LM-63-2002\nTILT=NONE\n1 -1 1 2 1 1 2 0 0 0\n1 1 0\n0 90\n0\n1e-6 1e-6\n");
+    try {
+        io::loadPhotometry(faint);
+        ADD_FAILURE();
+    } catch (const IoError& e) {
+        const std::string m = e.what();
+        EXPECT_EQ(m.rfind(faint.string() + ": the distribution's flux of ", 0), 0u) << m;
+        EXPECT_NE(m.find(" lm is below the limit of 0.001 lm"), std::string::npos) << m;
+    }
     auto dark = dir.write("dark.ies", "IESNA:LM-63-2002\nTILT=NONE\n1 -1 1 2 1 1 2 0 0 0\n1 1 0\n0 90\n0\n0 0\n");
     try {
         io::loadPhotometry(dark);
