@@ -1,10 +1,15 @@
 // `luxplan measure SCENE [--layout L] [--paths N] [--seed S] [--threads T] [--json] [--flat] [--at TIME]`:
 // evaluates every light sampler by path tracing. --flat: in the flattened scene (the
 // layout_flat.json of an `optimize --flat` run).
+#include <atomic>
 #include <chrono>
+#include <condition_variable>
 #include <iomanip>
 #include <iostream>
+#include <mutex>
 #include <sstream>
+#include <thread>
+#include <unistd.h>
 
 #include <nlohmann/json.hpp>
 
@@ -21,6 +26,7 @@
 #include <luxplan/lightsamplers/light_samplers.h>
 #include <luxplan/lightsamplers/sampler_type.h>
 #include <luxplan/optimizer/flatten.h>
+#include <luxplan/optimizer/progress_line.h>
 #include <luxplan/optimizer/sampler_report.h>
 
 namespace luxplan::cli {
@@ -61,12 +67,60 @@ DaylightParams daylightAt(const Scene& scene, const std::string& at) {
     return d;
 }
 
+// The measurement's progress on stderr, a line every 5 s once it has run that long:
+// on a terminal, or for a large measurement (kLargeMeasurementPaths) wherever stderr
+// goes. Elsewhere quiet: a short measurement's --json output is read with its stderr.
+class MeasureProgress {
+public:
+    MeasureProgress(MeasureOptions& options, unsigned long long total)
+        : total_(total), atMost_(options.adaptive), start_(std::chrono::steady_clock::now()) {
+        if (!isatty(STDERR_FILENO) && !(double(total) > kLargeMeasurementPaths)) return;
+        options.pathsDone = &done_;
+        watcher_ = std::thread([this] { watch(); });
+    }
+    ~MeasureProgress() {
+        if (!watcher_.joinable()) return;
+        {
+            std::lock_guard lock(mutex_);
+            finished_ = true;
+        }
+        wake_.notify_all();
+        watcher_.join();
+        if (said_) std::cerr << "  measured in " << durationText(seconds()) << "\n";
+    }
+    MeasureProgress(const MeasureProgress&) = delete;
+    MeasureProgress& operator=(const MeasureProgress&) = delete;
+
+private:
+    double seconds() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count(); }
+    void watch() {
+        std::unique_lock lock(mutex_);
+        while (!wake_.wait_for(lock, std::chrono::seconds(5), [this] { return finished_; })) {
+            said_ = true;
+            std::cerr << "  " << measureProgressLine(done_.load(), total_, seconds(), atMost_) << std::endl;
+        }
+    }
+
+    unsigned long long total_;
+    bool atMost_;
+    std::chrono::steady_clock::time_point start_;
+    std::atomic<uint64_t> done_{0};
+    std::mutex mutex_;
+    std::condition_variable wake_;
+    bool finished_ = false, said_ = false;
+    std::thread watcher_;
+};
+
 void runMeasure(const MeasureArgs& args) {
     auto start = std::chrono::steady_clock::now();
     Scene scene = io::loadScene(args.scene);
     printSceneWarnings(scene);
     if (args.flat) scene = flattenScene(scene).scene;
     Layout layout = args.layout.empty() ? initialLayout(scene) : io::readLayout(args.layout, scene);
+    // The report's count: one number per quantity, whichever command gives it.
+    const int pathsPerPoint = args.paths > 0 ? args.paths : scene.optimizer.reportPathsPerPoint;
+    // Said before the daylight's bake, the first thing that takes time.
+    warnLargeMeasurement(scene, pathsPerPoint, "measuring");
     std::optional<DaylightEnvironment> daylight;
     if (!args.at.empty()) {
         Scene instant = scene;
@@ -84,14 +138,18 @@ void runMeasure(const MeasureArgs& args) {
     tracing.exteriorSun = args.exteriorSun == "on";
     PathTracer tracer(rt, daylight ? &*daylight : nullptr, tracing);
     MeasureOptions options;
-    // The report's count: one number per quantity, whichever command gives it.
-    options.pathsPerPoint = args.paths > 0 ? args.paths : scene.optimizer.reportPathsPerPoint;
+    options.pathsPerPoint = pathsPerPoint;
     warnFewPaths(scene, options.pathsPerPoint, args.paths > 0);
     options.seed = args.seed.value_or(scene.optimizer.seed);
     options.adaptive = args.adaptive;
     if (args.lightRoulette > 0) options.lightFloors = lightSampleFloors(tracer, args.lightRoulette, options.seed);
     options.lowDiscrepancy = args.sampling == "sobol";
-    MeasureResult result = measureSamplers(tracer, options);
+    MeasureResult result;
+    {
+        MeasureProgress progress(options, (unsigned long long)(samplerPoints(scene)) * (unsigned long long)(pathsPerPoint));
+        result = measureSamplers(tracer, options);
+    }
+    options.pathsDone = nullptr;  // the progress's counter is gone
     // The objective of Eq. 1 for this layout, as optimize reports it (report.json's C).
     const double lighting = lightingCostOfResults(scene, result.samplers);
     const double lightingError = lightingCostError(scene, result.samplers);
@@ -200,6 +258,18 @@ void warnFewPaths(const Scene& scene, int paths, bool fromOption) {
             break;
         }
     std::cerr << message << "\n";
+}
+
+long long samplerPoints(const Scene& scene) {
+    long long points = 0;
+    for (const LightSamplerSpec& s : scene.samplers) points += s.type->place(Transform())->items();
+    return points;
+}
+
+void warnLargeMeasurement(const Scene& scene, int pathsPerPoint, const std::string& what) {
+    if (scene.samplers.empty()) return;
+    const std::string warning = largeMeasurementWarning(what, samplerPoints(scene), int(scene.samplers.size()), pathsPerPoint);
+    if (!warning.empty()) std::cerr << scene.file.string() << ": " << warning << "\n";
 }
 
 void registerMeasureCommand(CLI::App& app, int& threads) {

@@ -151,6 +151,13 @@ int runOptimize(const OptimizeArgs& args) {
     const Scene original = io::loadScene(args.scene);
     printSceneWarnings(original);
     checkOutputFolder(args.out);
+    {
+        // Before the daylight's bake: each layout's measurement and the report's.
+        const int searchPaths = args.paths > 0 ? args.paths : original.optimizer.searchPathsPerPoint;
+        warnLargeMeasurement(original, searchPaths, "the search measures each layout at");
+        warnLargeMeasurement(original, std::max(original.optimizer.reportPathsPerPoint, searchPaths),
+                             "the report measures the final layout at");
+    }
     std::optional<DaylightEnvironment> daylight;
     if (original.daylight) daylight = bakeDaylight(*original.daylight, original.site, args.quiet);
 

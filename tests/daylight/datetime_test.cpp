@@ -94,4 +94,35 @@ TEST(DateTime, StrRoundTrips) {
 }
 
 }  // namespace
+
+// Issue 58 reported a daylight time with fractional seconds hanging measure. They are
+// read, rounded once, and the instants from them are as many as the period holds.
+namespace fractional_seconds {
+
+TEST(DateTimeFractions, AreReadAndWrittenBack) {
+    std::string err;
+    auto t = parseIso8601("2026-06-21T09:00:00.5Z", &err);
+    ASSERT_TRUE(t) << err;
+    EXPECT_EQ(t->second, 0.5);
+    EXPECT_EQ(t->str(), "2026-06-21T09:00:00.500Z");
+    EXPECT_NEAR(t->julianDayUT() - parseIso8601("2026-06-21T09:00Z")->julianDayUT(), 0.5 / 86400, 1e-9);  // ~0.1 ms
+    // Rounded once: 0.3 is the double nearest 0.3, not 3 x 0.1.
+    EXPECT_EQ(parseIso8601("2026-06-21T09:00:00.3Z")->second, 0.3);
+    EXPECT_EQ(parseIso8601("2026-06-21T09:00:59.123456789+03:00")->second, 59.123456789);
+    // As many digits as one likes, read in one pass.
+    const std::string many = "2026-06-21T09:00:01." + std::string(100000, '5') + "Z";
+    EXPECT_NEAR(parseIso8601(many)->second, 1.5555555555555556, 1e-15);
+}
+
+TEST(DateTimeFractions, ASecondThatRoundsTo60IsRefusedAsWritten) {
+    std::string err;
+    EXPECT_FALSE(parseIso8601("2026-06-21T09:00:59.99999999999999999Z", &err));
+    EXPECT_EQ(err, "\"2026-06-21T09:00:59.99999999999999999Z\": second 59.99999999999999999 outside [0, 60) (it rounds to 60)");
+    EXPECT_FALSE(parseIso8601("2026-06-21T09:00:60.5Z", &err));
+    EXPECT_EQ(err, "\"2026-06-21T09:00:60.5Z\": second 60.5 outside [0, 60)");
+    EXPECT_FALSE(parseIso8601("2026-06-21T09:00:00.Z", &err));
+    EXPECT_NE(err.find("expected YYYY-MM-DDThh:mm[:ss[.fff]]"), std::string::npos) << err;
+}
+
+}  // namespace fractional_seconds
 }  // namespace luxplan

@@ -229,4 +229,23 @@ TEST(DaylightCieGeneral, SkyGivesItsIlluminanceAndSunComesFromTurbidity) {
 }
 
 }  // namespace
+
+// Issue 58 reported a period starting at a fractional second hanging measure. Its
+// instants are those of the grid from `from`, and the bake ends.
+namespace fractional_period {
+
+TEST(DaylightFractionalSeconds, ThePeriodsInstantsAndItsBake) {
+    auto steps = daylightInstants(preethamDay("2026-06-21T09:00:00.5+03:00", "2026-06-21T12:00+03:00", 15), kAthens);
+    ASSERT_EQ(steps.size(), 12u);  // 12:00:00.5 is after `to`
+    EXPECT_EQ(steps.front().time->str(), "2026-06-21T09:00:00.500+03:00");
+    EXPECT_EQ(steps.back().time->str(), "2026-06-21T11:45:00.500+03:00");
+    EXPECT_EQ(daylightInstants(preethamDay("2026-06-21T09:00:00.5+03:00", "2026-06-21T12:00:00.5+03:00", 15), kAthens).size(),
+              13u);
+    const DaylightEnvironment env =
+        buildDaylight(preethamDay("2026-06-21T09:00:00.5Z", nullptr, 15), kAthens, kSmall);
+    EXPECT_TRUE(env.hasSun());
+    EXPECT_GT(env.sunHorizontalIlluminance(), 0);
+}
+
+}  // namespace fractional_period
 }  // namespace luxplan

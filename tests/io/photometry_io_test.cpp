@@ -3,6 +3,9 @@
 // commas, and each refusal with its exact FILE:LINE message.
 #include <gtest/gtest.h>
 
+#include <fstream>
+#include <iterator>
+
 #include <luxplan/core/error.h>
 #include <luxplan/io/photometry_io.h>
 #include <luxplan/json/fields.h>
@@ -178,7 +181,8 @@ TEST(EulumdatReader, ReportsEachProblemWithItsLine) {
     };
     EXPECT_EQ(ldtError(line(3, "5")), "f.ldt:3: the symmetry indicator Isym must be an integer in [0, 4], got 5");
     EXPECT_EQ(ldtError(line(4, "3")), "f.ldt:4: Isym 2 needs Mc divisible by 2, got 3");
-    EXPECT_EQ(ldtError(line(29, "0")), "f.ldt:29: the lamp set's total flux must be > 0 lm, got 0");
+    EXPECT_EQ(ldtError(line(29, "0")), "f.ldt:29: the first lamp set's total flux must be > 0 lm, got 0");
+    EXPECT_EQ(ldtError(line(27, "one")), "f.ldt:27: expected lamp set 1's number of lamps, got \"one\"");
     EXPECT_EQ(ldtError(line(24, "one")), "f.ldt:24: expected the conversion factor for luminous intensities, got \"one\"");
     EXPECT_EQ(ldtError(line(46, "100")), "f.ldt:46: C angles must increase (100 after 180)");
     EXPECT_EQ(ldtError(line(45, "170")), "f.ldt:45: Isym 2 stores C 180 as plane 3, but the file's C angle there is 170");
@@ -234,6 +238,16 @@ TEST(PhotometryFile, ChosenByExtensionAndRefusedWithItsName) {
     } catch (const IoError& e) {
         EXPECT_EQ(std::string(e.what()), (dir.path() / "none.ies").string() + ": no such file");
     }
+    // A file's own flux divides "flux_lm": a faint one (here 1e-6 cd everywhere) is refused.
+    auto faint = dir.write("faint.ies", "IESNA:LM-63-2002\nTILT=NONE\n1 -1 1 2 1 1 2 0 0 0\n1 1 0\n0 90\n0\n1e-6 1e-6\n");
+    try {
+        io::loadPhotometry(faint);
+        ADD_FAILURE();
+    } catch (const IoError& e) {
+        const std::string m = e.what();
+        EXPECT_EQ(m.rfind(faint.string() + ": the distribution's flux of ", 0), 0u) << m;
+        EXPECT_NE(m.find(" lm is below the limit of 0.001 lm"), std::string::npos) << m;
+    }
     auto dark = dir.write("dark.ies", "IESNA:LM-63-2002\nTILT=NONE\n1 -1 1 2 1 1 2 0 0 0\n1 1 0\n0 90\n0\n0 0\n");
     try {
         io::loadPhotometry(dark);
@@ -244,4 +258,76 @@ TEST(PhotometryFile, ChosenByExtensionAndRefusedWithItsName) {
 }
 
 }  // namespace
+
+// Lamp sets are six lines each, set by set (issue 58: they were read field by field,
+// and a file of several sets took another set's field for the first set's flux).
+namespace eulumdat_lamp_sets {
+
+// The rotationally symmetric test files: gamma 0-90 every 15 deg, 100 cd/klm throughout,
+// conversion factor 1. By hand: I = 100 cd/klm x (first set's flux) / 1000 lm, and,
+// I constant over the lower hemisphere, flux = 2 pi I.
+std::string ldtFileText(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    EXPECT_TRUE(in.good()) << path;
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+struct LdtSetsCase {
+    const char* file;
+    double firstSetLm;
+};
+
+TEST(EulumdatLampSets, TheFirstSetsFluxScalesTheIntensities) {
+    for (const LdtSetsCase& k : {LdtSetsCase{"one_set.ldt", 2000}, LdtSetsCase{"two_sets.ldt", 2000},
+                                 LdtSetsCase{"three_sets.ldt", 1500}}) {
+        const auto d = io::loadPhotometry(kPhotometryFiles + k.file);
+        const double candela = 100 * k.firstSetLm / 1000;
+        for (double gammaDeg : {0.0, 7.5, 45.0, 90.0})
+            for (double cDeg : {0.0, 120.0, 270.0})
+                EXPECT_NEAR(d->intensity(PhotometricAngles{radians(cDeg), radians(gammaDeg)}), candela, 0.01 * candela)
+                    << k.file << " C " << cDeg << " gamma " << gammaDeg;
+        EXPECT_NEAR(d->flux(), 2 * kPi * candela, 0.01 * 2 * kPi * candela) << k.file;
+    }
+}
+
+TEST(EulumdatLampSets, MoreSetsReadAsTheFirstAlone) {
+    // The two-set file is the one-set file with a second set of 5000 lm added.
+    const auto one = io::readEulumdat(ldtFileText(kPhotometryFiles + "one_set.ldt"), "one_set.ldt");
+    const auto two = io::readEulumdat(ldtFileText(kPhotometryFiles + "two_sets.ldt"), "two_sets.ldt");
+    EXPECT_EQ(one.candela, two.candela);
+    EXPECT_EQ(one.cDeg, two.cDeg);
+    EXPECT_EQ(one.gammaDeg, two.gammaDeg);
+    ASSERT_FALSE(one.candela.empty());
+    EXPECT_EQ(one.candela[0], 200.0);  // 100 cd/klm x 2000 lm
+}
+
+// `text` up to and with its line `n` (1-based).
+std::string ldtLinesUpTo(const std::string& text, int n) {
+    size_t at = 0;
+    for (int i = 0; i < n; ++i) at = text.find('\n', at) + 1;
+    return text.substr(0, at);
+}
+
+TEST(EulumdatLampSets, TruncatedSetDataNamesTheLineAndTheField) {
+    const std::string two = ldtFileText(kPhotometryFiles + "two_sets.ldt");
+    // Line 26: two sets; set 1 is lines 27-32, set 2 lines 33-38.
+    EXPECT_EQ(ldtError(ldtLinesUpTo(two, 26)),
+              "f.ldt:26: the file ends at line 26; lamp set 1's number of lamps should be on line 27");
+    EXPECT_EQ(ldtError(ldtLinesUpTo(two, 30)),
+              "f.ldt:30: the file ends at line 30; lamp set 1's colour rendering index should be on line 31");
+    EXPECT_EQ(ldtError(ldtLinesUpTo(two, 34)),
+              "f.ldt:34: the file ends at line 34; lamp set 2's total flux (lm) should be on line 35");
+    EXPECT_EQ(ldtError(ldtLinesUpTo(two, 37)),
+              "f.ldt:37: the file ends at line 37; lamp set 2's wattage should be on line 38");
+    // Set data written field by field (counts, then types, ...) is refused, not misread.
+    std::string fieldMajor = two;
+    const std::string sets = "1\r\nLED 830\r\n2000\r\n3000 K\r\n80\r\n20,5\r\n2\r\nLED 840\r\n5000\r\n4000 K\r\n90\r\n41,0\r\n";
+    const size_t at = fieldMajor.find(sets);
+    ASSERT_NE(at, std::string::npos);
+    fieldMajor.replace(at, sets.size(),
+                       "1\r\n2\r\nLED 830\r\nLED 840\r\n2000\r\n5000\r\n3000 K\r\n4000 K\r\n80\r\n90\r\n20,5\r\n41,0\r\n");
+    EXPECT_EQ(ldtError(fieldMajor), "f.ldt:29: expected lamp set 1's total flux (lm), got \"LED 830\"");
+}
+
+}  // namespace eulumdat_lamp_sets
 }  // namespace luxplan

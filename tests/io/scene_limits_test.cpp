@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cmath>
 #include <set>
 #include <sys/stat.h>
 
@@ -10,9 +11,12 @@
 
 #include <luxplan/core/error.h>
 #include <luxplan/core/limits.h>
+#include <luxplan/constraints/geometry_cost.h>
+#include <luxplan/constraints/penalty.h>
 #include <luxplan/emitters/emitter_shape.h>
 #include <luxplan/io/layout_io.h>
 #include <luxplan/io/scene_loader.h>
+#include <luxplan/scene/layout.h>
 #include "support/small_room.h"
 #include "support/load_problems.h"
 #include "support/temp_files.h"
@@ -87,6 +91,75 @@ TEST(SceneLimits, CoordinatesAndSizesAreBounded) {
     s = smallScene();
     s["samplers"][0]["size"][0] = 1e9;
     EXPECT_EQ(onlyProblem(s), "/samplers/0/size/0: value 1000000000 exceeds the limit of 100000 m");
+}
+
+// Issue 58: a rule weight of 1e308 made the cost C infinite. Every factor that
+// multiplies or divides a penalty is bounded (limits.h), each refused at its key.
+TEST(SceneLimits, CostFactorsAreBounded) {
+    json s = smallScene();
+    s["samplers"][0]["weight"] = 1e308;
+    EXPECT_EQ(onlyProblem(s), "/samplers/0/weight: value 1e+308 exceeds the limit of 1000000");
+    s = smallScene();
+    s["samplers"][0]["target"] = {300, 1e308};
+    EXPECT_EQ(onlyProblem(s), "/samplers/0/target/1: value 1e+308 exceeds the limit of 1e+10 lx");
+    s = smallScene();
+    s["samplers"][0]["tolerance"] = 1e-300;
+    EXPECT_EQ(onlyProblem(s), "/samplers/0/tolerance: value 1e-300 outside >= 1e-06 lx");
+    s["samplers"][0]["tolerance"] = 1e300;
+    EXPECT_EQ(onlyProblem(s), "/samplers/0/tolerance: value 1e+300 exceeds the limit of 1e+10 lx");
+    s = smallScene();
+    s["samplers"][0]["statistics"] = {{"min", {{"target", {1e11, nullptr}}}}};
+    EXPECT_EQ(onlyProblem(s), "/samplers/0/statistics/min/target/0: value 1e+11 exceeds the limit of 1e+10 lx");
+    s["samplers"][0]["statistics"] = {{"u0", {{"target", {0.6, 1}}, {"tolerance", 1e-9}}}};
+    EXPECT_EQ(onlyProblem(s), "/samplers/0/statistics/u0/tolerance: value 1e-09 outside >= 1e-06");
+    s = smallScene();
+    s["constraints"] = {{{"type", "overlap"}, {"weight", 1e308}}};
+    EXPECT_EQ(onlyProblem(s), "/constraints/0/weight: value 1e+308 exceeds the limit of 1000000");
+    s["constraints"] = {{{"type", "overlap"}, {"tolerance", 1e-300}}};
+    EXPECT_EQ(onlyProblem(s), "/constraints/0/tolerance: value 1e-300 outside [1e-06, 1]");
+    s["constraints"] = {{{"type", "alignment"}, {"a", "desk"}, {"b", "room"}, {"weight", 2e6}}};
+    EXPECT_EQ(onlyProblem(s), "/constraints/0/weight: value 2000000 exceeds the limit of 1000000");
+    s["constraints"] = {{{"type", "alignment"}, {"a", "desk"}, {"b", "room"}, {"tolerance_deg", 1e-300}}};
+    EXPECT_EQ(onlyProblem(s), "/constraints/0/tolerance_deg: value 1e-300 outside [0.001, 180] deg");
+    json desk2 = s["entities"][0];
+    desk2["name"] = "desk2";
+    s["entities"].push_back(desk2);
+    s["constraints"] = {{{"type", "distance"}, {"a", "desk"}, {"b", "desk2"}, {"min", 1e308}, {"max", nullptr}}};
+    EXPECT_EQ(onlyProblem(s), "/constraints/0/min: value 1e+308 exceeds the limit of 100000");
+    s["constraints"] = {{{"type", "distance"}, {"a", "desk"}, {"b", "desk2"}, {"min", 1}, {"max", 2}, {"tolerance", 1e-300}}};
+    EXPECT_EQ(onlyProblem(s), "/constraints/0/tolerance: value 1e-300 outside >= 1e-06 m");
+}
+
+// At the bounds, the worst a finite input can do stays far below overflow.
+TEST(SceneLimits, TheCostAtTheBoundsIsFinite) {
+    json s = smallScene();
+    s["samplers"][0]["weight"] = limits::kMaxWeight;
+    s["samplers"][0]["target"] = {limits::kMaxTargetValue, limits::kMaxTargetValue};
+    s["samplers"][0]["tolerance"] = limits::kMinTolerance;
+    json desk2 = s["entities"][0];
+    desk2["name"] = "desk2";
+    desk2["position"] = {4, 2};
+    s["entities"].push_back(desk2);
+    s["constraints"] = {{{"type", "distance"}, {"a", "desk"}, {"b", "desk2"}, {"min", limits::kMaxLength}, {"max", nullptr},
+                         {"tolerance", limits::kMinTolerance}, {"weight", limits::kMaxWeight}},
+                        {{"type", "alignment"}, {"a", "desk"}, {"b", "room"}, {"tolerance_deg", limits::kMinToleranceDeg},
+                         {"weight", limits::kMaxWeight}},
+                        {{"type", "overlap"}, {"tolerance", limits::kMinOverlapTolerance}, {"weight", limits::kMaxWeight}}};
+    test::TempDir dir;
+    const Scene scene = io::loadScene(dir.write("s.json", s.dump()));
+    for (double value : {0.0, 1e17}) {
+        const double lighting = lightingCost(scene, {value});
+        EXPECT_TRUE(std::isfinite(lighting)) << value;
+        EXPECT_GT(lighting, 1e15) << value;
+    }
+    GeometryEvaluator geometry(scene);
+    Layout layout = initialLayout(scene);
+    for (double x : {2.0, 4.0}) {  // apart, then one inside the other
+        layout.placements[1].position.x = x;
+        const GeometryResult g = geometry.evaluate(worldTransforms(scene, layout));
+        EXPECT_TRUE(std::isfinite(g.cost)) << x;
+        EXPECT_TRUE(std::isfinite(scene.objective.cost(lightingCost(scene, {0.0}), g.cost))) << x;
+    }
 }
 
 TEST(SceneLimits, HugeDirectionsStayDirections) {

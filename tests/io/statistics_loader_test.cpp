@@ -85,7 +85,7 @@ TEST(StatisticsLoader, ProblemsNameTheirPath) {
     EXPECT_EQ(only(json::parse(R"({"statistics": {"u0": {"target": [1.2, null]}}})")),
               "/samplers/0/statistics/u0/target: U0 = min / mean is at most 1: a target min of 1.2 cannot be met");
     EXPECT_EQ(only(json::parse(R"({"statistics": {"u0": {"target": [0.6, 1], "tolerance": 0}}})")),
-              "/samplers/0/statistics/u0/tolerance: value 0 outside > 0");
+              "/samplers/0/statistics/u0/tolerance: value 0 outside >= 1e-06");
     EXPECT_EQ(only(json::parse(R"({"statistics": {"u0": {"target": [0.6, 1], "weight": 2}}})")),
               "/samplers/0/statistics/u0/weight: unknown key \"weight\" (known keys: target, tolerance)");
     EXPECT_EQ(only(json::parse(R"({"type": "directional", "center": null, "size": null, "origin": [3, 1, 1.2],

@@ -61,4 +61,25 @@ TEST(ProgressLine, TheLastLineHasNoTimeLeftAndDurationsReadAsTime) {
 }
 
 }  // namespace
+
+// Issue 58: a large measurement says its size before it starts, and its progress.
+namespace measurement_size_lines {
+
+TEST(MeasurementSize, WarnsAboveTheThresholdOnly) {
+    EXPECT_EQ(largeMeasurementWarning("measuring", 1000000, 100, 1000),
+              "warning: measuring 1000000 points (100 samplers) x 1000 paths per point = 1e+09 paths, more than 2e+07: "
+              "it may run for minutes (fewer paths per point or coarser grids take less)");
+    EXPECT_EQ(largeMeasurementWarning("measuring", 20000, 1, 1000), "");  // 2e7: not more
+    EXPECT_EQ(largeMeasurementWarning("measuring", 20001, 1, 1000).rfind(
+                  "warning: measuring 20001 points (1 sampler) x 1000 paths per point = 2e+07 paths, more than 2e+07", 0),
+              0u);
+}
+
+TEST(MeasurementSize, ProgressInSharesAndTimeLeft) {
+    EXPECT_EQ(measureProgressLine(250, 1000, 10), "measuring: 25% of 1e+03 paths (10s, about 30s left)");
+    EXPECT_EQ(measureProgressLine(0, 1000000000ull, 3, true), "measuring: 0% of at most 1e+09 paths (3s)");
+    EXPECT_EQ(measureProgressLine(1000, 1000, 62), "measuring: 100% of 1e+03 paths (1m02s)");
+}
+
+}  // namespace measurement_size_lines
 }  // namespace luxplan

@@ -67,19 +67,19 @@ double distancePenalty(double distance, const DistanceRange& range) {
 }
 
 double readToleranceDeg(const json::Fields& f) {
-    return f.number("tolerance_deg", 10.0, json::Range{0, 180, true, false, "deg"});
+    return f.number("tolerance_deg", 10.0, json::Range::closed(limits::kMinToleranceDeg, 180, "deg"));
 }
 
 DistanceRange readDistanceRange(const json::Fields& f) {
-    auto lo = f.number("min", json::Range::atLeast(0), true);
+    auto lo = f.number("min", json::distanceBoundRange(), true);
     // "max": null leaves the range open above.
     bool open = f.has("max") && f.get("max").is_null();
-    auto hi = open ? std::optional<double>(kInf) : f.number("max", json::Range::atLeast(0), true);
+    auto hi = open ? std::optional<double>(kInf) : f.number("max", json::distanceBoundRange(), true);
     if (lo && hi && *hi < *lo)
         f.error("max", "distance range is reversed: max " + json::formatNumber(*hi) + " < min " + json::formatNumber(*lo) + " m");
     DistanceRange r;
     r.min = lo.value_or(0), r.max = hi.value_or(kInf);
-    r.tolerance = f.number("tolerance", json::Range::positive("m"));
+    r.tolerance = f.number("tolerance", json::distanceToleranceRange());
     return r;
 }
 

@@ -84,6 +84,30 @@ inline constexpr std::int64_t kMaxGlareSources = 1024;
 // allocation). The daylight module's kMaxDaylightSteps is this value.
 inline constexpr std::int64_t kMaxTimeSteps = 10000;
 
+// ---- the cost C (issue 58): every factor that multiplies or divides a penalty ----
+// With these bounds no finite input gives a non-finite cost: a term's penalty is at
+// most (kMaxTargetValue + a measured value) / kMinTolerance (lighting) or
+// (kMaxLength / kMinTolerance)^2 (geometry), times kMaxWeight, far below 1e308 even
+// summed over millions of terms.
+// A weight (a sampler's, a constraint's, the overlap rule's) lies in [0, kMaxWeight];
+// only the ratios of weights matter, and 10^6 leaves room for any emphasis.
+inline constexpr double kMaxWeight = 1e6;
+// A sampler's target and its statistics goals' targets, in the sampler's unit (lx,
+// cd/m2, UGR, DGP, U0): at most 10^10 (the brightest sky luminance allowed,
+// kMaxLuminanceNits; direct sunlight is about 1.3e5 lx).
+inline constexpr double kMaxTargetValue = 1e10;
+// A tolerance (the distance at which a penalty reaches 1): a sampler's or a goal's, in
+// its unit, at least kMinTolerance and at most kMaxTargetValue; a distance
+// constraint's, m, at least kMinTolerance and at most kMaxLength.
+inline constexpr double kMinTolerance = 1e-6;
+// An angle constraint's tolerance_deg: at least a thousandth of a degree.
+inline constexpr double kMinToleranceDeg = 1e-3;
+// The overlap rule's tolerance (a fraction of the smaller volume): at least 10^-6.
+inline constexpr double kMinOverlapTolerance = 1e-6;
+// A photometric file's own flux, lm (what "flux_lm" is divided by to scale it): at
+// least a milli-lumen, so that the scale stays finite.
+inline constexpr double kMinPhotometryFluxLm = 1e-3;
+
 // ---- integers ----
 // Counts read from JSON (iterations, paths) must fit an int; seeds are 64-bit.
 inline constexpr std::int64_t kMaxCount = 2147483647;

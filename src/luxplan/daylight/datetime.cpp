@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
+#include <string>
 
 namespace luxplan {
 namespace {
@@ -137,29 +139,33 @@ std::optional<DateTime> parseIso8601(std::string_view text, std::string* error) 
         !expectChar(text, pos, '-') || !readDigits(text, pos, 2, t.day) || !expectChar(text, pos, 'T') ||
         !readDigits(text, pos, 2, t.hour) || !expectChar(text, pos, ':') || !readDigits(text, pos, 2, t.minute))
         return fail(text, shape, error);
+    std::string_view secondText;  // as written, for a message
     if (pos < text.size() && text[pos] == ':') {
         ++pos;
+        const size_t start = pos;
         int whole = 0;
         if (!readDigits(text, pos, 2, whole)) return fail(text, shape, error);
         t.second = whole;
         if (pos < text.size() && text[pos] == '.') {
             ++pos;
-            double scale = 0.1;
-            size_t start = pos;
-            while (pos < text.size() && text[pos] >= '0' && text[pos] <= '9') {
-                t.second += (text[pos] - '0') * scale;
-                scale *= 0.1;
-                ++pos;
-            }
-            if (pos == start) return fail(text, shape, error);
+            const size_t digits = pos;
+            while (pos < text.size() && text[pos] >= '0' && text[pos] <= '9') ++pos;
+            if (pos == digits) return fail(text, shape, error);
+            // Rounded once, as strtod rounds "ss.fff" (digit by digit, 0.1 steps add up
+            // their own rounding errors).
+            t.second = std::strtod(std::string(text.substr(start, pos - start)).c_str(), nullptr);
         }
+        secondText = text.substr(start, pos - start);
     }
     if (t.month < 1 || t.month > 12) return fail(text, rangeMessage("month", t.month, 1, 12), error);
     int dim = daysInMonth(t.year, t.month);
     if (t.day < 1 || t.day > dim) return fail(text, rangeMessage("day", t.day, 1, dim), error);
     if (t.hour > 23) return fail(text, rangeMessage("hour", t.hour, 0, 23), error);
     if (t.minute > 59) return fail(text, rangeMessage("minute", t.minute, 0, 59), error);
-    if (t.second >= 60) return fail(text, "second " + std::to_string(int(t.second)) + " outside [0, 60)", error);
+    if (t.second >= 60)
+        return fail(text, "second " + std::string(secondText) + " outside [0, 60)" +
+                              (secondText < "60" ? " (it rounds to 60)" : ""),
+                    error);
 
     if (pos == text.size()) return fail(text, "has no UTC offset (append Z or an offset such as +03:00)", error);
     char sign = text[pos];

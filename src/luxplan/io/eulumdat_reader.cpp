@@ -1,7 +1,8 @@
 // EULUMDAT photometric files (.ldt; the format of Stockmar 1990, as DIALux and Relux
 // write it): one field per line in a fixed order, ISO-8859-1, decimal commas common.
-// Lines 1-26 describe the luminaire, the symmetry and the lamp sets; then 6 lines per
-// lamp set, 10 direct ratios, the Mc C angles, the Ng gamma angles and the stored
+// Lines 1-26 describe the luminaire, the symmetry and the number of lamp sets; then 6
+// lines per lamp set, set by set (count, type, flux, colour temperature, CRI,
+// wattage), 10 direct ratios, the Mc C angles, the Ng gamma angles and the stored
 // planes' intensities in cd per 1000 lm of lamp flux, plane by plane.
 #include <luxplan/io/photometry_io.h>
 #include <luxplan/io/photometry_text.h>
@@ -24,12 +25,16 @@ public:
 
     // The number on line `n` (1-based).
     double number(int n, const std::string& what) const {
-        if (n > int(lines_.size()))
-            fail(name_, int(lines_.size()), "the file ends at line " + std::to_string(lines_.size()) + "; " + what +
-                                                " should be on line " + std::to_string(n));
+        present(n, what);
         auto v = photometry::parseNumber(lines_[size_t(n - 1)]);
         if (!v) fail(name_, n, "expected " + what + ", got " + quote(photometry::trim(lines_[size_t(n - 1)])));
         return *v;
+    }
+    // Line `n` must exist; its text (a lamp type, a colour temperature) is not read.
+    void present(int n, const std::string& what) const {
+        if (n > int(lines_.size()))
+            fail(name_, int(lines_.size()), "the file ends at line " + std::to_string(lines_.size()) + "; " + what +
+                                                " should be on line " + std::to_string(n));
     }
     int integer(int n, const std::string& what, int lo, int hi) const {
         double v = number(n, what);
@@ -43,6 +48,10 @@ private:
     std::vector<std::string> lines_;
     const std::string& name_;
 };
+
+// The 1-based line of lamp set `set`'s (0-based) field `field` (0 the number of lamps,
+// 2 the total flux, 5 the wattage): the sets follow line 26 one after the other.
+int eulumdatLampSetLine(int set, int field) { return 27 + 6 * set + field; }
 
 }  // namespace
 
@@ -58,11 +67,26 @@ PhotometricTable readEulumdat(const std::string& text, const std::string& name) 
     const double conversion = in.number(24, "the conversion factor for luminous intensities");
     if (!(conversion > 0)) fail(name, 24, "the conversion factor must be > 0, got " + formatNumber(conversion));
     const int sets = in.integer(26, "the number of lamp sets", 1, 20);
-    // The first set's lamps give the flux the intensities are relative to (a
-    // negative lamp count marks absolute photometry: the flux is then the
-    // luminaire's, and the arithmetic is the same).
-    const double lampFlux = in.number(27 + 2 * sets, "the first lamp set's total flux (lm)");
-    if (!(lampFlux > 0)) fail(name, 27 + 2 * sets, "the lamp set's total flux must be > 0 lm, got " + formatNumber(lampFlux));
+    // Six lines per lamp set, set by set: the number of lamps, their type, their total
+    // flux (lm), colour temperature, colour rendering index and wattage. The first
+    // (standard) set's flux is the one the intensities are relative to, as DIALux
+    // reads them by default; the others are alternatives for the same distribution.
+    // A negative lamp count marks absolute photometry: the flux is then the
+    // luminaire's, and the arithmetic is the same.
+    double lampFlux = 0;
+    for (int set = 0; set < sets; ++set) {
+        const int first = eulumdatLampSetLine(set, 0);
+        const std::string whose = "lamp set " + std::to_string(set + 1) + "'s ";
+        in.number(first, whose + "number of lamps");
+        in.present(first + 1, whose + "lamp type");
+        const double flux = in.number(first + 2, whose + "total flux (lm)");
+        in.present(first + 3, whose + "colour temperature");
+        in.present(first + 4, whose + "colour rendering index");
+        in.present(first + 5, whose + "wattage");
+        if (set == 0) lampFlux = flux;
+    }
+    if (!(lampFlux > 0))
+        fail(name, eulumdatLampSetLine(0, 2), "the first lamp set's total flux must be > 0 lm, got " + formatNumber(lampFlux));
     const int cLine = 27 + 6 * sets + 10, gLine = cLine + mc, iLine = gLine + ng;
 
     // ---- the stored planes (Mc1 to Mc2 of the spec) ----

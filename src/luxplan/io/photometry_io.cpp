@@ -7,6 +7,7 @@
 
 #include <luxplan/core/error.h>
 #include <luxplan/core/limits.h>
+#include <luxplan/json/fields.h>
 
 namespace luxplan::io {
 
@@ -31,6 +32,10 @@ std::shared_ptr<const IntensityDistribution> loadPhotometry(const std::filesyste
     PhotometricTable table = ext == ".ies" ? readIes(buffer.str(), name) : readEulumdat(buffer.str(), name);
     auto d = std::make_shared<const IntensityDistribution>(table);
     if (!(d->flux() > 0)) throw IoError(name + ": the distribution emits no light (every intensity is 0)");
+    // "flux_lm" scales the distribution by flux_lm / its own flux: a bound of the cost C.
+    if (d->flux() < limits::kMinPhotometryFluxLm)
+        throw IoError(name + ": the distribution's flux of " + json::formatNumber(d->flux()) +
+                      " lm is below the limit of " + json::formatNumber(limits::kMinPhotometryFluxLm) + " lm");
     return d;
 }
 

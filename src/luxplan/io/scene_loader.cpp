@@ -43,6 +43,7 @@ const Range kCoordinate = json::coordinateRange();
 const Range kLength = json::lengthRange();
 const Range kOffset = json::offsetRange();
 const Range kScale = Range::positive().limitedTo(limits::kMaxScale);
+const Range kWeight = json::weightRange();
 
 // "a rect emitter", "an alignment constraint".
 std::string article(const std::string& noun) {
@@ -951,7 +952,7 @@ private:
         if (entry && sink_.count() == before)
             if (auto fit = s.type->fitted(samplerSite(entity), f)) s.type = fit;
         readTarget(f, s, entry ? s.type->unit() : "");
-        s.weight = f.number("weight", 1.0, kNonNegative);
+        s.weight = f.number("weight", 1.0, kWeight);
         readStatistics(f, s, entry ? s.type.get() : nullptr, entry ? *type : "");
         f.finish(entry ? article(*type + " sampler") : "", family);
         if (!entry) return;
@@ -991,7 +992,15 @@ private:
                 ok = false;
                 return fallback;
             }
-            return t[i].get<double>();
+            const double v = t[i].get<double>();
+            // A bound of the cost C (limits.h): beyond it a penalty could overflow.
+            const Range limit = Range{-kInf, kInf, false, false, unit}.limitedTo(limits::kMaxTargetValue);
+            if (!limit.withinLimit(v)) {
+                sink_.error(pointer(f.at("target"), i), limit.limitProblem(v));
+                ok = false;
+                return fallback;
+            }
+            return v;
         };
         lo = bound(0, 0.0);
         hi = bound(1, kInf);
@@ -1012,7 +1021,7 @@ private:
         double width = s.targetMax - s.targetMin;
         double fallback = std::isfinite(width) && width > 0 ? width : 0.5 * (std::isfinite(s.targetMax) ? s.targetMax : s.targetMin);
         if (!(fallback > 0)) fallback = 1;
-        s.tolerance = f.number("tolerance", fallback, Range::positive(unit));
+        s.tolerance = f.number("tolerance", fallback, json::toleranceRange(unit));
     }
 
     SamplerSite samplerSite(int entity) const {
@@ -1072,7 +1081,7 @@ private:
             // as [200, 1e9] would make the goal toothless.
             double fallback = 0.5 * (goal.targetMin > 0 ? goal.targetMin : goal.targetMax);
             if (!(fallback > 0) || !std::isfinite(fallback)) fallback = 1;
-            goal.tolerance = g.number("tolerance", fallback, Range::positive(unit));
+            goal.tolerance = g.number("tolerance", fallback, json::toleranceRange(unit));
             g.finish();
             s.statistics.push_back(goal);
         }
@@ -1147,7 +1156,7 @@ private:
 
     // The overlap rule's keys: a rule of the scene, set by a "constraints" entry.
     static void readOverlapRule(const Fields& f, OverlapRule& rule) {
-        rule.tolerance = f.number("tolerance", 0.05, Range{0, 1, true, false});
+        rule.tolerance = f.number("tolerance", 0.05, Range::closed(limits::kMinOverlapTolerance, 1));
         rule.wallTolerance = 1e-3 * f.number("wall_tolerance_l", 1e3 * rule.wallTolerance, Range::atLeast(0, "l"));
     }
 
@@ -1169,7 +1178,7 @@ private:
             return json::unionKeys(lists);
         }();
         auto type = f.string("type", true);
-        double weight = f.number("weight", 1.0, kNonNegative);
+        double weight = f.number("weight", 1.0, kWeight);
         const bool overlap = type && *type == kOverlapRuleName;
         const ConstraintKindEntry* entry = type ? findConstraintKind(*type) : nullptr;
         if (overlap && scope >= 0) {

@@ -74,6 +74,15 @@ inline Range luminaireSizeRange() { return Range::atLeast(limits::kMinLuminaireS
 inline Range rotationRange() { return Range{-kInf, kInf, false, false, "deg"}.limitedTo(limits::kMaxRotationDeg); }
 // A non-negative length (an offset along a wall, a sill).
 inline Range offsetRange() { return Range::atLeast(0).limitedTo(limits::kMaxLength); }
+// The factors of the cost C (limits.h): a weight, [0, kMaxWeight]; a sampler's or a
+// goal's tolerance in its unit, [kMinTolerance, kMaxTargetValue]; a distance
+// constraint's tolerance and its min and max, m.
+inline Range weightRange() { return Range::atLeast(0).limitedTo(limits::kMaxWeight); }
+inline Range toleranceRange(const char* unit = "") {
+    return Range::atLeast(limits::kMinTolerance, unit).limitedTo(limits::kMaxTargetValue);
+}
+inline Range distanceToleranceRange() { return Range::atLeast(limits::kMinTolerance, "m").limitedTo(limits::kMaxLength); }
+inline Range distanceBoundRange() { return Range::atLeast(0).limitedTo(limits::kMaxLength); }
 
 // One JSON object being read. Construction checks it is an object; the accessors
 // report wrong types, missing keys and bad ranges, and mark their key as read.

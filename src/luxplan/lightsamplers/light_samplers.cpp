@@ -441,6 +441,7 @@ MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& op
                        if (!cached) ++r.fresh;
                        add(index, path, cached ? *cached : traced);
                    });
+        if (options.pathsDone) options.pathsDone->fetch_add(uint64_t(to - from), std::memory_order_relaxed);
     };
     // Paths [from, to) of one work item traced by one thread into a buffer, and merged
     // into the work item by another in path order: a look at a few items (a glare
@@ -497,6 +498,7 @@ MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& op
             }
             add(c.index, path, c.traced[fresh++]);
         }
+        if (options.pathsDone) options.pathsDone->fetch_add(uint64_t(c.to - c.from), std::memory_order_relaxed);
     };
 
     // Sampler k's item estimates: the cells of work item `source` (its own item, or every

@@ -4,6 +4,7 @@
 // entities follow the layout.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -68,6 +69,9 @@ struct MeasureOptions {
     // (PathSamples::setLightFloor): sampler k's paths take lightFloors[k] (in the
     // tracer's unit for its paths; lightSampleFloors). Empty: every sample traced.
     std::vector<double> lightFloors;
+    // Where a watcher reads the progress (measure's stderr line): the paths traced or
+    // read back from the cache so far, added up as each point's round ends. Null: none.
+    std::atomic<uint64_t>* pathsDone = nullptr;
 };
 
 // The light samples' roulette floors (MeasureOptions::lightFloors) for the tracer's

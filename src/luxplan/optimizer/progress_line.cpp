@@ -1,5 +1,6 @@
 #include <luxplan/optimizer/progress_line.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -33,6 +34,33 @@ std::string durationText(double seconds) {
     else if (s >= 60) std::snprintf(buf, sizeof buf, "%ldm%02lds", s / 60, s % 60);
     else std::snprintf(buf, sizeof buf, "%lds", s);
     return buf;
+}
+
+namespace {
+
+std::string progressPathCount(double paths) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.3g", paths);
+    return buf;
+}
+
+}  // namespace
+
+std::string largeMeasurementWarning(const std::string& what, long long points, int samplers, long long pathsPerPoint) {
+    const double paths = double(points) * double(pathsPerPoint);
+    if (!(paths > kLargeMeasurementPaths)) return "";
+    return "warning: " + what + " " + std::to_string(points) + " points (" + std::to_string(samplers) +
+           (samplers == 1 ? " sampler" : " samplers") + ") x " + std::to_string(pathsPerPoint) + " paths per point = " +
+           progressPathCount(paths) + " paths, more than " + progressPathCount(kLargeMeasurementPaths) +
+           ": it may run for minutes (fewer paths per point or coarser grids take less)";
+}
+
+std::string measureProgressLine(unsigned long long done, unsigned long long total, double seconds, bool atMost) {
+    const double share = total > 0 ? std::min(1.0, double(done) / double(total)) : 1.0;
+    std::string line = "measuring: " + withDigits(std::floor(100 * share), 0) + "% of " + (atMost ? "at most " : "") +
+                       progressPathCount(double(total)) + " paths (" + durationText(seconds);
+    if (done > 0 && share < 1) line += ", about " + durationText(seconds * (1 - share) / share) + " left";
+    return line + ")";
 }
 
 std::string progressLine(const Progress& p) {

@@ -21,4 +21,18 @@ std::string lightingStartsLine(const Progress& p);
 // 42s, 3m05s, 1h02m.
 std::string durationText(double seconds);
 
+// A measurement of more paths than this (points x paths per point) runs for minutes:
+// measure and optimize warn before it, and measure reports its progress.
+inline constexpr double kLargeMeasurementPaths = 2e7;
+
+// "warning: measuring 1000000 points (100 samplers) x 1000 paths per point = 1e+09
+// paths, more than 2e+07: it may run for minutes (fewer paths or points take less)",
+// `what` ("measuring", "the search measures each layout at") leading; "" when the
+// paths are at most kLargeMeasurementPaths.
+std::string largeMeasurementWarning(const std::string& what, long long points, int samplers, long long pathsPerPoint);
+
+// "measuring: 37% of 1e+09 paths (1m02s, about 1m45s left)"; `atMost`: an adaptive
+// measurement, whose samplers may stop early ("of at most 1e+09 paths").
+std::string measureProgressLine(unsigned long long done, unsigned long long total, double seconds, bool atMost = false);
+
 }  // namespace luxplan
