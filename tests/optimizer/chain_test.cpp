@@ -284,46 +284,6 @@ TEST_F(NoisyChain, TheTemperatureDoesNotFallBelowTheNoise) {
     }
 }
 
-// Restarts from the best: once the schedule has fallen to the noise and the best has
-// not improved for restartAfter iterations, the chain goes back to the best layout and
-// polishes it at zero temperature for restartAfter / 4 proposals (never rising), then
-// goes on at the floor. Off (0), none happens.
-TEST_F(NoisyChain, AStalledChainRestartsFromItsBest) {
-    Scene s = noisyChainScene().entity("e").region({0, 0}, {10, 0}).end().build();
-    for (int after : {100, 0}) {
-        NoisyLighting lighting([](const std::vector<Transform>& w) { return 0.6 + 0.01 * w[0].t.x; }, 0.05, false);
-        OptimizerOptions o;
-        o.iterations = 4000;
-        o.start = StartFrom::Scene;
-        o.stopAtZeroCost = false;
-        o.traceEvery = 1;
-        o.restartAfter = after;
-        OptimizerResult r = Optimizer(s, o, &lighting).run();
-        int bursts = 0, rows = 0;
-        for (size_t i = 1; i < r.trace.size(); ++i) {
-            const TracePoint& t = r.trace[i];
-            if (t.iteration >= r.polishFrom || t.temperature != 0) continue;
-            ++rows;
-            const TracePoint& before = r.trace[i - 1];
-            if (before.temperature != 0) {
-                ++bursts;
-                // It starts at the best (frozen noise: the best's estimate again), or below.
-                EXPECT_LE(t.current, before.best + 1e-12) << "iteration " << t.iteration;
-            } else {
-                EXPECT_LE(t.current, before.current + 1e-12) << "iteration " << t.iteration;
-            }
-        }
-        EXPECT_EQ(bursts, r.restarts);
-        if (after == 0) {
-            EXPECT_EQ(r.restarts, 0);
-            EXPECT_EQ(rows, 0);
-        } else {
-            EXPECT_GT(r.restarts, 0);
-            EXPECT_EQ(rows, 25 * r.restarts);
-        }
-    }
-}
-
 // Continuous target on two rails of lengths 1 and 2 (translate + jump): the density is
 // exp(-x / 2) over the union, so the longer rail holds its share only with the
 // Hastings factor, and the border bins are right only with refused (not redrawn)

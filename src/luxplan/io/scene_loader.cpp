@@ -176,7 +176,6 @@ private:
         s.suggestions = o.integer("suggestions", Range::closed(0, 50)).value_or(s.suggestions);
         s.margin = o.number("margin", s.margin, Range::closed(0, 5));
         s.adaptiveShare = o.boolean("adaptive_share").value_or(s.adaptiveShare);
-        s.restartAfter = o.integer("restart_after", Range::closed(0, 1000000)).value_or(s.restartAfter);
         if (auto h = o.string("hierarchy")) {
             static const EnumNames<bool> hierarchies{{{false, "hierarchical"}, {true, "flat"}}};
             if (auto flat = hierarchies.parse(*h)) s.flat = *flat;

@@ -62,7 +62,6 @@ OptimizerOptions optimizerOptions(const Scene& scene) {
     o.suggestions = s.suggestions;
     o.marginZ = s.margin;
     o.adaptiveShare = s.adaptiveShare;
-    o.restartAfter = s.restartAfter;
     return o;
 }
 
@@ -293,7 +292,6 @@ void Optimizer::initialize(const std::function<void(int drawn, int most)>& drawi
     if (lightMap_) lightMap_->clear();
     polishing_ = false;
     polishFrom_ = options_.iterations;
-    burstLeft_ = lastRestart_ = restarts_ = 0;
     windowProposed_ = windowAccepted_ = progressProposed_ = progressAccepted_ = 0;
     geometry_.revert();
     Rng rng(hashValues({options_.seed, kStreamTag, kStartStream}));
@@ -417,20 +415,11 @@ void Optimizer::record() {
     windowProposed_ = windowAccepted_ = 0;
 }
 
-bool Optimizer::stalled() const {
-    if (options_.restartAfter <= 0 || polishSets_.empty() || !feasible_ || currentEval_.rejected) return false;
-    if (iteration_ - std::max(bestIteration_, lastRestart_) < options_.restartAfter) return false;
-    // At its coldest: the schedule has fallen to the decisions' noise.
-    return options_.noiseAware && options_.schedule.temperature(iteration_, searchIterations()) <= std::sqrt(noiseVariance_);
-}
-
-void Optimizer::startPolish(int burst) {
+void Optimizer::startPolish() {
     // From the best layout, measured again by the search's own estimator (the best's
     // cost may be a confirmation's, from other random numbers).
     polishing_ = true;
-    burstLeft_ = burst;
-    if (burst > 0) ++restarts_;
-    else polishFrom_ = iteration_;
+    polishFrom_ = iteration_;
     polishLevel();
     if (lighting_) lighting_->revert();
     geometry_.revert();
@@ -483,11 +472,6 @@ void Optimizer::polishStep() {
     if (!p.valid) ++s.outside;
     else accept = descends(proposed, s, e);
     settle(p.valid, accept, s, std::move(proposed), std::move(e));
-    if (burstLeft_ > 0 && --burstLeft_ == 0) {
-        // A restart's polish ends: the chain goes on from where it led.
-        polishing_ = false;
-        lastRestart_ = iteration_;
-    }
 }
 
 bool Optimizer::descends(const Layout& proposed, MoveStats& s, Evaluation& e) {
@@ -547,11 +531,7 @@ void Optimizer::step() {
         ++iteration_;
         return;
     }
-    if (burstLeft_ == 0 && feasible_ && !polishSets_.empty() && iteration_ >= searchIterations()) {
-        if (!polishing_) startPolish();
-    } else if (!polishing_ && stalled()) {
-        startPolish(std::max(1, options_.restartAfter / 4));
-    }
+    if (!polishing_ && feasible_ && !polishSets_.empty() && iteration_ >= searchIterations()) startPolish();
     if (polishing_) {
         polishStep();
         return;
@@ -767,7 +747,6 @@ OptimizerResult Optimizer::run(const ProgressCallback& progress, const std::atom
     r.snapshots = std::move(snapshots);
     r.lightingEvaluations = lightingEvaluations_;
     r.polishFrom = polishFrom_;
-    r.restarts = restarts_;
     if (lighting_) r.cacheCheck = lighting_->cacheCheck(), r.lightFloors = lighting_->lightFloors();
     r.options = options_;
     return r;

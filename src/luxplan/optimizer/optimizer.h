@@ -112,11 +112,6 @@ struct OptimizerOptions {
     // quarter turns (MoveOptions::polish). The schedule cools over the iterations before
     // it. 0: no polish; a constant schedule (a plain chain) has none either.
     double polishShare = 0.2;
-    // Restarts from the best: when the chain is as cold as its noise lets it be (the
-    // schedule's temperature at or below the decisions' noise) and its best has not
-    // improved for this many iterations, it goes back to the best layout and polishes it
-    // (as above) for a quarter as many proposals, then goes on from there. 0: never.
-    int restartAfter = 400;
     // Suggestions: how many mutually distinct layouts (optimize --suggestions) to keep
     // beside the result, and what distinct means for them (0: none).
     int suggestions = 0;
@@ -228,7 +223,6 @@ struct OptimizerResult {
     // by their independent measurement (the report's seed), best first.
     std::vector<Candidate> suggestions;
     int polishFrom = 0;  // the iteration the polish began at (iterations: none)
-    int restarts = 0;    // restarts from the best (OptimizerOptions::restartAfter)
     OptimizerOptions options;
 };
 
@@ -283,11 +277,7 @@ private:
     double differenceVariance(const Evaluation& a, const Evaluation& b) const;
     void noteNoise(const Evaluation& proposed);
     // The polish: from the best layout, zero temperature, fine steps (OptimizerOptions::polishShare).
-    // `burst`: a restart's polish of `burst` proposals, after which the chain goes on;
-    // 0: the run's final polish.
-    void startPolish(int burst = 0);
-    // Whether the chain is stalled at its coldest (OptimizerOptions::restartAfter).
-    bool stalled() const;
+    void startPolish();
     // The polish's level of statistics (added on first use).
     LevelStats& polishLevel();
     // Each turning entity of the current layout snapped to the room's quarter turns, one
@@ -352,9 +342,6 @@ private:
     Rng polishRng_{0};
     bool polishing_ = false;
     int polishFrom_ = 0;
-    int burstLeft_ = 0;  // proposals left in a restart's polish (0: none, or the final one)
-    int lastRestart_ = 0;  // the iteration the last restart's polish ended at
-    int restarts_ = 0;
     int64_t windowProposed_ = 0, windowAccepted_ = 0;  // since the last trace row
     int64_t progressProposed_ = 0, progressAccepted_ = 0;  // since the last progress callback
     Candidates suggestions_;

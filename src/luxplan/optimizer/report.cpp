@@ -243,8 +243,6 @@ std::string reportJson(const Scene& scene, const OptimizerResult& r) {
         {"margin", o.marginZ},
         {"adaptive_share", o.adaptiveShare},
         {"polish_from", r.polishFrom},
-        {"restart_after", o.restartAfter},
-        {"restarts", r.restarts},
         {"suggestions", o.suggestions}};
     return j.dump(2) + "\n";
 }

@@ -183,7 +183,6 @@ struct OptimizerSettings {
     int suggestions = 0;             // distinct layouts written beside the result (optimize --suggestions)
     double margin = 2;               // the search's margin inside every lighting band, in standard errors
     bool adaptiveShare = true;       // the object level's share by what the levels' proposals yield
-    int restartAfter = 400;          // iterations without a better best, at the coldest, before a restart from it
 };
 
 // The scene file's names for these enums ("south", "glossy"): one table each
