@@ -242,6 +242,9 @@ TEST(Gltf, LightColoursAreWithinZeroAndOne) {
     const LightColor dim = lightColorAndIntensity(Vec3(0.5, 0.25, 0.1), 100);  // brightened to 1
     EXPECT_NEAR(dim.color.x, 1, 1e-12);
     EXPECT_NEAR(dim.intensity, 50, 1e-9);
+    const LightColor negative = lightColorAndIntensity(Vec3(0.8, -0.01, 0.4), 10);
+    EXPECT_EQ(negative.color.y, 0);
+    EXPECT_NEAR(negative.color.x, 1, 1e-12);
     const LightColor black = lightColorAndIntensity(Vec3(0, 0, 0), 100);
     EXPECT_EQ(black.intensity, 0);
     EXPECT_EQ(black.color, Vec3(1, 1, 1));

@@ -301,9 +301,10 @@ Transform lookingAlong(Vec3 forward, Vec3 up) {
 }  // namespace
 
 LightColor lightColorAndIntensity(const Vec3& rgb, double intensity) {
-    const double peak = std::max({rgb.x, rgb.y, rgb.z});
+    const Vec3 c = max(rgb, Vec3(0, 0, 0));  // a black body's colour has no negative parts; glTF's none either
+    const double peak = std::max({c.x, c.y, c.z});
     if (!(peak > 0) || !std::isfinite(peak)) return {Vec3(1, 1, 1), 0};
-    return {rgb / peak, intensity * peak};
+    return {c / peak, intensity * peak};
 }
 
 double cameraFar(const Bounds3& scene, const Vec3& eye) {

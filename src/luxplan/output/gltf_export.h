@@ -31,9 +31,10 @@ struct SkySummary {
 };
 SkySummary summarizeSky(const DaylightEnvironment& daylight);
 
-// A KHR_lights_punctual light's colour lies within [0, 1]: `rgb` scaled to a largest
-// component of 1, with `intensity` times that largest component, so that colour x
-// intensity stays rgb x intensity. Black (or not finite): white at intensity 0.
+// A KHR_lights_punctual light's colour lies within [0, 1]: `rgb` (negative components
+// taken as 0) scaled to a largest component of 1, with `intensity` times that largest
+// component, so that colour x intensity stays rgb x intensity. Black (or not finite):
+// white at intensity 0.
 struct LightColor {
     Vec3 color{1, 1, 1};
     double intensity = 0;
