@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Installs what luxplan builds and tests with: Debian 12 packages (the C++ libraries,
 # Chromium for the report's browser test, Python for scripts/, Node.js and npm where they
-# are missing), then the report viewer's npm packages (web/package-lock.json) into
-# web/node_modules.
+# are missing), then the report viewer's and the glTF validator's npm packages
+# (web/package-lock.json) into web/node_modules.
 # Idempotent: what is already present is skipped, so a second run does nothing and
 # needs no network.
 set -euo pipefail
@@ -39,10 +39,16 @@ else
   "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
 
-# The report's 3D viewer (three.js), exactly as web/package-lock.json pins it.
-if [ ! -f web/node_modules/three/package.json ] ||
-   ! grep -q "\"version\": \"$(sed -n 's/.*"three": "\(.*\)".*/\1/p' web/package.json)\"" web/node_modules/three/package.json; then
-  echo "install-deps: npm ci (web/: the report viewer)"
+# The report's 3D viewer (three.js) and the glTF validator `make test` runs
+# (gltf-validator, a dev dependency), exactly as web/package-lock.json pins them.
+pinned() {  # whether web/node_modules holds the version of package $1 that web/package.json names
+  local want
+  want=$(sed -n "s/.*\"$1\": \"\(.*\)\".*/\1/p" web/package.json)
+  [ -n "$want" ] && [ -f "web/node_modules/$1/package.json" ] &&
+    grep -q "\"version\": \"$want\"" "web/node_modules/$1/package.json"
+}
+if ! pinned three || ! pinned gltf-validator; then
+  echo "install-deps: npm ci (web/: the report viewer, the glTF validator)"
   npm ci --prefix web --no-audit --no-fund --loglevel=error
 else
   echo "install-deps: web/node_modules up to date"

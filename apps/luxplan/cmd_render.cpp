@@ -1,5 +1,5 @@
 // `luxplan render SCENE [--layout L] -o OUTDIR`: render.png, plan.png and scene.glb
-// for a layout; `luxplan report SCENE [--layout L] -o OUTDIR`: every picture and
+// for a layout (with --glb-only, scene.glb alone, no light transport); `luxplan report SCENE [--layout L] -o OUTDIR`: every picture and
 // report.html for a layout, measured but not optimized.
 #include <cmath>
 #include <iostream>
@@ -29,6 +29,7 @@ struct PictureArgs {
     std::string camera;                // a scene camera's name
     std::vector<double> eye, target;  // or a view from the command line
     double fov = 0;
+    bool glbOnly = false;              // render: scene.glb alone
 };
 
 void addPictureOptions(CLI::App* cmd, PictureArgs& args, int& threads) {
@@ -115,6 +116,7 @@ void runPictures(const PictureArgs& args, bool report) {
     } else {
         options.comparison = options.convergence = options.html = false;
     }
+    if (args.glbOnly) options.plan = options.render = options.luminanceView = false;
     RunOutputs outputs;
     {
         std::cout.flush();
@@ -139,6 +141,7 @@ void registerRenderCommand(CLI::App& app, int& threads) {
     auto* cmd = app.add_subcommand("render", "Render a layout: render.png, plan.png and scene.glb");
     addPictureOptions(cmd, *args, threads);
     cmd->add_option("-o,--out", args->out, "Output folder")->required();
+    cmd->add_flag("--glb-only", args->glbOnly, "Write scene.glb alone: no pictures, no light transport");
     cmd->callback([args] { namingScene(args->scene, [&] { runPictures(*args, false); }); });
 }
 

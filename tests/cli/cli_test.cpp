@@ -419,7 +419,9 @@ TEST(Cli, RenderReportAndOptimizeWriteTheirPictures) {
         tinygltf::Model model;
         std::string err, warn;
         EXPECT_TRUE(loader.LoadBinaryFromFile(&model, &err, &warn, file.string())) << file << ": " << err;
-        EXPECT_EQ(model.nodes.size(), 3u) << file;  // room, table, lamp
+        EXPECT_EQ(model.nodes.size(), 4u) << file;  // room, table, lamp, the default view
+        ASSERT_EQ(model.cameras.size(), 1u) << file;  // the scene has no cameras: render.png's view
+        EXPECT_GT(model.cameras[0].perspective.zfar, model.cameras[0].perspective.znear) << file;
     };
     auto expectReport = [](const std::filesystem::path& folder) {
         std::ifstream in(folder / "report.html");
@@ -443,6 +445,14 @@ TEST(Cli, RenderReportAndOptimizeWriteTheirPictures) {
     expectPng(render / "plan.png");
     expectGlb(render / "scene.glb");
     EXPECT_FALSE(std::filesystem::exists(render / "report.html"));
+
+    // --glb-only: scene.glb alone, no light transport.
+    auto glbOnly = dir.path() / "glb-only";
+    r = run("render " + scene.string() + " --layout " + layout.string() + " -o " + glbOnly.string() + " --glb-only --threads 2");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    expectGlb(glbOnly / "scene.glb");
+    for (const char* png : {"render.png", "render_luminance.png", "plan.png"})
+        EXPECT_FALSE(std::filesystem::exists(glbOnly / png)) << png;
 
     auto report = dir.path() / "report";
     r = run("report " + scene.string() + " --layout " + layout.string() + " -o " + report.string() + tiny);

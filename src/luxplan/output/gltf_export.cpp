@@ -173,16 +173,19 @@ public:
         return int(model_.materials.size()) - 1;
     }
 
-    // A KHR_lights_punctual light of `intensity` (candela; lux for a directional one);
-    // spot lights get the widest cone glTF allows (a hemisphere), the closest it has to
-    // a Lambertian emitter.
+    // A KHR_lights_punctual light of `intensity` (candela; lux for a directional one)
+    // times `rgb`; spot lights get the widest cone glTF allows (a hemisphere), the
+    // closest it has to a Lambertian emitter. glTF's colour is within [0, 1]: it is
+    // written scaled to a largest component of 1, the scale moved into the intensity
+    // (lightColorAndIntensity), so that colour x intensity is unchanged.
     int addLight(const std::string& name, const char* type, double intensity, const Vec3& rgb) {
         tinygltf::Light light;
         light.name = name;
         light.type = type;
         const bool spot = light.type == "spot";
-        light.intensity = intensity;
-        light.color = {rgb.x, rgb.y, rgb.z};
+        const auto [color, scaled] = lightColorAndIntensity(rgb, intensity);
+        light.intensity = scaled;
+        light.color = {color.x, color.y, color.z};
         if (spot) {
             light.spot.innerConeAngle = 0;
             light.spot.outerConeAngle = kPi / 2;
@@ -268,6 +271,22 @@ private:
     tinygltf::Model model_;
 };
 
+// Where each camera's far plane goes: beyond every point of `scene` under the layout
+// (`world`), luxplan's frame; empty for a scene without geometry.
+Bounds3 gltfSceneBounds(const Scene& scene, const std::vector<Transform>& world) {
+    Bounds3 b;
+    for (const StaticItem& item : scene.geometry)
+        if (!item.invisible && !item.mesh.empty()) b.extend(item.mesh.bounds());
+    for (size_t i = 0; i < scene.entities.size(); ++i)
+        if (scene.entities[i].hasGeometry()) b.extend(world[i].apply(scene.entities[i].mesh.bounds()));
+    for (const Emitter& e : scene.emitters) {
+        const Transform owner = e.entity >= 0 ? world[size_t(e.entity)] : Transform();
+        const EmitterMesh shape = e.shape->mesh();
+        if (!shape.mesh.empty()) b.extend((owner * shape.frame).apply(shape.mesh.bounds()));
+    }
+    return b;
+}
+
 // A rotation taking glTF's -z (where cameras look and directional lights shine) to
 // unit `forward`, keeping `up` (not parallel to it) up.
 Transform lookingAlong(Vec3 forward, Vec3 up) {
@@ -280,6 +299,23 @@ Transform lookingAlong(Vec3 forward, Vec3 up) {
 }
 
 }  // namespace
+
+LightColor lightColorAndIntensity(const Vec3& rgb, double intensity) {
+    const Vec3 c = max(rgb, Vec3(0, 0, 0));  // a black body's colour has no negative parts; glTF's none either
+    const double peak = std::max({c.x, c.y, c.z});
+    if (!(peak > 0) || !std::isfinite(peak)) return {Vec3(1, 1, 1), 0};
+    return {c / peak, intensity * peak};
+}
+
+double cameraFar(const Bounds3& scene, const Vec3& eye) {
+    double farthest = 0;
+    if (!scene.empty())
+        for (int k = 0; k < 8; ++k) {
+            const Vec3 corner(k & 1 ? scene.hi.x : scene.lo.x, k & 2 ? scene.hi.y : scene.lo.y, k & 4 ? scene.hi.z : scene.lo.z);
+            farthest = std::max(farthest, length(corner - eye));
+        }
+    return std::max(std::ceil(2 * farthest), 10.0);
+}
 
 SunSummary summarizeSun(const DaylightEnvironment& daylight) {
     SunSummary sun;
@@ -385,32 +421,47 @@ void writeGlb(const std::filesystem::path& file, const Scene& scene, const Layou
             const int node = glb.addNode("sun", -1, orient, "/daylight");
             glb.node(node).extensions[kLights] = tinygltf::Value(tinygltf::Value::Object{{"light", tinygltf::Value(light)}});
         }
-        if (daylight->hasSky()) {
-            const SkySummary sky = summarizeSky(*daylight);
-            tinygltf::Value::Object extras{
-                {"sky", tinygltf::Value(tinygltf::Value::Object{
-                            {"color", tinygltf::Value(tinygltf::Value::Array{tinygltf::Value(sky.color.x), tinygltf::Value(sky.color.y),
-                                                                            tinygltf::Value(sky.color.z)})},
-                            {"luminance_cd_m2", tinygltf::Value(sky.luminance)},
-                            {"horizontal_illuminance_lx", tinygltf::Value(sky.horizontalIlluminanceLx)}})}};
-            glb.model().scenes[0].extras = tinygltf::Value(extras);
-        }
     }
+    auto triple = [](const Vec3& v) {
+        return tinygltf::Value(tinygltf::Value::Array{tinygltf::Value(v.x), tinygltf::Value(v.y), tinygltf::Value(v.z)});
+    };
+    tinygltf::Value::Object extras;
+    if (daylight && daylight->hasSky()) {
+        const SkySummary sky = summarizeSky(*daylight);
+        extras["sky"] = tinygltf::Value(tinygltf::Value::Object{
+            {"color", triple(sky.color)},
+            {"luminance_cd_m2", tinygltf::Value(sky.luminance)},
+            {"horizontal_illuminance_lx", tinygltf::Value(sky.horizontalIlluminanceLx)}});
+    }
+    // The room's inside as an axis-aligned box in glTF's frame, for a viewer to frame
+    // the room rather than everything around it (report.html's 3D view).
+    if (const RoomShell* room = scene.room()) {
+        const Bounds3& b = room->box;
+        extras["room"] = tinygltf::Value(tinygltf::Value::Object{{"min", triple(Vec3(b.lo.x, b.lo.z, -b.hi.y))},
+                                                                 {"max", triple(Vec3(b.hi.x, b.hi.z, -b.lo.y))}});
+    }
+    if (!extras.empty()) glb.model().scenes[0].extras = tinygltf::Value(std::move(extras));
 
-    // The scene's cameras: a glTF camera looks down its -z with +y up.
-    for (const SceneCamera& c : scene.cameras) {
-        const Camera look = lookingAt(c.eye, c.target, c.fovDeg);  // render.png's up, too
+    // The cameras: the scene's, else render.png's default view (defaultCamera: for a
+    // room, from inside it), so that every file opens on the room. A glTF camera looks
+    // down its -z with +y up; its far plane lies beyond the whole scene (cameraFar).
+    const Bounds3 bounds = gltfSceneBounds(scene, world);
+    auto addCamera = [&](const std::string& name, const Camera& look, const std::string& jsonPath) {
         Transform view = lookingAlong(look.lookAt - look.position, look.up);
-        view.t = c.eye;
+        view.t = look.position;
         tinygltf::Camera camera;
-        camera.name = c.name;
+        camera.name = name;
         camera.type = "perspective";
-        camera.perspective.yfov = c.fovDeg * kPi / 180;
-        camera.perspective.znear = 0.05;
+        camera.perspective.yfov = look.fovDeg * kPi / 180;
+        camera.perspective.znear = kGltfCameraNear;
+        camera.perspective.zfar = cameraFar(bounds, look.position);
         glb.model().cameras.push_back(camera);
-        const int node = glb.addNode(c.name, -1, toGltf * view, c.jsonPath);
+        const int node = glb.addNode(name, -1, toGltf * view, jsonPath);
         glb.node(node).camera = int(glb.model().cameras.size()) - 1;
-    }
+    };
+    for (const SceneCamera& c : scene.cameras)
+        addCamera(c.name, lookingAt(c.eye, c.target, c.fovDeg), c.jsonPath);  // render.png's up, too
+    if (scene.cameras.empty()) addCamera(kDefaultViewName, defaultCamera(scene), "");
 
     // WriteGltfSceneToStream(binary) writes what WriteGltfSceneToFile(embedImages,
     // embedBuffers, binary) would; the stream is ours so that a file that cannot be

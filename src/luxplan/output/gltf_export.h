@@ -31,15 +31,40 @@ struct SkySummary {
 };
 SkySummary summarizeSky(const DaylightEnvironment& daylight);
 
+// A KHR_lights_punctual light's colour lies within [0, 1]: `rgb` (negative components
+// taken as 0) scaled to a largest component of 1, with `intensity` times that largest
+// component, so that colour x intensity stays rgb x intensity. Black (or not finite):
+// white at intensity 0.
+struct LightColor {
+    Vec3 color{1, 1, 1};
+    double intensity = 0;
+};
+LightColor lightColorAndIntensity(const Vec3& rgb, double intensity);
+
+// Every glTF camera's near plane (m).
+inline constexpr double kGltfCameraNear = 0.05;
+
+// A glTF camera's far plane (m) at `eye` for a scene within `scene` (luxplan's frame):
+// twice the distance to the bounds' farthest corner, rounded up to a whole metre, at
+// least 10 m; so always beyond znear and beyond everything the file holds.
+double cameraFar(const Bounds3& scene, const Vec3& eye);
+
+// The name of the camera a file gets when its scene has none.
+inline constexpr const char* kDefaultViewName = "default view";
+
 // Writes `file` (glTF is y-up: luxplan's (x, y, z) becomes (x, z, -y)). Nodes, named
 // after what they show: one per visible static item (world frame), one per entity with
 // parts (placed by worldTransforms; a single part its mesh, several parts each a child
 // node "PATH part K: KIND" with its own mesh) and one per emitter (an emissive rect,
 // disk or sphere carrying a point light for a sphere, a spot light along the normal
 // for a rect or disk, intensity in candela). Invisible blockers are left out. Each
-// scene camera is a perspective camera node of its name. With `daylight`: a
-// directional light "sun" (summarizeSun, intensity in lux) and the sky in the scene's
-// extras: {"sky": {"color": [r, g, b], "luminance_cd_m2", "horizontal_illuminance_lx"}}.
+// scene camera is a perspective camera node of its name; a scene without cameras gets
+// one, kDefaultViewName, render.png's default view (defaultCamera: inside the room).
+// Every camera has znear kGltfCameraNear and zfar cameraFar. With a room, the scene's
+// extras give its inside in glTF's frame: {"room": {"min": [x, y, z], "max": [...]}}.
+// With `daylight`: a directional light "sun" (summarizeSun, intensity in lux, colour
+// and intensity by lightColorAndIntensity) and the sky in the scene's extras:
+// {"sky": {"color": [r, g, b], "luminance_cd_m2", "horizontal_illuminance_lx"}}.
 // Throws IoError when the file cannot be written.
 void writeGlb(const std::filesystem::path& file, const Scene& scene, const Layout& layout,
               const DaylightEnvironment* daylight = nullptr);

@@ -34,7 +34,8 @@ std::string readAll(const std::filesystem::path& file) {
     return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
 
-// Frames the model from the first glTF camera or from above a corner of its bounds;
+// Frames the room from the first glTF camera or from above a corner of the room's
+// bounds (the scene's extras.room; without one, of the whole model);
 // the file's lights are photometric (tens of klx of sun, lamps in candela), far beyond
 // a screen's range, so the view lights the room with a hemisphere light and a
 // directional light along the file's sun (if any) instead.
@@ -71,19 +72,35 @@ constexpr const char* kViewerScript = R"js(
         key.position.set(3, 10, 5);
       }
       scene.add(key);
-      const box = new THREE.Box3().setFromObject(gltf.scene);
-      const centre = box.getCenter(new THREE.Vector3()), size = box.getSize(new THREE.Vector3());
+      // Frame the room (the scene's extras.room), not everything around it: from the
+      // file's first camera (writeGlb gives every file one, inside the room) turning
+      // about the point of its view nearest the room's centre; else from above a
+      // corner of the room's bounds (of everything's without a room).
+      gltf.scene.updateMatrixWorld(true);
+      const all = new THREE.Box3().setFromObject(gltf.scene);
+      const json = gltf.parser && gltf.parser.json ? gltf.parser.json : {};
+      const sceneDef = (json.scenes || [])[json.scene || 0] || {};
+      const roomDef = sceneDef.extras && sceneDef.extras.room;
+      const room = roomDef && roomDef.min && roomDef.max
+        ? new THREE.Box3(new THREE.Vector3().fromArray(roomDef.min), new THREE.Vector3().fromArray(roomDef.max))
+        : all;
+      const centre = room.getCenter(new THREE.Vector3()), size = room.getSize(new THREE.Vector3());
+      camera.far = Math.max(500, 4 * all.getSize(new THREE.Vector3()).length());
       const first = gltf.cameras && gltf.cameras[0];
       if (first) {
-        first.updateMatrixWorld();
         camera.position.setFromMatrixPosition(first.matrixWorld);
+        if (first.isPerspectiveCamera && first.fov > 0) camera.fov = first.fov;
         const ahead = new THREE.Vector3(0, 0, -1).transformDirection(first.matrixWorld);
-        controls.target.copy(camera.position).add(ahead.multiplyScalar(Math.max(size.x, size.z) / 2));
+        const along = Math.max(centre.clone().sub(camera.position).dot(ahead), 0.5);
+        controls.target.copy(camera.position).add(ahead.multiplyScalar(along));
       } else {
         const reach = Math.max(size.x, size.y, size.z);
         camera.position.set(centre.x - 0.9 * reach, centre.y + 1.1 * reach, centre.z + 1.1 * reach);
         controls.target.copy(centre);
       }
+      camera.updateProjectionMatrix();
+      // The node's name as the file gives it (three.js sanitizes object names).
+      body.dataset.viewerView = first ? 'camera ' + ((first.userData && first.userData.name) || first.name || '0') : 'room bounds';
       controls.update();
       const draw = () => renderer.render(scene, camera);
       controls.addEventListener('change', draw);

@@ -23,8 +23,10 @@ std::string copyViewerScripts(const std::filesystem::path& folder);
 
 // The page's 3D section for folder/scene.glb: a canvas, the scripts, the glTF as
 // base64 and the code that draws it with orbit controls. When it has drawn, the page's
-// <body> gets data-viewer="drawn" and data-viewer-lit="F" (the share of canvas pixels
-// that are not the background); a script error sets data-viewer-error. "" when
+// <body> gets data-viewer="drawn", data-viewer-lit="F" (the share of canvas pixels
+// that are not the background) and data-viewer-view (where the view starts: "camera
+// NAME", the file's first camera, or "room bounds"); a script error sets
+// data-viewer-error. "" when
 // scene.glb or the scripts are not in the folder.
 std::string viewerSection(const std::filesystem::path& folder);
 
