@@ -61,6 +61,16 @@ DaylightParams daylightAt(const Scene& scene, const std::string& at) {
     return d;
 }
 
+// What the table and JSON say of the luminaires' light: maintained when the scene
+// has a maintenance factor below 1.
+std::string maintainedLine(const Scene& scene) {
+    if (scene.maintenanceFactor == 1) return "";
+    std::ostringstream out;
+    out << "maintained illuminance: the luminaires' light x " << std::defaultfloat << scene.maintenanceFactor
+        << " (maintenance factor)" << (scene.daylight ? ", the daylight as it is" : "") << "\n";
+    return out.str();
+}
+
 void runMeasure(const MeasureArgs& args) {
     auto start = std::chrono::steady_clock::now();
     Scene scene = io::loadScene(args.scene);
@@ -127,6 +137,7 @@ void runMeasure(const MeasureArgs& args) {
                               {"exterior_sun", tracer.samplesExteriorSun()},
                               {"light_roulette", args.lightRoulette},
                               {"seed", options.seed},
+                              {"maintenance_factor", scene.maintenanceFactor},
                               {"L", lighting}, {"L_std_error", lightingError},
                               {"G", geometry.cost}, {"C", cost}, {"C_std_error", w * lightingError},
                               {"geometric_rules_pass", !geometry.rejected},
@@ -136,6 +147,7 @@ void runMeasure(const MeasureArgs& args) {
         return;
     }
     if (!args.at.empty()) std::cout << "daylight at " << args.at << " (one instant, not the scene's period)\n";
+    std::cout << maintainedLine(scene);
     std::cout << std::left << std::setw(24) << "sampler" << std::setw(12) << "type" << std::right << std::setw(12)
               << "value" << std::setw(10) << "+-" << std::setw(8) << "unit" << std::setw(22) << "target" << std::setw(10)
               << "penalty" << "\n";
