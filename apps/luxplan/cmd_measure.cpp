@@ -1,6 +1,7 @@
-// `luxplan measure SCENE [--layout L] [--paths N] [--seed S] [--threads T] [--json] [--flat] [--at TIME]`:
-// evaluates every light sampler by path tracing. --flat: in the flattened scene (the
-// layout_flat.json of an `optimize --flat` run).
+// `luxplan measure SCENE [--layout L] [--paths N] [--seed S] [--threads T] [--json] [--flat] [--at TIME]
+// [--daylight-factor]`: evaluates every light sampler by path tracing. --flat: in the flattened
+// scene (the layout_flat.json of an `optimize --flat` run). --daylight-factor: each planar
+// sampler's daylight factor under the CIE overcast sky instead (lightsamplers/daylight_factor.h).
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
@@ -23,6 +24,7 @@
 #include <luxplan/daylight/daylight.h>
 #include <luxplan/io/layout_io.h>
 #include <luxplan/io/scene_loader.h>
+#include <luxplan/lightsamplers/daylight_factor.h>
 #include <luxplan/lightsamplers/light_samplers.h>
 #include <luxplan/lightsamplers/sampler_type.h>
 #include <luxplan/optimizer/flatten.h>
@@ -46,7 +48,7 @@ struct MeasureArgs {
     std::string scene, layout;
     int paths = 0;
     std::optional<uint64_t> seed;
-    bool json = false, flat = false, adaptive = false;
+    bool json = false, flat = false, adaptive = false, daylightFactor = false;
     double lightRoulette = 0;
     std::string sampling = "sobol";
     std::string sunPatches = "on";
@@ -110,6 +112,81 @@ private:
     bool finished_ = false, said_ = false;
     std::thread watcher_;
 };
+// What the table and JSON say of the luminaires' light: maintained when the scene
+// has a maintenance factor below 1.
+std::string maintainedLine(const Scene& scene) {
+    if (scene.maintenanceFactor == 1) return "";
+    std::ostringstream out;
+    out << "maintained illuminance: the luminaires' light x " << std::defaultfloat << scene.maintenanceFactor
+        << " (maintenance factor)" << (scene.daylight ? ", the daylight as it is" : "") << "\n";
+    return out.str();
+}
+
+// --daylight-factor: every planar sampler's daylight factor under the CIE overcast sky,
+// the luminaires off.
+void runDaylightFactor(const MeasureArgs& args, const Scene& scene, const Layout& layout,
+                       std::chrono::steady_clock::time_point start) {
+    MeasureOptions options;
+    options.pathsPerPoint = args.paths > 0 ? args.paths : scene.optimizer.reportPathsPerPoint;
+    // Of the samplers it measures (no directional one).
+    if (options.pathsPerPoint < 2) warnFewPaths(daylightFactorScene(scene).scene, options.pathsPerPoint, args.paths > 0);
+    options.seed = args.seed.value_or(scene.optimizer.seed);
+    options.lowDiscrepancy = args.sampling == "sobol";
+    PathTracerOptions tracing;
+    tracing.sunPatches = args.sunPatches == "on";
+    tracing.exteriorSun = args.exteriorSun == "on";
+    const DaylightFactorResult df = measureDaylightFactors(scene, layout, options, tracing);
+    const DaylightParams sky = daylightFactorSky(scene);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (args.json) {
+        nlohmann::json samplers = nlohmann::json::array();
+        for (size_t i = 0; i < df.samplers.size(); ++i) {
+            const LightSamplerSpec& s = scene.samplers[df.samplers[i]];
+            const SamplerResult& m = df.measured.samplers[i];
+            const DaylightFactor& f = df.factors[i];
+            nlohmann::json points = nlohmann::json::array();
+            for (double p : f.points) points.push_back(bound(p));
+            nlohmann::json sampler = {{"name", s.name},
+                                      {"type", s.type->name()},
+                                      {"daylight_factor", f.percent},
+                                      {"daylight_factor_std_error", f.stdError},
+                                      {"daylight_factor_min", f.min},
+                                      {"illuminance_lx", m.value},
+                                      {"points", points},
+                                      {"covered", m.covered}};
+            if (auto grid = s.type->pointGrid()) sampler["grid"] = {(*grid)[0], (*grid)[1]};
+            if (m.droppedNonFinite > 0) sampler["dropped_nonfinite"] = m.droppedNonFinite;
+            samplers.push_back(sampler);
+        }
+        nlohmann::json out = {{"daylight_factor", {{"sky", "cie_overcast"},
+                                                   {"horizontal_illuminance_lx", df.outdoorLx},
+                                                   {"ground_reflectance", sky.groundReflectance},
+                                                   {"luminaires", "off"}}},
+                              {"samplers", samplers},
+                              {"paths_per_point", options.pathsPerPoint},
+                              {"sampling", args.sampling},
+                              {"seed", options.seed},
+                              {"seconds", seconds}};
+        std::cout << out.dump(2) << "\n";
+        return;
+    }
+    std::cout << "daylight factor: CIE standard overcast sky, " << std::fixed << std::setprecision(0) << df.outdoorLx
+              << " lx on the open horizontal plane, ground reflectance " << std::setprecision(2) << sky.groundReflectance
+              << ", luminaires off\n";
+    std::cout << std::left << std::setw(24) << "sampler" << std::right << std::setw(10) << "DF %" << std::setw(10) << "+-"
+              << std::setw(10) << "min %" << std::setw(12) << "E lx" << std::setw(10) << "points" << "\n";
+    for (size_t i = 0; i < df.samplers.size(); ++i) {
+        const LightSamplerSpec& s = scene.samplers[df.samplers[i]];
+        const SamplerResult& m = df.measured.samplers[i];
+        const DaylightFactor& f = df.factors[i];
+        std::cout << std::left << std::setw(24) << s.name << std::right << std::fixed << std::setprecision(2) << std::setw(10)
+                  << f.percent << std::setw(10) << errorText(f.stdError, m.pathsPerPoint, 2) << std::setw(10) << f.min
+                  << std::setprecision(1) << std::setw(12) << m.value << std::setw(10) << (f.points.size() - m.covered.size())
+                  << "\n";
+    }
+    std::cout << std::fixed << std::setprecision(2) << df.measured.paths << " paths (" << options.pathsPerPoint
+              << " per point), " << df.measured.rays.closest + df.measured.rays.shadow << " rays in " << seconds << " s\n";
+}
 
 void runMeasure(const MeasureArgs& args) {
     auto start = std::chrono::steady_clock::now();
@@ -117,6 +194,11 @@ void runMeasure(const MeasureArgs& args) {
     printSceneWarnings(scene);
     if (args.flat) scene = flattenScene(scene).scene;
     Layout layout = args.layout.empty() ? initialLayout(scene) : io::readLayout(args.layout, scene);
+    if (args.daylightFactor) {
+        if (std::string why = daylightFactorRefusal(scene); !why.empty()) throw std::runtime_error("--daylight-factor: " + why);
+        runDaylightFactor(args, scene, layout, start);
+        return;
+    }
     // The report's count: one number per quantity, whichever command gives it.
     const int pathsPerPoint = args.paths > 0 ? args.paths : scene.optimizer.reportPathsPerPoint;
     // Said before the daylight's bake, the first thing that takes time.
@@ -186,6 +268,7 @@ void runMeasure(const MeasureArgs& args) {
                               {"exterior_sun", tracer.samplesExteriorSun()},
                               {"light_roulette", args.lightRoulette},
                               {"seed", options.seed},
+                              {"maintenance_factor", scene.maintenanceFactor},
                               {"L", lighting}, {"L_std_error", lightingError},
                               {"G", geometry.cost}, {"C", cost}, {"C_std_error", w * lightingError},
                               {"geometric_rules_pass", !geometry.rejected},
@@ -195,6 +278,7 @@ void runMeasure(const MeasureArgs& args) {
         return;
     }
     if (!args.at.empty()) std::cout << "daylight at " << args.at << " (one instant, not the scene's period)\n";
+    std::cout << maintainedLine(scene);
     std::cout << std::left << std::setw(24) << "sampler" << std::setw(12) << "type" << std::right << std::setw(12)
               << "value" << std::setw(10) << "+-" << std::setw(8) << "unit" << std::setw(22) << "target" << std::setw(10)
               << "penalty" << "\n";
@@ -309,6 +393,10 @@ void registerMeasureCommand(CLI::App& app, int& threads) {
                     "the same values either way")
         ->check(CLI::IsMember({"on", "off"}));
     cmd->add_flag("--flat", args->flat, "Measure in the flattened scene (read the layout_flat.json of optimize --flat)");
+    auto* df = cmd->add_flag("--daylight-factor", args->daylightFactor,
+                             "Each planar sampler's mean daylight factor (%): its illuminance under the CIE standard overcast "
+                             "sky over the open horizontal plane's, the luminaires off (the scene's own daylight not used)");
+    df->excludes(cmd->get_option("--at"))->excludes(cmd->get_option("--adaptive"))->excludes(cmd->get_option("--light-roulette"));
     cmd->callback([args] { namingScene(args->scene, [&] { runMeasure(*args); }); });
 }
 

@@ -278,6 +278,9 @@ int runOptimize(const OptimizeArgs& args) {
     if (result.feasible) {
         const GoalCount goals = countGoals(scene, result);
         std::cout << "\n  " << goals.sentence() << " (a rule at any penalty above 0 is not held)";
+        if (scene.maintenanceFactor != 1 && !scene.samplers.empty())
+            std::cout << "\n  the illuminances are maintained ones: the luminaires' light x " << scene.maintenanceFactor
+                      << " (maintenance factor)" << (scene.daylight ? ", the daylight as it is" : "");
     }
     // Each target the result misses, and whether any layout the search measured met it.
     if (result.feasible)

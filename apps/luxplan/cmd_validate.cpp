@@ -60,6 +60,9 @@ void printSummary(const Scene& s, std::ostream& out) {
     for (const auto& e : s.emitters) fixedLights += e.entity < 0, flux += e.fluxLm;
     out << "  luminaires: " << fixedLights << " fixed, " << s.emitters.size() - fixedLights << " on entities, "
         << std::setprecision(0) << flux << " lm in all\n" << std::setprecision(2);
+    if (s.maintenanceFactor != 1)
+        out << "  maintenance factor: " << std::defaultfloat << std::setprecision(6) << s.maintenanceFactor << std::fixed
+            << std::setprecision(2) << " (the fluxes below are as new; measured, the luminaires give this share of them)\n";
     for (const auto& e : s.emitters)
         out << "    " << e.name << " (" << e.shape->name() << (e.entity >= 0 ? ", on " + s.entities[e.entity].path : "")
             << "): " << e.shape->describe() << ", " << std::setprecision(0) << e.fluxLm << " lm\n" << std::setprecision(2);

@@ -132,11 +132,12 @@ TEST(SceneBuilder, LitRoom) {
 }
 
 // What the shared scenes leave out: presets of another size or off the floor, the
-// objective.
+// objective, the maintenance factor.
 TEST(SceneBuilder, PresetsAndTheObjective) {
     test::expectSameScene(test::SceneBuilder()
                               .material("wood", test::diffuse(0.4))
                               .lightingWeight(1)
+                              .maintenanceFactor(0.67)
                               .entity("table", {1.5, 2, 0}).region({1, 1}, {2.5, 3}, {0, 90}).preset("table", "wood", Vec3(1.0, 0.8, 0.75))
                               .entity("lamp", {0, 0, 0.75}).preset("stand_lamp", "wood", std::nullopt, Vec3(0.2, 0, 0.1)).end()
                               .end()
@@ -144,6 +145,7 @@ TEST(SceneBuilder, PresetsAndTheObjective) {
                           load("scene.json", R"({"luxplan": 1,
       "materials": {"wood": {"type": "diffuse", "reflectance": 0.4}},
       "objective": {"lighting_weight": 1},
+      "maintenance_factor": 0.67,
       "entities": [{"name": "table", "position": [1.5, 2],
                     "placement": {"regions": [{"min": [1, 1], "max": [2.5, 3], "rotations": [0, 90]}]},
                     "parts": [{"preset": "table", "size": [1.0, 0.8, 0.75], "material": "wood"}],

@@ -301,6 +301,11 @@ SceneBuilder& SceneBuilder::lightingWeight(double w) {
     return *this;
 }
 
+SceneBuilder& SceneBuilder::maintenanceFactor(double factor) {
+    maintenanceFactor_ = factor;
+    return *this;
+}
+
 SceneBuilder& SceneBuilder::optimizer(const OptimizerSettings& settings) {
     optimizer_ = settings;
     return *this;
@@ -407,6 +412,7 @@ Scene SceneBuilder::build() const {
     }
     s.overlap = overlap_;
     s.objective = objective_;
+    s.maintenanceFactor = maintenanceFactor_;
     s.optimizer = optimizer_;
     return s;
 }

@@ -85,6 +85,8 @@ public:
 
     // The file's "objective" and "optimizer" objects.
     SceneBuilder& lightingWeight(double w);
+    // The file's "maintenance_factor" (the builder does not check its range).
+    SceneBuilder& maintenanceFactor(double factor);
     SceneBuilder& optimizer(const OptimizerSettings& settings);
 
     // Throws std::invalid_argument for an unknown name or an entity left open.
@@ -127,6 +129,7 @@ private:
     std::vector<ConstraintDef> constraints_;
     OverlapRule overlap_;
     Objective objective_;
+    double maintenanceFactor_ = 1;
     OptimizerSettings optimizer_;
 };
 

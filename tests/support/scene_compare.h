@@ -224,6 +224,7 @@ inline void expectSameScene(const Scene& a, const Scene& b) {
     EXPECT_EQ(a.overlap.jsonPath, b.overlap.jsonPath);
     EXPECT_EQ(a.overlap.exempt, b.overlap.exempt);
     EXPECT_EQ(a.objective.lightingWeight, b.objective.lightingWeight);
+    EXPECT_EQ(a.maintenanceFactor, b.maintenanceFactor);
     const OptimizerSettings &oa = a.optimizer, &ob = b.optimizer;
     EXPECT_EQ(oa.iterations, ob.iterations);
     EXPECT_EQ(oa.seed, ob.seed);

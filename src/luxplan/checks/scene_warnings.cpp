@@ -19,7 +19,7 @@ std::string pointText(const Vec3& p) {
 
 std::vector<Diagnostic> sceneWarnings(const Scene& scene) {
     std::vector<Diagnostic> all;
-    for (auto check : {enclosedEmitters, outsideTheRoom, sealedSamplers, darkDaylight, startPlacement})
+    for (auto check : {lowMaintenanceFactor, enclosedEmitters, outsideTheRoom, sealedSamplers, darkDaylight, startPlacement})
         for (Diagnostic& d : check(scene)) all.push_back(std::move(d));
     return all;
 }

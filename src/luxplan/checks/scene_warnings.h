@@ -49,4 +49,9 @@ std::vector<Diagnostic> darkDaylight(const Scene& scene);
 // from it (optimizer.start "scene") first repairs it.
 std::vector<Diagnostic> startPlacement(const Scene& scene);
 
+// A maintenance factor below kLowestUsualMaintenanceFactor: valid, but darker than any
+// usual maintenance schedule leaves a room (maintenance_factor.cpp).
+std::vector<Diagnostic> lowMaintenanceFactor(const Scene& scene);
+inline constexpr double kLowestUsualMaintenanceFactor = 0.5;
+
 }  // namespace luxplan

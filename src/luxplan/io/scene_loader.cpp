@@ -113,6 +113,7 @@ private:
         if (f.has("site")) readSite(f.get("site"), f.at("site"));
         siteValid_ = sink_.count() == beforeSite;
         if (f.has("daylight")) readDaylight(f.get("daylight"), f.at("daylight"));
+        readMaintenanceFactor(f);
         if (f.has("materials")) readMaterials(f.get("materials"), f.at("materials"));
         if (auto* a = f.array("geometry"))
             for (size_t i = 0; i < a->size(); ++i) readStatic((*a)[i], pointer(f.at("geometry"), i));
@@ -139,6 +140,21 @@ private:
         if (f.has("optimizer")) readOptimizer(f.get("optimizer"), f.at("optimizer"));
         f.finish();
         checkUniqueNames();
+    }
+
+    // "maintenance_factor" (EN 12464-1): the share of the luminaires' new light left when
+    // they are due for maintenance, in (0, 1]; absent, 1 (the light as new).
+    void readMaintenanceFactor(const Fields& f) {
+        auto mf = f.number("maintenance_factor");
+        if (!mf) return;
+        if (*mf > 0 && *mf <= 1) {
+            scene_.maintenanceFactor = *mf;
+            return;
+        }
+        std::string message = "maintenance factor " + formatNumber(*mf) +
+                              " outside (0, 1]: the share of the luminaires' new light left at maintenance, e.g. 0.8";
+        if (*mf > 1 && *mf <= 100) message += " (a fraction, not a percentage: " + formatNumber(*mf) + "% is " + formatNumber(*mf / 100) + ")";
+        f.error("maintenance_factor", message);
     }
 
     void readCamera(const Json& j, const std::string& path) {

@@ -110,6 +110,8 @@ std::string reportJson(const Scene& scene, const OptimizerResult& r) {
     j["L"] = best.lightingEvaluated || scene.samplers.empty() ? json::numberOrNull(best.lighting) : Json(nullptr);
     j["G"] = best.rejected ? Json(nullptr) : json::numberOrNull(best.geometry);
     j["lighting_weight"] = scene.objective.lightingWeight;
+    // The luminaires' share of their light as new in every illuminance (1: as new).
+    j["maintenance_factor"] = scene.maintenanceFactor;
     j["lighting_evaluated"] = best.lightingEvaluated;
     j["feasible"] = r.feasible;
     if (best.rejected) j["rejected_by"] = best.rejectedBy;

@@ -402,9 +402,11 @@ void writeGlb(const std::filesystem::path& file, const Scene& scene, const Layou
         int mesh = glb.addMesh(name, shape.mesh, Transform(), glb.addEmitterMaterial(e, rgb));
         const int node = glb.addNode(name, mesh, toGltf * owner * shape.frame, e.jsonPath);
         // Intensity of a Lambertian emitter: flux / (4 pi) all round for one that emits
-        // all round; peak (along the normal) flux / pi for a one-sided one.
+        // all round; peak (along the normal) flux / pi for a one-sided one. The flux is
+        // the maintained one, as the renders show it.
         bool spot = e.shape->normal().has_value();
-        int light = glb.addLight(name, spot ? "spot" : "point", spot ? e.fluxLm / kPi : e.fluxLm / (4 * kPi), rgb);
+        const double flux = scene.maintenanceFactor * e.fluxLm;
+        int light = glb.addLight(name, spot ? "spot" : "point", spot ? flux / kPi : flux / (4 * kPi), rgb);
         glb.node(node).extensions[kLights] = tinygltf::Value(tinygltf::Value::Object{{"light", tinygltf::Value(light)}});
     }
 

@@ -111,6 +111,9 @@ void summary(std::ostringstream& out, const Scene& scene, const ReportData& data
     for (const Emitter& e : scene.emitters) fixed += e.entity < 0;
     for (const Entity& e : scene.entities) movable += e.movable();
     item("luminaires", std::to_string(fixed) + " fixed, " + std::to_string(scene.emitters.size() - fixed) + " on entities");
+    if (scene.maintenanceFactor != 1)
+        item("maintenance factor", number(scene.maintenanceFactor, 2) +
+                                       " (maintained illuminance: the luminaires' light scaled by it, the daylight not)");
     item("entities", std::to_string(scene.entities.size()) + " (" + std::to_string(movable) + " movable)");
     item("samplers", std::to_string(scene.samplers.size()));
     item("constraints", std::to_string(scene.constraints.size()));
@@ -491,7 +494,8 @@ std::string reportHtml(const std::filesystem::path& folder, const Scene& scene, 
     else if (result) constraintTables(out, scene, result->bestGeometry);
     if (result) moveTable(out, *result);
     timingTable(out, data.timings);
-    out << "<footer>Written by luxplan. Illuminance in lx, luminance in cd/m&sup2;.</footer>\n</body>\n</html>\n";
+    out << "<footer>Written by luxplan. " << (scene.maintenanceFactor != 1 ? "Maintained illuminance" : "Illuminance")
+        << " in lx, luminance in cd/m&sup2;.</footer>\n</body>\n</html>\n";
     return out.str();
 }
 

@@ -36,14 +36,18 @@ EmitterSet::EmitterSet(const Scene& scene, const std::vector<Transform>& world, 
     : selection_(selection) {
     static std::atomic<uint64_t> nextId{1};
     id_ = nextId++;
+    // The maintenance factor scales what every emitter sends, not the choice among them
+    // (`flux`, the importance): the same paths, each carrying that share of the light.
+    const double maintenance = scene.maintenanceFactor;
     for (const Emitter& e : scene.emitters) {
         Transform t = e.entity >= 0 ? world[e.entity] : Transform();
         auto shape = e.shape->transformed(t);
-        emitters_.push_back({shape, emitterLuminance(e), e.fluxLm, shape->center(), shape->reach(), shape->normal()});
+        emitters_.push_back({shape, maintenance * emitterLuminance(e), e.fluxLm, shape->center(), shape->reach(), shape->normal()});
         if (auto* luminaire = dynamic_cast<const PhotometricEmitter*>(shape.get())) {
             double fileFlux = luminaire->distribution().flux();
             emitters_.back().photometric = luminaire;
             emitters_.back().intensityScale = fileFlux > 0 ? e.fluxLm / fileFlux : 0;
+            emitters_.back().maintenance = maintenance;
         }
     }
     for (size_t k = 0; k < emitters_.size(); ++k) {
@@ -112,7 +116,7 @@ double EmitterSet::emitted(size_t i, const Vec3& w) const {
         // The opening seen edge-on shows no area (and sends nothing).
         double area = e.photometric->projectedArea(-w);
         if (!(area > 1e-9 * e.photometric->area())) return 0;
-        return e.intensityScale * e.photometric->intensity(-w) / area;
+        return e.maintenance * e.intensityScale * e.photometric->intensity(-w) / area;
     }
     return !e.normal || dot(w, *e.normal) < 0 ? e.luminance : 0.0;
 }

@@ -16,8 +16,9 @@ namespace luxplan {
 // One emitter placed by the current layout.
 struct WorldEmitter {
     std::shared_ptr<const EmitterShape> shape;  // world frame
-    double luminance = 0;  // cd/m^2 (flux / (pi A)); a photometric luminaire's varies with direction
-    double flux = 0;       // lm
+    // cd/m^2 (maintenance factor x flux / (pi A)); a photometric luminaire's varies with direction
+    double luminance = 0;
+    double flux = 0;       // lm, as rated (the emitter choice's weight; the maintenance factor not applied)
     // What the emitter choice reads for every emitter at every vertex, copied out of
     // the shape once per layout so the hot loop makes no virtual calls.
     Vec3 center;
@@ -27,6 +28,8 @@ struct WorldEmitter {
     // its file's candela to `flux`; null for a Lambertian emitter.
     const PhotometricEmitter* photometric = nullptr;
     double intensityScale = 0;
+    double maintenance = 1;  // Scene::maintenanceFactor: what it emits is this share of intensityScale's
+
 };
 
 // A sampled point on an emitter as seen from a shading point.

@@ -203,6 +203,9 @@ struct Scene {
     std::string name;
     Site site;
     std::optional<DaylightParams> daylight;  // absent: night
+    // "maintenance_factor", in (0, 1]: every luminaire's and carried emitter's light is
+    // scaled by it (EN 12464-1's maintained illuminance); the daylight is not.
+    double maintenanceFactor = 1;
     std::vector<Material> materials;
     std::map<std::string, uint32_t> materialIndex;
     std::vector<StaticItem> geometry;
