@@ -110,6 +110,10 @@ void runPictures(const PictureArgs& args, bool report) {
     options.initialLabel = "scene placement";
     options.finalLabel = args.layout.empty() ? "scene placement" : std::filesystem::path(args.layout).filename().string();
     if (report) {
+        // As layout.json holds it (0.1 mm, 0.01 degree), so that the file measures what
+        // the report says.
+        initial = roundedLayout(scene, initial);
+        layout = roundedLayout(scene, layout);
         std::filesystem::create_directories(args.out);
         io::writeLayout(std::filesystem::path(args.out) / "layout.json", scene, layout);
     } else {
