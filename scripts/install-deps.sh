@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Installs what luxplan builds and tests with: Debian 12 packages (the C++ libraries,
-# Chromium for the report's browser test, Python for scripts/, Node.js and npm where they
-# are missing), then the report viewer's npm packages (web/package-lock.json) into
-# web/node_modules.
+# Chromium for the report's browser test, DejaVu fonts for the plan's labels, Python
+# for scripts/, Node.js and npm where they are missing), then the report viewer's npm
+# packages (web/package-lock.json) into web/node_modules.
 # Idempotent: what is already present is skipped, so a second run does nothing and
 # needs no network.
 set -euo pipefail
@@ -15,6 +15,7 @@ packages=(
   libtinyobjloader-dev libtinygltf-dev libstb-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   chromium
+  fonts-dejavu-core
   python3
 )
 # Node.js may come from elsewhere than Debian (a newer release); only install Debian's
