@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs what luxplan builds and tests with: Debian 12 packages (the C++ libraries,
-# Chromium for the report's browser test, DejaVu fonts for the plan's labels, Python
-# for scripts/, Node.js and npm where they are missing), then the report viewer's npm
+# Chromium for the report's browser test and report.pdf, poppler-utils to read
+# report.pdf back in the tests, DejaVu fonts for the plan's labels, Python for
+# scripts/, Node.js and npm where they are missing), then the report viewer's npm
 # packages (web/package-lock.json) into web/node_modules.
 # Idempotent: what is already present is skipped, so a second run does nothing and
 # needs no network.
@@ -14,7 +15,7 @@ packages=(
   nlohmann-json3-dev libcli11-dev
   libtinyobjloader-dev libtinygltf-dev libstb-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  chromium
+  chromium poppler-utils
   fonts-dejavu-core
   python3
 )

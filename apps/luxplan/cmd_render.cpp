@@ -26,6 +26,7 @@ struct PictureArgs {
     double cell = 0;
     int cellPaths = 0;
     bool raw = false;
+    bool noPdf = false;  // report: no report.pdf
     std::string camera;                // a scene camera's name
     std::vector<double> eye, target;  // or a view from the command line
     double fov = 0;
@@ -96,6 +97,7 @@ OutputOptions outputOptions(const PictureArgs& args, const Scene& scene) {
     if (args.cellPaths > 0) o.cellPaths = args.cellPaths;
     o.seed = args.seed.value_or(scene.optimizer.seed);
     o.camera = chosenCamera(args, scene);
+    o.pdf = !args.noPdf;
     return o;
 }
 
@@ -148,8 +150,9 @@ void registerRenderCommand(CLI::App& app, int& threads) {
 
 void registerReportCommand(CLI::App& app, int& threads) {
     auto args = std::make_shared<PictureArgs>();
-    auto* cmd = app.add_subcommand("report", "Measure a layout and write every picture, scene.glb and report.html");
+    auto* cmd = app.add_subcommand("report", "Measure a layout and write every picture, scene.glb, report.html and report.pdf");
     addPictureOptions(cmd, *args, threads);
+    cmd->add_flag("--no-pdf", args->noPdf, "Skip report.pdf (report.html printed by headless Chromium)");
     cmd->add_option("-o,--out", args->out, "Output folder")->required();
     cmd->callback([args] { namingScene(args->scene, [&] { runPictures(*args, true); }); });
 }

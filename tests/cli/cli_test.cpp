@@ -1,6 +1,7 @@
 // The command line contract: exit codes and FILE: /json/path: message lines.
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -468,6 +469,10 @@ TEST(Cli, RenderReportAndOptimizeWriteTheirPictures) {
         expectPng(optimized / png);
     expectGlb(optimized / "scene.glb");
     EXPECT_GE(expectReport(optimized), 12);  // 4 pictures twice, scene.glb, layout.json, report.json, trace.csv
+    // report.pdf beside report.html where Chromium is installed (tests/cli/report_pdf_test.cpp).
+    if (std::system("command -v chromium > /dev/null") == 0) {
+        EXPECT_TRUE(std::filesystem::is_regular_file(optimized / "report.pdf")) << r.output;
+    }
 
     auto bare = dir.path() / "bare";
     r = run("optimize " + scene.string() + " -o " + bare.string() + " --iterations 5 -q --no-pictures" + small);
