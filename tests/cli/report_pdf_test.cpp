@@ -7,6 +7,9 @@
 #include <filesystem>
 #include <regex>
 
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include "run_cli.h"
 #include "support/temp_files.h"
 
@@ -57,10 +60,19 @@ TEST(ReportPdf, ReportHtmlPrintedOnA4WithTheResultsFirst) {
     if (!installed("pdftotext") || !installed("pdfinfo"))
         GTEST_SKIP() << "pdftotext/pdfinfo are not installed (poppler-utils; scripts/install-deps.sh installs it)";
     test::TempDir dir;
+    // The work folder a run killed with SIGKILL while Chromium printed left behind (a
+    // process that has exited: its id runs nothing now) goes with the next print.
+    const pid_t gone = fork();
+    if (gone == 0) _exit(0);
+    ASSERT_GT(gone, 0);
+    waitpid(gone, nullptr, 0);
+    const fs::path stale = fs::temp_directory_path() / ("luxplan-pdf-" + std::to_string(gone) + "-0");
+    fs::create_directories(stale / "profile");
     const fs::path scene = dir.write("scene.json", kPdfScene), out = dir.path() / "report";
     test::CliResult r = test::runCli("report " + scene.string() + " -o " + out.string() + kTinyPictures);
     ASSERT_EQ(r.exitCode, 0) << r.output;
     ASSERT_TRUE(fs::is_regular_file(out / "report.pdf")) << r.output;
+    EXPECT_FALSE(fs::exists(stale)) << stale;
     EXPECT_NE(r.output.find((out / "report.pdf").string()), std::string::npos) << r.output;  // said as written
     EXPECT_TRUE(fs::is_regular_file(out / "plan.png"));  // the pictures are still files too
     for (const auto& entry : fs::directory_iterator(out))

@@ -80,20 +80,46 @@ std::string lastLines(const std::string& text, size_t lines = 3) {
     return out;
 }
 
+constexpr const char* kWorkPrefix = "luxplan-pdf-";
+
+// Removes the work folders of luxplan processes that no longer run (killed with
+// SIGKILL while Chromium printed: no destructor ran): luxplan-pdf-PID-N with no PID.
+void removeStaleWorkFolders(const std::filesystem::path& temp) {
+    std::error_code ec;
+    for (std::filesystem::directory_iterator it(temp, ec), end; !ec && it != end; it.increment(ec)) {
+        const std::string name = it->path().filename().string();
+        if (name.rfind(kWorkPrefix, 0) != 0) continue;
+        const std::string rest = name.substr(std::strlen(kWorkPrefix));
+        const size_t dash = rest.find('-');
+        if (dash == 0 || dash == std::string::npos || rest.find_first_not_of("0123456789") != dash) continue;
+        const long pid = std::strtol(rest.substr(0, dash).c_str(), nullptr, 10);
+        if (pid <= 0 || ::kill(pid_t(pid), 0) == 0 || errno != ESRCH) continue;
+        std::error_code removed;
+        std::filesystem::remove_all(it->path(), removed);
+    }
+}
+
 // A folder of its own under the system's temporary folder, removed with the object.
 class PdfWorkFolder {
 public:
     PdfWorkFolder() {
         static std::atomic<int> counter{0};
         std::error_code ec;
-        path_ = std::filesystem::temp_directory_path(ec) /
-                ("luxplan-pdf-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
+        const std::filesystem::path temp = std::filesystem::temp_directory_path(ec);
+        removeStaleWorkFolders(temp);
+        path_ = temp / (kWorkPrefix + std::to_string(::getpid()) + "-" + std::to_string(counter++));
         std::filesystem::remove_all(path_, ec);
         ok_ = std::filesystem::create_directories(path_, ec) && !ec;
     }
+    // Removed with everything in it; a helper of the browser that writes its profile as
+    // it goes may leave a file behind the first removal: a few more tries.
     ~PdfWorkFolder() {
-        std::error_code ec;
-        std::filesystem::remove_all(path_, ec);
+        for (int attempt = 0; attempt < 20; ++attempt) {
+            std::error_code ec;
+            std::filesystem::remove_all(path_, ec);
+            if (!std::filesystem::exists(path_, ec)) return;
+            std::this_thread::sleep_for(std::chrono::milliseconds(50));
+        }
     }
     PdfWorkFolder(const PdfWorkFolder&) = delete;
     PdfWorkFolder& operator=(const PdfWorkFolder&) = delete;
@@ -181,6 +207,10 @@ std::string writeReportPdf(const std::filesystem::path& folder, double timeoutSe
         std::this_thread::sleep_for(std::chrono::milliseconds(50));
     }
     if (!stopped.empty()) return browser + ": " + stopped;
+    // Its helpers (the GPU and utility processes) leave with it; a second at most, then
+    // they are ended, so that none still writes into the work folder as it goes.
+    for (int k = 0; k < 20 && ::kill(-pid, 0) == 0; ++k) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    if (::kill(-pid, 0) == 0) ::kill(-pid, SIGKILL);
     const std::string bytes = readWhole(pdf);
     if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || bytes.rfind("%PDF", 0) != 0) {
         const std::string why = WIFEXITED(status) ? "exit status " + std::to_string(WEXITSTATUS(status))
