@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Installs what luxplan builds and tests with: Debian 12 packages (the C++ libraries,
-# Chromium for the report's browser test, Python for scripts/, Node.js and npm where they
-# are missing), then the report viewer's and the glTF validator's npm packages
-# (web/package-lock.json) into web/node_modules.
+# Chromium for the report's browser test and report.pdf, poppler-utils to read
+# report.pdf back in the tests, DejaVu fonts for the plan's labels, Python for
+# scripts/, Node.js and npm where they are missing), then the report viewer's and the
+# glTF validator's npm packages (web/package-lock.json) into web/node_modules.
 # Idempotent: what is already present is skipped, so a second run does nothing and
 # needs no network.
 set -euo pipefail
@@ -14,7 +15,8 @@ packages=(
   nlohmann-json3-dev libcli11-dev
   libtinyobjloader-dev libtinygltf-dev libstb-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  chromium
+  chromium poppler-utils
+  fonts-dejavu-core
   python3
 )
 # Node.js may come from elsewhere than Debian (a newer release); only install Debian's

@@ -1,7 +1,8 @@
 // `luxplan optimize SCENE -o OUTDIR [--iterations N] [--seed S] [--threads T] [--flat]`:
 // the hierarchical Metropolis search with path-traced lighting; writes layout.json,
-// report.json, trace.csv, then the pictures, scene.glb and report.html (unless
-// --no-pictures). Ctrl-C stops the run and still writes the best layout. --flat runs
+// report.json, trace.csv, then the pictures, scene.glb, report.html and report.pdf
+// (unless --no-pictures; --no-pdf: no report.pdf). Ctrl-C stops the run and still
+// writes the best layout. --flat runs
 // the paper's flat baseline on the flattened scene (optimizer/flatten.h).
 #include <atomic>
 #include <chrono>
@@ -68,6 +69,7 @@ struct OptimizeArgs {
     int iterations = -1, paths = 0, spp = 0, inner = -1, snapshots = 0, suggestions = 0;
     std::string start;  // --start LAYOUT.json
     std::optional<uint64_t> seed;
+    bool noPdf = false;
     bool flat = false, quiet = false, noPictures = false, fixedPaths = false, fullEvaluation = false, checkCache = false,
          freshNoise = false, noiseBlind = false, nested = false, cycle = false, singleTest = false;
     std::string sampling = "sobol";
@@ -309,6 +311,7 @@ int runOptimize(const OptimizeArgs& args) {
         interrupted.store(false);
         pictures.cancel = &interrupted;
         if (args.spp > 0) pictures.renderSamplesPerPixel = args.spp;
+        pictures.pdf = !args.noPdf;
         RunOutputs outputs;
         {
             std::cout.flush();  // the summary before the pictures' progress on stderr, also in a log
@@ -406,7 +409,8 @@ void registerOptimizeCommand(CLI::App& app, int& threads) {
                     "Start the search from this layout file (as layout.json; entities it does not name keep the scene's "
                     "placement) instead of a uniform draw");
     cmd->add_flag("-q,--quiet", args->quiet, "No progress line");
-    cmd->add_flag("--no-pictures", args->noPictures, "Skip the pictures, scene.glb and report.html");
+    cmd->add_flag("--no-pictures", args->noPictures, "Skip the pictures, scene.glb, report.html and report.pdf");
+    cmd->add_flag("--no-pdf", args->noPdf, "Skip report.pdf (report.html printed by headless Chromium)");
     cmd->add_option("--spp", args->spp, "Samples per pixel of render.png (default 16)")->check(wholeNumber(1));
     cmd->callback([args] {
         namingScene(args->scene, [&] {

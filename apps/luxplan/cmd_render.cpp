@@ -26,6 +26,7 @@ struct PictureArgs {
     double cell = 0;
     int cellPaths = 0;
     bool raw = false;
+    bool noPdf = false;  // report: no report.pdf
     std::string camera;                // a scene camera's name
     std::vector<double> eye, target;  // or a view from the command line
     double fov = 0;
@@ -97,6 +98,7 @@ OutputOptions outputOptions(const PictureArgs& args, const Scene& scene) {
     if (args.cellPaths > 0) o.cellPaths = args.cellPaths;
     o.seed = args.seed.value_or(scene.optimizer.seed);
     o.camera = chosenCamera(args, scene);
+    o.pdf = !args.noPdf;
     return o;
 }
 
@@ -111,6 +113,10 @@ void runPictures(const PictureArgs& args, bool report) {
     options.initialLabel = "scene placement";
     options.finalLabel = args.layout.empty() ? "scene placement" : std::filesystem::path(args.layout).filename().string();
     if (report) {
+        // As layout.json holds it (0.1 mm, 0.01 degree), so that the file measures what
+        // the report says.
+        initial = roundedLayout(scene, initial);
+        layout = roundedLayout(scene, layout);
         std::filesystem::create_directories(args.out);
         io::writeLayout(std::filesystem::path(args.out) / "layout.json", scene, layout);
     } else {
@@ -147,8 +153,9 @@ void registerRenderCommand(CLI::App& app, int& threads) {
 
 void registerReportCommand(CLI::App& app, int& threads) {
     auto args = std::make_shared<PictureArgs>();
-    auto* cmd = app.add_subcommand("report", "Measure a layout and write every picture, scene.glb and report.html");
+    auto* cmd = app.add_subcommand("report", "Measure a layout and write every picture, scene.glb, report.html and report.pdf");
     addPictureOptions(cmd, *args, threads);
+    cmd->add_flag("--no-pdf", args->noPdf, "Skip report.pdf (report.html printed by headless Chromium)");
     cmd->add_option("-o,--out", args->out, "Output folder")->required();
     cmd->callback([args] { namingScene(args->scene, [&] { runPictures(*args, true); }); });
 }

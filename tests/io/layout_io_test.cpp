@@ -42,6 +42,10 @@ TEST(LayoutIo, RoundTrip) {
     EXPECT_FALSE(json["entities"].contains("set.table"));  // fixed entities are not written
     EXPECT_EQ(json["entities"]["set"]["region"], 1);
 
+    // The rotation is written to 0.01 degree.
+    EXPECT_EQ(json["entities"]["set"]["rotation"].dump(), "123.46");
+    layout.placements[0].rotationDeg = 123.46;
+
     Layout back = io::readLayout(file, s);
     for (size_t i = 0; i < layout.placements.size(); ++i) {
         EXPECT_EQ(back.placements[i].region, layout.placements[i].region);
@@ -49,6 +53,66 @@ TEST(LayoutIo, RoundTrip) {
         EXPECT_DOUBLE_EQ(back.placements[i].position.y, layout.placements[i].position.y);
         EXPECT_DOUBLE_EQ(back.placements[i].rotationDeg, layout.placements[i].rotationDeg);
     }
+}
+
+// layout.json holds x and y to 0.1 mm and rotations to 0.01 degree, inside each
+// entity's region; a rounded layout is written as it is and reads back bit for bit.
+TEST(LayoutIo, PositionsAreWrittenTo01MmAndRotationsTo001Degree) {
+    test::TempDir dir;
+    Scene s = io::loadScene(dir.write("scene.json", kLayoutScene));
+    Layout layout = initialLayout(s);
+    layout.placements[0] = {1, Vec3(5.123456789, 1.98765432, 0), 271.23456};
+    layout.placements[2] = {0, Vec3(0.499996, -0.499996, 0), 0};  // rounds onto the region's edge
+    auto file = dir.path() / "layout.json";
+    io::writeLayout(file, s, layout);
+    auto json = nlohmann::json::parse(std::ifstream(file));
+    EXPECT_EQ(json["entities"]["set"]["position"].dump(), "[5.1235,1.9877,0.0]");
+    EXPECT_EQ(json["entities"]["set"]["rotation"].dump(), "271.23");
+    EXPECT_EQ(json["entities"]["set.lamp"]["position"].dump(), "[0.5,-0.5,0.0]");
+
+    const Layout rounded = roundedLayout(s, layout);
+    const Layout back = io::readLayout(file, s);
+    for (size_t i = 0; i < layout.placements.size(); ++i) {
+        EXPECT_EQ(back.placements[i].position, rounded.placements[i].position) << i;
+        EXPECT_EQ(back.placements[i].rotationDeg, rounded.placements[i].rotationDeg) << i;
+        EXPECT_EQ(back.placements[i].region, rounded.placements[i].region) << i;
+    }
+    // Rounding twice is rounding once.
+    EXPECT_EQ(io::layoutToJson(s, rounded), io::layoutToJson(s, back));
+}
+
+TEST(LayoutIo, RoundingStaysInsideTheRegion) {
+    Entity e;
+    Region r;
+    r.lo = {1, 1};
+    r.hi = {1.23456, 1};  // x up to a value off the grid; y fixed at 1
+    r.continuousRotation = true;
+    r.rotationMinDeg = 0, r.rotationMaxDeg = 90.005;
+    e.regions = {r};
+    Region discrete = r;
+    discrete.continuousRotation = false;
+    discrete.rotationsDeg = {33.333333};
+    e.regions.push_back(discrete);
+
+    // The nearest step (1.2346) is past the region's edge: the step below.
+    Placement p{0, Vec3(1.23455, 1, 0.7), 90.004};
+    Placement q = roundedPlacement(e, p);
+    EXPECT_EQ(q.position.x, 1.2345);
+    EXPECT_EQ(q.position.y, 1.0);
+    EXPECT_EQ(q.position.z, 0.7);  // the plane it moves on, as it is
+    EXPECT_EQ(q.rotationDeg, 90.0);
+    // Asked to go up, it still stays inside; a value on the grid stays, whichever way.
+    EXPECT_EQ(roundedPlacement(e, p, RoundTowards::Up).position.x, 1.2345);
+    EXPECT_EQ(roundedPlacement(e, q, RoundTowards::Up, RoundTowards::Up, RoundTowards::Up).position.x, 1.2345);
+    EXPECT_EQ(roundedPlacement(e, q, RoundTowards::Down, RoundTowards::Down, RoundTowards::Down).rotationDeg, 90.0);
+    // A region narrower than a step: the value as it is.
+    Entity narrow = e;
+    narrow.regions[0].lo.x = narrow.regions[0].hi.x = 1.23456;
+    EXPECT_EQ(roundedPlacement(narrow, {0, Vec3(1.23456, 1, 0), 45}).position.x, 1.23456);
+    // A discrete rotation off the grid stays as it is.
+    EXPECT_EQ(roundedPlacement(e, {1, Vec3(1.1, 1, 0), 33.333333}).rotationDeg, 33.333333);
+    // Outside every region: the nearest step.
+    EXPECT_EQ(roundedPlacement(e, {-1, Vec3(7.77777, 1, 0), 1.005}).position.x, 7.7778);
 }
 
 TEST(LayoutIo, ErrorsNameThePath) {

@@ -212,5 +212,51 @@ TEST(Plan, ScaleCentresOnTheTargetsAndATableListsTheWorkPlanes) {
     EXPECT_TRUE(bottom);
 }
 
+// Six chairs 0.35 m apart, each with a seat sampler, a cabinet and a desk among them,
+// and an isolux map: every label drawn lies inside the picture and over no other, and
+// the samplers' labels (with their values) are all drawn.
+TEST(Plan, LabelsOfEntitiesCloseTogetherDoNotOverlap) {
+    test::SceneBuilder builder;
+    builder.material("wall", test::diffuse(0.5))
+        .material("wood", test::diffuse(0.4))
+        .room({0, 0, 0}, {4, 3, 3}, "wall", "wall", "wall")
+        .emitter("lamp", rectEmitter({2, 1.5, 2.99}, {0, 0, -1}, {0, 1, 0}, {0.6, 0.6}), 6000)
+        .box("cabinet", {1.9, 1.0, 0}, {2.3, 1.4, 1.6}, "wood");
+    for (int k = 0; k < 6; ++k) {
+        const std::string name = "chair " + std::to_string(k + 1);
+        builder.entity(name, {1.2 + 0.35 * (k % 3), 1.1 + 0.35 * (k / 3), 0})
+            .region({0.5, 0.5}, {3.5, 2.5}, {0})
+            .preset("chair", "wood")
+            .sampler(name + " seat", planarSampler({0, 0, 0.46}, {0, 0, 1}, {0, 1, 0}, {0.3, 0.3}, {2, 2}), 200, kInf, 50)
+            .end();
+    }
+    builder.entity("desk", {1.6, 1.6, 0}).region({0.5, 0.5}, {3.5, 2.5}, {0}).preset("desk", "wood").end();
+    test::SceneLab lab(builder.build());
+    PlanData data;
+    data.samplers = std::vector<SamplerResult>(lab.scene.samplers.size());
+    for (size_t k = 0; k < data.samplers->size(); ++k) (*data.samplers)[k].value = 150 + 40.0 * double(k);
+    data.workPlane = measureWorkPlane(*lab.tracer, lab.scene.room()->box, 0.8, 0.25, 4, 1);
+    std::vector<PlanLabel> labels;
+    Image image = renderPlan(lab.scene, initialLayout(lab.scene), {}, data, &labels);
+
+    int samplerLabels = 0;
+    for (const PlanLabel& l : labels) samplerLabels += l.text.find(" seat ") != std::string::npos;
+    EXPECT_EQ(samplerLabels, 6);
+    EXPECT_GE(labels.size(), 8u);
+    for (size_t a = 0; a < labels.size(); ++a) {
+        const PlanLabel& p = labels[a];
+        EXPECT_TRUE(p.x0 >= 0 && p.y0 >= 0 && p.x1 <= image.width() && p.y1 <= image.height()) << p.text;
+        // Legible: a line at least 12 px high.
+        EXPECT_GE(p.y1 - p.y0, 12) << p.text;
+        for (size_t b = a + 1; b < labels.size(); ++b) {
+            const PlanLabel& q = labels[b];
+            const bool overlap = p.x0 < q.x1 && q.x0 < p.x1 && p.y0 < q.y1 && q.y0 < p.y1;
+            EXPECT_FALSE(overlap) << "\"" << p.text << "\" [" << p.x0 << ", " << p.y0 << ", " << p.x1 << ", " << p.y1
+                                  << "] and \"" << q.text << "\" [" << q.x0 << ", " << q.y0 << ", " << q.x1 << ", "
+                                  << q.y1 << "]";
+        }
+    }
+}
+
 }  // namespace
 }  // namespace luxplan

@@ -3,10 +3,12 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstring>
 #include <fstream>
 #include <regex>
 
 #include <luxplan/constraints/constraint_type.h>
+#include <luxplan/lightsamplers/glare_sources.h>
 #include <luxplan/lightsamplers/sampler_type.h>
 #include <luxplan/output/report_html.h>
 #include <luxplan/output/report_viewer.h>
@@ -31,11 +33,15 @@ Scene makeScene() {
         .build();
 }
 
+// Every href and src value (scanned by hand: std::regex recurses per character, and a
+// picture's data: URI is longer than its stack allows).
 std::vector<std::string> links(const std::string& html) {
     std::vector<std::string> out;
-    std::regex attr(R"re((?:href|src)="([^"]*)")re");
-    for (auto it = std::sregex_iterator(html.begin(), html.end(), attr); it != std::sregex_iterator(); ++it)
-        out.push_back((*it)[1]);
+    for (const char* attr : {"href=\"", "src=\""})
+        for (size_t at = html.find(attr); at != std::string::npos; at = html.find(attr, at + 1)) {
+            const size_t begin = at + std::strlen(attr), end = html.find('"', begin);
+            out.push_back(html.substr(begin, end - begin));
+        }
     return out;
 }
 
@@ -79,9 +85,110 @@ TEST(ReportHtml, SamplersConstraintsAndOnlyExistingLinks) {
     std::vector<std::string> refs = links(html);
     EXPECT_NE(std::find(refs.begin(), refs.end(), "plan.png"), refs.end());
     EXPECT_NE(std::find(refs.begin(), refs.end(), "scene.glb"), refs.end());
-    for (const std::string& ref : refs) EXPECT_TRUE(std::filesystem::exists(dir.path() / ref)) << ref;
+    // The pictures are in the page (data: URIs); every other link is to a file there.
+    EXPECT_NE(std::find(refs.begin(), refs.end(), "data:image/png;base64,cG5n"), refs.end());  // "png"
+    for (const std::string& ref : refs) {
+        if (ref.rfind("data:", 0) != 0) {
+            EXPECT_TRUE(std::filesystem::exists(dir.path() / ref)) << ref;
+        }
+    }
+    EXPECT_EQ(html.find("src=\"plan.png\""), std::string::npos);
     EXPECT_EQ(html.find("src=\"render.png\""), std::string::npos);
     EXPECT_EQ(html.find("http"), std::string::npos);  // nothing from the network
+}
+
+namespace reporttest {
+
+std::string between(const std::string& html, const std::string& from, const std::string& to) {
+    const size_t a = html.find(from);
+    if (a == std::string::npos) return "";
+    const size_t b = html.find(to, a);
+    return html.substr(a, b == std::string::npos ? std::string::npos : b - a);
+}
+
+}  // namespace reporttest
+
+// Results first: per task area Em, Emin and U0 against their targets in words a client
+// reads, glare samplers as rows of their own, C, L and G explained; the engineer's
+// tables after them, in the appendix; a print stylesheet for A4.
+TEST(ReportHtml, ResultsFirstAndTheEngineersTablesInTheAppendix) {
+    Scene scene = test::SceneBuilder()
+                      .name("office")
+                      .material("m", test::diffuse(0.5))
+                      .room({0, 0, 0}, {6, 4, 3}, "m", "m", "m")
+                      .entity("desk", {2, 2, 0}).region({1, 1}, {5, 3}).part({1, 1, 0.75}, "m").end()
+                      .sampler("desk area", planarSampler({3, 2, 0.8}, {0, 0, 1}, {0, 1, 0}, {1, 1}, {2, 2}), 500)
+                      .statistic(Statistic::U0, 0.6)
+                      .sampler("reading", planarSampler({1, 1, 0.8}, {0, 0, 1}, {0, 1, 0}, {1, 1}, {2, 2}), 300, 750)
+                      .sampler("seat view", ugrSampler({2, 2, 1.2}, {1, 0, 0}), 0, 19)
+                      .sampler("screen", directionalSampler({2, 2, 1.2}, {0, 1, 0}, {0, 0, 1}, 60, 4), 0, 1000)
+                      .build();
+    ReportData data;
+    data.layoutLabel = "layout.json";
+    data.samplers.resize(4);
+    // desk area: Em 510 (>= 500), U0 = 300 / 510 = 0.59 against 0.6 with an error of 0.05: within noise.
+    data.samplers[0].value = 510, data.samplers[0].standardError = 5;
+    data.samplers[0].points = {300, 600, 570, 570};
+    data.samplers[0].pointErrors = {30, 30, 30, 30};
+    data.samplers[1].value = 200, data.samplers[1].standardError = 5;  // below 300 by 20 errors: fails
+    data.samplers[1].points = {150, 250, 200, 200};
+    data.samplers[1].pointErrors = {5, 5, 5, 5};
+    data.samplers[2].value = 16.2;  // UGR <= 19: passes
+    data.samplers[3].value = 1500, data.samplers[3].standardError = 20;  // fails
+    GeometryEvaluator geometry(scene);
+    data.geometry = geometry.evaluate(worldTransforms(scene, initialLayout(scene)), true);
+    data.timings = {{"render.png", 1.5}};
+    test::TempDir dir;
+    const std::string html = reportHtml(dir.path(), scene, nullptr, data);
+
+    // The order: results, then the appendix with the engineer's tables.
+    const size_t results = html.find("<h2 id=\"results\">Results</h2>"), appendix = html.find("id=\"appendix\"");
+    ASSERT_NE(results, std::string::npos) << html;
+    ASSERT_NE(appendix, std::string::npos) << html;
+    EXPECT_LT(results, appendix);
+    EXPECT_LT(results, html.find("<h2>Scene</h2>"));
+    for (const char* part : {"<h2>Light samplers</h2>", "<h2>Constraints</h2>", "<h2>Timings</h2>", "<h3>Statistics goals</h3>"}) {
+        EXPECT_GT(html.find(part), appendix) << part;
+    }
+    const std::string areas = reporttest::between(html, "<h3>Task areas</h3>", "</table>");
+    ASSERT_FALSE(areas.empty()) << html;
+    // desk area: Em passes, Emin has no target, U0 within noise of its bound.
+    EXPECT_NE(areas.find("<td rowspan=\"3\"><b>desk area</b></td><td>E<sub>m</sub> (maintained mean)</td>"
+                         "<td class=\"num\">510&nbsp;lx</td><td>&ge; 500&nbsp;lx</td><td class=\"result met\">pass</td>"),
+              std::string::npos)
+        << areas;
+    EXPECT_NE(areas.find("<td>E<sub>min</sub></td><td class=\"num\">300&nbsp;lx</td><td>&ndash;</td>"
+                         "<td class=\"result muted\">no target</td>"),
+              std::string::npos)
+        << areas;
+    EXPECT_NE(areas.find("<td class=\"num\">0.59</td><td>&ge; 0.60</td><td class=\"result warn\">at bound (within noise)</td>"),
+              std::string::npos)
+        << areas;
+    // reading: Em fails, 300 to 750 lx.
+    EXPECT_NE(areas.find("<td class=\"num\">200&nbsp;lx</td><td>300 to 750&nbsp;lx</td><td class=\"result missed\">fail</td>"),
+              std::string::npos)
+        << areas;
+    EXPECT_EQ(areas.find("seat view"), std::string::npos);
+    // Glare: the UGR and the directional sampler, each a row of its own.
+    const std::string glare = reporttest::between(html, "<h3>Glare</h3>", "</table>");
+    EXPECT_NE(glare.find("<td><b>seat view</b></td><td>UGR (unified glare rating)</td><td class=\"num\">16.2</td>"
+                         "<td>&le; 19.0</td><td class=\"result met\">pass</td>"),
+              std::string::npos)
+        << glare;
+    EXPECT_NE(glare.find("<td><b>screen</b></td>"), std::string::npos) << glare;
+    EXPECT_NE(glare.find("<td class=\"result missed\">fail</td>"), std::string::npos) << glare;
+    // The goals sentence and C, L and G explained.
+    // The UGR met; the desk area's U0 within noise; the reading area and the screen missed.
+    EXPECT_NE(html.find("1 of 4 lighting goals met (1 more at its bound within noise), "), std::string::npos) << html;
+    EXPECT_NE(html.find("C = w&middot;L + (1 &minus; w)&middot;G"), std::string::npos);
+    EXPECT_NE(html.find("the lighting penalty: 0 when every lighting goal is met"), std::string::npos);
+    EXPECT_NE(html.find("the design-rule penalty: 0 when every design rule"), std::string::npos);
+    // Never "fail" or "missed" for the value within noise.
+    EXPECT_EQ(reporttest::between(areas, "U<sub>0</sub> = ", "</tr>").find("fail"), std::string::npos);
+    // Print: A4, tables and rows kept whole, pictures to the page's width, no 3D view.
+    for (const char* rule : {"@media print", "size: A4", "break-inside: avoid", "figure img { max-width: 100%",
+                             ".screen-only, canvas { display: none"})
+        EXPECT_NE(html.find(rule), std::string::npos) << rule;
 }
 
 // 500.4 +- 16.7 lx against a 500 lx maximum: "at bound (within noise)", never missed.

@@ -17,7 +17,9 @@ std::string layoutToJson(const Scene& scene, const Layout& layout) {
     Json entities = Json::object();
     for (size_t i = 0; i < scene.entities.size(); ++i) {
         if (!scene.entities[i].movable()) continue;
-        const Placement& p = layout.placements[i];
+        // x and y to 0.1 mm, the rotation to 0.01 degree, each inside its region
+        // (roundedPlacement): what the file says is what a reader measures.
+        const Placement p = roundedPlacement(scene.entities[i], layout.placements[i]);
         Json& entry = entities[scene.entities[i].path];
         entry = {{"position", {p.position.x, p.position.y, p.position.z}}, {"rotation", p.rotationDeg}};
         // Outside every region (a flat run's layout in the scene's hierarchy): no index.

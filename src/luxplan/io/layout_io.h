@@ -9,6 +9,9 @@
 
 namespace luxplan::io {
 
+// Positions are written to 0.1 mm and rotations to 0.01 degree (roundedPlacement,
+// scene/layout.h); z as it is. A layout to be measured as its file will be read
+// back is rounded first (roundedLayout): the optimizer's result is.
 std::string layoutToJson(const Scene& scene, const Layout& layout);
 void writeLayout(const std::filesystem::path& file, const Scene& scene, const Layout& layout);
 

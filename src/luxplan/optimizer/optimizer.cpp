@@ -6,6 +6,8 @@
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
+#include <tuple>
+#include <utility>
 
 #include <luxplan/constraints/penalty.h>
 #include <luxplan/optimizer/placement.h>
@@ -752,9 +754,49 @@ OptimizerResult Optimizer::run(const ProgressCallback& progress, const std::atom
     return r;
 }
 
+std::pair<Layout, Evaluation> Optimizer::asWritten(const Layout& layout, const Evaluation& e) {
+    if (!options_.roundResult) return {layout, e};
+    auto geometryOf = [&](const Layout& l) {
+        Evaluation g = evaluateGeometry(worldTransforms(*scene_, l));
+        geometry_.revert();
+        return g;
+    };
+    // Whether `a` keeps the rules worse than `b`: rejected, more violating, higher G.
+    auto worse = [](const Evaluation& a, const Evaluation& b) {
+        if (a.rejected != b.rejected) return a.rejected;
+        return a.rejected ? a.violation > b.violation : a.geometry > b.geometry;
+    };
+    Layout rounded = roundedLayout(*scene_, layout);
+    Evaluation g = geometryOf(rounded);
+    // Rounding to the nearest step broke a rule (or raised a penalty): each entity it
+    // moved tries rounding each value the other way, one entity after the other.
+    constexpr RoundTowards kWays[] = {RoundTowards::Down, RoundTowards::Up};
+    for (size_t i = 0; i < scene_->entities.size() && worse(g, e); ++i) {
+        const Placement &from = layout.placements[i], &to = rounded.placements[i];
+        if (!scene_->entities[i].movable() ||
+            (from.position == to.position && from.rotationDeg == to.rotationDeg))
+            continue;
+        for (RoundTowards x : kWays)
+            for (RoundTowards y : kWays)
+                for (RoundTowards turn : kWays) {
+                    Layout trial = rounded;
+                    trial.placements[i] = roundedPlacement(scene_->entities[i], from, x, y, turn);
+                    Evaluation h = geometryOf(trial);
+                    if (worse(g, h)) rounded = std::move(trial), g = std::move(h);
+                }
+    }
+    Evaluation out = e;
+    out.geometry = g.geometry;
+    out.rejected = g.rejected;
+    out.violation = g.violation;
+    out.rejectedBy = g.rejectedBy;
+    out.cost = scene_->objective.cost(out.lighting, out.geometry);
+    return {std::move(rounded), std::move(out)};
+}
+
 void Optimizer::chooseResult(OptimizerResult& r) {
-    r.best = best_;
-    r.bestEvaluation = r.bestSearchEvaluation = bestEval_;
+    std::tie(r.best, r.bestEvaluation) = asWritten(best_, bestEval_);
+    r.bestSearchEvaluation = bestEval_;
     r.bestIteration = bestIteration_;
     const bool measured = lighting_ && !scene_->samplers.empty();
     if (!measured) return;
@@ -771,7 +813,7 @@ void Optimizer::chooseResult(OptimizerResult& r) {
     if (!feasible_) {
         // Only the least violating layout, which no cost describes (a hard limit is
         // passed): its light is still what layout.json would measure.
-        r.bestEvaluation = measure(best_, bestEval_, kReportStream);
+        r.bestEvaluation = measure(r.best, r.bestEvaluation, kReportStream);
         r.reportSeed = independentSeed(kReportStream);
         return;
     }
@@ -801,13 +843,15 @@ void Optimizer::chooseResult(OptimizerResult& r) {
     }
     if (all.empty()) return;
     const Candidate& c = all[chosen];
-    r.best = c.layout;
+    // As layout.json will hold it (OptimizerOptions::roundResult).
+    auto [written, evaluation] = asWritten(c.layout, c.search);
+    r.best = written;
     r.bestSearchEvaluation = c.search;
     r.bestIteration = c.iteration;
     r.chosenCandidate = int(chosen);
     // Measured once more (stream 2), so that the reported value owes nothing to the
     // choice it made.
-    r.bestEvaluation = measure(c.layout, c.search, kReportStream);
+    r.bestEvaluation = measure(written, evaluation, kReportStream);
     r.reportSeed = independentSeed(kReportStream);
     r.candidates = all;
 }
@@ -821,7 +865,9 @@ void Optimizer::chooseSuggestions(OptimizerResult& r) {
         if (!sameCandidate(*scene_, c.layout, result.layout, options_.suggestionSeparation)) list.push_back(c);
     const bool measured = lighting_ && !scene_->samplers.empty();
     for (Candidate& c : list) {
-        Evaluation e = c.search;
+        // As its file will hold it, like the result.
+        auto [written, e] = asWritten(c.layout, c.search);
+        c.layout = std::move(written);
         if (measured) {
             ++independentMeasurements_;
             e.lighting = lighting_->measureIndependently(c.layout, worldTransforms(*scene_, c.layout), &e.samplers,

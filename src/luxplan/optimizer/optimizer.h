@@ -127,6 +127,12 @@ struct OptimizerOptions {
     // iteration ceil(iterations (k / n)^2) for k = 1..n (dense early, where the cost
     // falls fastest), and where the run stops; 0: none.
     int snapshots = 0;
+    // The result and the suggestions rounded as layout.json writes them (0.1 mm, 0.01
+    // degree: roundedLayout, scene/layout.h) before they are evaluated and measured for
+    // the report, so that the file measures what the report says. Where the nearest
+    // rounding breaks a rule the unrounded layout held (a footprint against a wall), each
+    // moved entity tries the other ways. Off: the chain's layouts as they are.
+    bool roundResult = true;
     int progressEvery = 100;     // iterations between progress callbacks
     int traceEvery = 0;          // iterations between trace rows; 0: about 10^4 rows per run
 };
@@ -300,6 +306,9 @@ private:
     uint64_t independentSeed(uint64_t stream) const;
     // The result: the candidates measured independently, the best of them measured again.
     void chooseResult(OptimizerResult& r);
+    // `layout` as layout.json writes it (OptimizerOptions::roundResult) and `e` with the
+    // geometric terms of that layout (its light still to be measured again).
+    std::pair<Layout, Evaluation> asWritten(const Layout& layout, const Evaluation& e);
     // OptimizerOptions::suggestions: the distinct layouts kept, each measured with the
     // report's seed, the result among them, best measurement first.
     void chooseSuggestions(OptimizerResult& r);

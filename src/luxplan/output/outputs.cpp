@@ -11,6 +11,7 @@
 #include <luxplan/output/gltf_export.h>
 #include <luxplan/output/plan.h>
 #include <luxplan/output/plot.h>
+#include <luxplan/output/report_pdf.h>
 #include <luxplan/output/render.h>
 #include <luxplan/output/report_viewer.h>
 #include <luxplan/rt/embree_scene.h>
@@ -209,6 +210,22 @@ RunOutputs writeRunOutputs(const std::filesystem::path& folder, const Scene& sce
         writeReportHtml(folder, scene, result, data);
         wrote(folder / "report.html");
         timed("report.html");
+        // A report.pdf of an earlier run would describe another page.
+        std::error_code stale;
+        std::filesystem::remove(folder / "report.pdf", stale);
+        if (options.pdf && !stopped()) {
+            begin("printing report.pdf (headless Chromium)");
+            out.pdfNote = writeReportPdf(folder, options.pdfTimeoutSeconds, options.cancel);
+            if (out.pdfNote.empty()) {
+                wrote(folder / "report.pdf");
+                timed("report.pdf");
+            } else if (options.onStep) {
+                // A missing browser is said once per process; a failure every time.
+                static std::atomic<bool> saidNoBrowser{false};
+                if (!pdfBrowser().empty() || !saidNoBrowser.exchange(true))
+                    options.onStep("warning: report.pdf not written: " + out.pdfNote);
+            }
+        }
     }
     return finish();
 }

@@ -1,6 +1,6 @@
 // Everything a run leaves besides layout.json/report.json/trace.csv: the plan, the
 // start-vs-result plan comparison, a path-traced view, the convergence plot,
-// scene.glb and report.html, written into one folder.
+// scene.glb, report.html and report.pdf, written into one folder.
 #pragma once
 
 #include <atomic>
@@ -29,6 +29,10 @@ struct OutputOptions {
     bool glb = true;          // scene.glb
     bool html = true;         // report.html (written last; links what exists)
     bool viewer = true;       // report.html's 3D view: three.js copied into viewer/ (report_viewer.h)
+    // report.pdf: report.html printed by headless Chromium (report_pdf.h), with report.html.
+    // Without a browser (said once per process through onStep) or when it fails, none.
+    bool pdf = true;
+    double pdfTimeoutSeconds = 180;
     int budgetPaths = 32;     // per sampler item, for report.html's light budgets; 0: none
     // report.html's daylight hour by hour: each whole hour of a daylight period (at
     // most 48), its samplers measured at hourlyPaths per point; 0: none.
@@ -57,6 +61,7 @@ struct RunOutputs {
     std::vector<ReportTiming> timings;         // per step
     bool cancelled = false;                    // OutputOptions::cancel stopped it early
     std::vector<SamplerResult> samplers;       // the final layout's sampler values shown
+    std::string pdfNote;                       // why report.pdf was not written ("" when it was, or not asked for)
     double seconds = 0;
 };
 

@@ -12,6 +12,7 @@
 #include <luxplan/constraints/penalty.h>
 #include <luxplan/lightsamplers/sampler_type.h>
 #include <luxplan/output/contours.h>
+#include <luxplan/output/label_font.h>
 
 namespace luxplan {
 namespace {
@@ -111,57 +112,79 @@ Bounds3 planBounds(const Scene& scene, const std::vector<Transform>& world) {
     return b;
 }
 
-// Greedy label placement: each label tries its anchor, then positions shifted down and
-// up by whole label heights, and takes the first that overlaps no label placed before.
+// Greedy label placement in the labels' font: each label takes the free spot nearest
+// its anchor among spots shifted by whole label heights down and up and half label
+// widths left and right, one that overlaps no label placed before, no reserved area
+// and stays inside the picture; without one it is left out.
 class LabelPlacer {
 public:
-    explicit LabelPlacer(Image& image) : image_(image) {}
+    LabelPlacer(Image& image, const LabelFont& font) : image_(image), font_(font) {}
 
-    // `anchor` is the top centre of the text. Tries the anchor, then shifts down and up
-    // by whole label heights, then the same to the left and right of the anchor, and
-    // takes the first spot that overlaps no label placed before; a label moved off its
-    // anchor by more than its height gets a thin leader line back to it. Without a free
-    // spot the label is drawn at its anchor when `force`, else left out.
-    void place(Vec2 anchor, const std::string& text, Rgb color, double backgroundAlpha, bool force) {
-        const double w = textWidth(text), h = textHeight(text), step = h + 5;
-        for (int column : {0, -1, 1})
-            for (int k = 0; k < 9; ++k) {
-                double dy = (k + 1) / 2 * step * (k % 2 ? 1 : -1), dx = column * (w + 8);
-                Vec2 at{anchor.x + dx, anchor.y + dy};
-                Box b{at.x - w / 2 - 2, at.y - 2, at.x + w / 2 + 2, at.y + h + 2};
-                if (b.x0 < 0 || b.y0 < 0 || b.x1 > image_.width() || b.y1 > image_.height() || overlaps(b)) continue;
-                if (std::abs(dx) + std::abs(dy) > step) {
-                    Vec2 near{std::clamp(anchor.x, b.x0, b.x1), std::clamp(anchor.y, b.y0, b.y1)};
-                    image_.drawLine(anchor, near, color, 1, 0.8);
-                }
-                draw(b, at, text, color, backgroundAlpha);
-                return;
+    // `anchor` is the top centre of the text; `reach`: how many label heights (and
+    // half widths) away the label may go. A label moved off its anchor by more than its
+    // height gets a thin leader back to it, unless the leader would cross another label
+    // (then none). Returns whether it was placed.
+    bool place(Vec2 anchor, const std::string& text, Rgb color, double backgroundAlpha, int reach) {
+        const double w = font_.width(text), h = font_.height(text), step = h + 2 * kPad + 1;
+        const double half = (w + 2 * kPad + 2) / 2;
+        struct Spot {
+            double dx, dy, distance;
+        };
+        std::vector<Spot> spots;
+        for (int row = -reach; row <= reach; ++row)
+            for (int column = -2 * reach; column <= 2 * reach; ++column) {
+                const double dx = column * half, dy = row * step;
+                spots.push_back({dx, dy, std::hypot(dx, 1.5 * dy)});
             }
-        if (force) {
-            Box b{anchor.x - w / 2 - 2, anchor.y - 2, anchor.x + w / 2 + 2, anchor.y + h + 2};
-            draw(b, anchor, text, color, backgroundAlpha);
+        std::stable_sort(spots.begin(), spots.end(), [](const Spot& a, const Spot& b) { return a.distance < b.distance; });
+        for (const Spot& spot : spots) {
+            const Vec2 at{std::round(anchor.x + spot.dx), std::round(anchor.y + spot.dy)};
+            const PlanLabel box{text, at.x - w / 2 - kPad, at.y - kPad, at.x + w / 2 + kPad, at.y + h + kPad};
+            if (box.x0 < 0 || box.y0 < 0 || box.x1 > image_.width() || box.y1 > image_.height() || overlaps(box)) continue;
+            if (std::abs(spot.dx) > half || std::abs(spot.dy) > step) {
+                const Vec2 near{std::clamp(anchor.x, box.x0, box.x1), std::clamp(anchor.y, box.y0, box.y1)};
+                if (!crossesALabel(anchor, near)) image_.drawLine(anchor, near, color, 1, 0.8);
+            }
+            image_.fillRect(box.x0, box.y0, box.x1, box.y1, kWhite, backgroundAlpha);
+            font_.draw(image_, at.x, at.y, text, color, TextAlign::Center);
+            labels_.push_back(box);
+            return true;
         }
+        return false;
     }
 
     // Reserves an area (a legend, a table) that no label may cover.
-    void reserve(double x0, double y0, double x1, double y1) { boxes_.push_back({x0, y0, x1, y1}); }
+    void reserve(double x0, double y0, double x1, double y1) { reserved_.push_back({"", x0, y0, x1, y1}); }
+
+    const std::vector<PlanLabel>& labels() const { return labels_; }
 
 private:
-    struct Box {
-        double x0, y0, x1, y1;
-    };
-    bool overlaps(const Box& b) const {
-        for (const Box& o : boxes_)
-            if (b.x0 < o.x1 && o.x0 < b.x1 && b.y0 < o.y1 && o.y0 < b.y1) return true;
+    static constexpr double kPad = 2;
+    static bool intersects(const PlanLabel& a, const PlanLabel& b) {
+        return a.x0 < b.x1 && b.x0 < a.x1 && a.y0 < b.y1 && b.y0 < a.y1;
+    }
+    bool overlaps(const PlanLabel& b) const {
+        for (const PlanLabel& o : labels_)
+            if (intersects(b, o)) return true;
+        for (const PlanLabel& o : reserved_)
+            if (intersects(b, o)) return true;
         return false;
     }
-    void draw(const Box& b, Vec2 at, const std::string& text, Rgb color, double backgroundAlpha) {
-        boxes_.push_back(b);
-        image_.drawLabel(at.x, at.y, text, color, kWhite, 1, TextAlign::Center, backgroundAlpha);
+    // Whether the segment from a to b passes through a label placed before (sampled
+    // every pixel).
+    bool crossesALabel(Vec2 a, Vec2 b) const {
+        const int n = std::max(1, int(std::ceil(length(b - a))));
+        for (int k = 0; k <= n; ++k) {
+            const Vec2 p = a + (b - a) * (double(k) / n);
+            for (const PlanLabel& o : labels_)
+                if (p.x > o.x0 && p.x < o.x1 && p.y > o.y0 && p.y < o.y1) return true;
+        }
+        return false;
     }
 
     Image& image_;
-    std::vector<Box> boxes_;
+    const LabelFont& font_;
+    std::vector<PlanLabel> labels_, reserved_;
 };
 
 void drawScaleBar(Image& image, const PlanMapping& map, Vec2 at, double roomWidth) {
@@ -265,7 +288,8 @@ FalseColor planFalseColor(const Scene& scene, const std::vector<double>& values)
     return autoFalseColor(values, ColorScale::Log);
 }
 
-Image renderPlan(const Scene& scene, const Layout& layout, const PlanOptions& options, const PlanData& data) {
+Image renderPlan(const Scene& scene, const Layout& layout, const PlanOptions& options, const PlanData& data,
+                 std::vector<PlanLabel>* placedLabels) {
     const std::vector<Transform> world = worldTransforms(scene, layout);
     const Bounds3 bounds = planBounds(scene, world);
     const RoomShell* room = scene.room();
@@ -318,7 +342,8 @@ Image renderPlan(const Scene& scene, const Layout& layout, const PlanOptions& op
     const Vec2 roomLo = map(bounds.lo.x, bounds.hi.y), roomHi = map(bounds.hi.x, bounds.lo.y);
     const double wall = std::max(4.0, 0.12 * s);
 
-    if (!options.title.empty()) image.drawText(margin, 8, options.title, kBlack, 2);
+    const LabelFont labelFont(options.labelHeight);
+    if (!options.title.empty()) LabelFont(20).draw(image, margin, 3, options.title, kBlack);
 
     // Walls as a dark band around the floor, then the floor.
     if (room) image.fillRect(roomLo.x - wall, roomLo.y - wall, roomHi.x + wall, roomHi.y + wall, kWallColor);
@@ -392,7 +417,7 @@ Image renderPlan(const Scene& scene, const Layout& layout, const PlanOptions& op
             for (const ContourSegment& seg : segments)
                 image.drawLine(toPixels(seg.a), toPixels(seg.b), kContourColor, bandEdge ? 2 : 1, bandEdge ? 0.9 : 0.6);
             const ContourSegment& mid = segments[segments.size() / 2];
-            contourLabels.push_back({(toPixels(mid.a) + toPixels(mid.b)) * 0.5 - Vec2(0, 3), formatValue(level)});
+            contourLabels.push_back({(toPixels(mid.a) + toPixels(mid.b)) * 0.5 - Vec2(0, options.labelHeight / 2), formatValue(level)});
         }
     }
 
@@ -440,7 +465,7 @@ Image renderPlan(const Scene& scene, const Layout& layout, const PlanOptions& op
             image.fillPolygon(poly, kStaticColor, 0.45);
             image.drawPolygon(poly, darker(kStaticColor), 1.5);
         }
-        if (options.entityLabels) staticLabels.push_back({centroid(poly) - Vec2(0, 3), item.name});
+        if (options.entityLabels) staticLabels.push_back({centroid(poly) - Vec2(0, options.labelHeight / 2), item.name});
     }
 
     // Furniture footprints: the union of the parts' projected boxes, filled once.
@@ -474,7 +499,7 @@ Image renderPlan(const Scene& scene, const Layout& layout, const PlanOptions& op
             Vec2 dir{d.x / len, -d.y / len};
             drawArrow(image, c, c + dir * reach, kFrontColor, 2);
         }
-        if (options.entityLabels) entityLabels.push_back({c - Vec2(0, 4), entity.name});
+        if (options.entityLabels) entityLabels.push_back({c - Vec2(0, options.labelHeight / 2), entity.name});
     }
 
     // Luminaires.
@@ -510,7 +535,7 @@ Image renderPlan(const Scene& scene, const Layout& layout, const PlanOptions& op
     }
 
     // The legend right of the plan, the work plane's statistics under it.
-    LabelPlacer labels(image);
+    LabelPlacer labels(image, labelFont);
     if (hasMap) {
         const IlluminanceGrid& g = *data.workPlane;
         int lx = int(roomHi.x + wall + 62), ly = int(roomLo.y + 30);
@@ -526,13 +551,15 @@ Image renderPlan(const Scene& scene, const Layout& layout, const PlanOptions& op
         labels.reserve(lx - 50, ly - 14, image.width(), sy + textHeight(text) + 2);
     }
 
-    // Labels last, so nothing covers them: sampler results always, names and contour
-    // values where they fit.
+    // Labels last, so nothing covers them, and none over another: sampler results
+    // first (they may go further from their samplers, with a leader), then names and
+    // contour values near where they belong, or not at all.
     for (size_t i = 0; i < samplerLabels.size(); ++i)
-        labels.place(samplerLabels[i].at, samplerLabels[i].text, darker(samplerColors[i], 0.7), 0.85, true);
-    for (const Label& l : entityLabels) labels.place(l.at, l.text, kBlack, 0.7, false);
-    for (const Label& l : staticLabels) labels.place(l.at, l.text, darker(kStaticColor, 0.4), 0.5, false);
-    for (const ContourLabel& l : contourLabels) labels.place(l.at, l.text, kContourColor, 0.6, false);
+        labels.place(samplerLabels[i].at, samplerLabels[i].text, darker(samplerColors[i], 0.7), 0.85, 8);
+    for (const Label& l : entityLabels) labels.place(l.at, l.text, kBlack, 0.7, 2);
+    for (const Label& l : staticLabels) labels.place(l.at, l.text, darker(kStaticColor, 0.4), 0.5, 2);
+    for (const ContourLabel& l : contourLabels) labels.place(l.at, l.text, kContourColor, 0.6, 1);
+    if (placedLabels) *placedLabels = labels.labels();
 
     // Scale bar under the plan, north arrow in the top-right margin.
     drawScaleBar(image, map, {roomLo.x, roomHi.y + wall + 12}, size.x);

@@ -63,6 +63,7 @@ struct PlanOptions {
     bool entityLabels = true;
     bool samplerLabels = true;
     bool contours = true;       // isolux lines at the legend's ticks
+    double labelHeight = 14;    // px: the labels' line height (label_font.h)
     std::optional<FalseColor> colors;  // default: planFalseColor of the work plane
 };
 
@@ -77,7 +78,18 @@ struct PlanData {
 // legend and its Em, Emin, Emax and U0 on the right. Samplers are green when they meet
 // their targets, red otherwise, grey when no results are given; with results, a table
 // under the plan gives each work plane's (planar sampler's) Em, Emin, Emax and U0.
+// A label drawn on the plan: its text and its box (pixels, the background's edges).
+struct PlanLabel {
+    std::string text;
+    double x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+};
+
+// The labels (samplers with their values, entities, fixed objects, isolux values) are
+// drawn in DejaVu Sans at PlanOptions::labelHeight (label_font.h) and never over one
+// another: each takes the free spot nearest where it belongs, or is left out (a
+// sampler's label may go further, with a leader line back). `labels`, if given,
+// receives the boxes of those drawn.
 Image renderPlan(const Scene& scene, const Layout& layout, const PlanOptions& options = {},
-                 const PlanData& data = {});
+                 const PlanData& data = {}, std::vector<PlanLabel>* labels = nullptr);
 
 }  // namespace luxplan

@@ -7,7 +7,10 @@
 #include <luxplan/optimizer/reach.h>
 
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <fstream>
+#include <iterator>
 #include <sstream>
 
 #include <luxplan/constraints/constraint_type.h>
@@ -40,6 +43,27 @@ dl.summary { display: grid; grid-template-columns: max-content auto; gap: 0.15em
 dl.summary dt { font-weight: bold; }
 dl.summary dd { margin: 0; }
 footer { margin-top: 3em; color: #888; font-size: 0.85em; }
+p.lead { color: #555; margin-top: 0; }
+p.verdict { padding: 0.4em 0.7em; display: inline-block; }
+table.results td.result { white-space: nowrap; }
+h1.appendix { font-size: 1.4em; margin-top: 2.5em; border-top: 3px solid #ccc; padding-top: 0.6em; }
+.print-only { display: none; }
+/* On paper (report.pdf): A4, no table or picture split across pages, pictures to the
+   page's width, the appendix on a page of its own, no interactive 3D view. */
+@media print {
+  @page { size: A4; margin: 14mm 12mm; }
+  body { max-width: none; margin: 0; padding: 0; font-size: 10pt; }
+  table { font-size: 8.5pt; }
+  table, tr, figure, dl.summary, p.verdict { break-inside: avoid; page-break-inside: avoid; }
+  thead { display: table-header-group; }
+  h1, h2, h3 { break-after: avoid; page-break-after: avoid; }
+  figure img { max-width: 100%; width: auto; max-height: 24cm; border: none; }
+  h1.appendix { break-before: page; page-break-before: always; border-top: none; margin-top: 0; }
+  .screen-only, canvas { display: none !important; }
+  .print-only { display: block; }
+  a { color: inherit; text-decoration: none; }
+  .met, .missed, .warn, th { -webkit-print-color-adjust: exact; print-color-adjust: exact; }
+}
 )";
 
 // Captions of kReportImages, in its order.
@@ -154,13 +178,40 @@ void optimizerSummary(std::ostringstream& out, const Scene& scene, const Optimiz
     }
 }
 
+// RFC 4648 base64 of `bytes`.
+std::string reportBase64(const std::string& bytes) {
+    static const char* alphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string out;
+    out.reserve((bytes.size() + 2) / 3 * 4);
+    for (size_t i = 0; i < bytes.size(); i += 3) {
+        const uint32_t a = uint8_t(bytes[i]), b = i + 1 < bytes.size() ? uint8_t(bytes[i + 1]) : 0,
+                       c = i + 2 < bytes.size() ? uint8_t(bytes[i + 2]) : 0;
+        const uint32_t n = a << 16 | b << 8 | c;
+        out += alphabet[n >> 18 & 63];
+        out += alphabet[n >> 12 & 63];
+        out += i + 1 < bytes.size() ? alphabet[n >> 6 & 63] : '=';
+        out += i + 2 < bytes.size() ? alphabet[n & 63] : '=';
+    }
+    return out;
+}
+
+// The file's bytes as a data: URI, so that the page carries its pictures (and
+// report.pdf prints them) without the files beside it. Throws IoError.
+std::string pictureDataUri(const std::filesystem::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    if (!in) throw IoError("cannot read " + file.string() + " for report.html");
+    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    return "data:image/png;base64," + reportBase64(bytes);
+}
+
 void pictures(std::ostringstream& out, const std::filesystem::path& folder) {
     std::ostringstream figs;
     for (size_t i = 0; i < std::size(kReportImages); ++i) {
         const char* file = kReportImages[i];
         if (!std::filesystem::is_regular_file(folder / file)) continue;
-        figs << "<figure><a href=\"" << escapeHtml(file) << "\"><img src=\"" << escapeHtml(file) << "\" alt=\""
-             << escapeHtml(kImageCaptions[i]) << "\"></a><figcaption>" << escapeHtml(kImageCaptions[i])
+        // Embedded; the link opens the PNG file beside the page at full size.
+        figs << "<figure><a href=\"" << escapeHtml(file) << "\"><img src=\"" << pictureDataUri(folder / file)
+             << "\" alt=\"" << escapeHtml(kImageCaptions[i]) << "\"></a><figcaption>" << escapeHtml(kImageCaptions[i])
              << "</figcaption></figure>\n";
     }
     if (!figs.str().empty()) out << "<h2>Pictures</h2>\n" << figs.str();
@@ -195,6 +246,244 @@ GoalStatus samplerStatus(const LightSamplerSpec& s, const SamplerResult& r, cons
     if (allMet(terms)) return {"met", "met"};
     return reachVerdict(s, SamplerRange(), r).reach == Reach::WithinNoise ? GoalStatus{"at bound (within noise)", "warn"}
                                                                          : GoalStatus{"missed", "missed"};
+}
+
+// Each scene sampler's measurement shown on the page (the data's, else the result's),
+// null where it was not measured.
+std::vector<const SamplerResult*> shownSamplers(const Scene& scene, const std::vector<SamplerResult>& measured,
+                                                const OptimizerResult* result) {
+    std::vector<const SamplerResult*> rows(scene.samplers.size(), nullptr);
+    const std::vector<SamplerResult>* source = !measured.empty() ? &measured
+                                               : result && result->bestEvaluation.lightingEvaluated
+                                                   ? &result->bestEvaluation.samplers.samplers
+                                                   : nullptr;
+    for (size_t k = 0; source && k < rows.size() && k < source->size(); ++k) rows[k] = &(*source)[k];
+    return rows;
+}
+
+// The results table's verdict on one goal, in words a client reads: pass, at bound
+// (within noise) (past the bound by less than the value's standard error: never
+// called a fail), or fail.
+GoalStatus clientStatus(const LightingTerm& t) {
+    const GoalStatus status = goalStatus(t.penalty == 0, t.value, t.standardError, t.targetMin, t.targetMax);
+    if (std::string(status.cls) == "met") return {"pass", "met"};
+    if (std::string(status.cls) == "warn") return status;
+    return {"fail", "missed"};
+}
+
+// A unit after a number ("" for the quantities that are their own unit: UGR, DGP).
+std::string unitAfter(const char* unit) {
+    const std::string u = unit;
+    if (u == "UGR" || u == "DGP") return "";
+    if (u == "cd/m2") return "&nbsp;cd/m&sup2;";
+    return "&nbsp;" + escapeHtml(u);
+}
+
+// A target band as a client reads it: "&ge; 300 lx", "&le; 19", "300 to 500 lx".
+std::string targetWords(double lo, double hi, int digits, const std::string& unit) {
+    const bool low = std::isfinite(lo) && lo > 0, high = std::isfinite(hi);
+    if (low && high) return number(lo, digits) + " to " + number(hi, digits) + unit;
+    if (low) return "&ge; " + number(lo, digits) + unit;
+    if (high) return "&le; " + number(hi, digits) + unit;
+    return "any";
+}
+
+// What a quantity is called in the results: by the sampler's type.
+std::string quantityName(const LightSamplerSpec& s) {
+    const std::string type = s.type->name();
+    if (type == "planar") return "E<sub>m</sub> (maintained mean)";
+    if (type == "ugr") return "UGR (unified glare rating)";
+    if (type == "dgp") return "DGP (daylight glare probability)";
+    if (type == "directional") return "luminance in view (brightest part)";
+    if (type == "cylindrical") return "E<sub>z</sub> (cylindrical illuminance)";
+    if (type == "volume") return "mean luminance";
+    return escapeHtml(type);
+}
+
+// The digits a sampler's values are shown with.
+int valueDigits(const LightSamplerSpec& s) {
+    const std::string type = s.type->name();
+    return type == "dgp" ? 2 : type == "ugr" ? 1 : 0;  // lx and cd/m2 to the unit
+}
+
+// The goals sentence for the page: the optimizer's count when the page shows its
+// result; else counted here from the samplers and the rules shown (as countGoals).
+std::string goalsSentence(const Scene& scene, const OptimizerResult* result, const ReportData& data,
+                          const std::vector<const SamplerResult*>& rows, const GeometryResult* geometry, const char*& cls) {
+    // Green when every goal is met, amber when the only shortfalls are within noise.
+    auto classOf = [](const GoalCount& g) {
+        if (g.all()) return "met";
+        return g.lightingMet + g.lightingWithinNoise == g.lighting && g.rulesHeld == g.rules ? "warn" : "missed";
+    };
+    if (result && !data.geometry) {
+        const GoalCount goals = countGoals(scene, *result);
+        cls = classOf(goals);
+        return goals.sentence();
+    }
+    GoalCount g;
+    g.lighting = int(scene.samplers.size());
+    for (size_t k = 0; k < rows.size(); ++k) {
+        if (!rows[k]) continue;
+        const Reach reach = reachVerdict(scene.samplers[k], SamplerRange(), *rows[k]).reach;
+        g.lightingMet += reach == Reach::Met;
+        g.lightingWithinNoise += reach == Reach::WithinNoise;
+    }
+    if (!geometry) {
+        cls = classOf(g);
+        std::string sentence = g.sentence();
+        return sentence.substr(0, sentence.rfind(", "));  // no rules evaluated: the lighting goals only
+    }
+    for (const PenaltyTerm& t : geometry->terms)
+        if (!t.overlap()) {
+            ++g.rules;
+            g.rulesHeld += !geometry->rejected && t.penalty == 0;
+        }
+    ++g.rules;  // overlap, one rule
+    g.rulesHeld += !geometry->rejected && geometry->overlapPenalty == 0;
+    cls = classOf(g);
+    return g.sentence();
+}
+
+// One results row: a quantity, its value, its target and its verdict ("no target"
+// for a figure no goal is set on).
+void resultRow(std::ostringstream& out, const std::string& nameCell, const std::string& quantity, const std::string& value,
+               const std::string& target, const GoalStatus* status) {
+    out << "<tr>" << nameCell << cell(quantity) << "<td class=\"num\">" << value << "</td>" << cell(target);
+    if (status) out << "<td class=\"result " << status->cls << "\">" << status->words << "</td>";
+    else out << "<td class=\"result muted\">no target</td>";
+    out << "</tr>\n";
+}
+
+// Results first: the goals sentence, per task area (planar sampler) Em, Emin and U0
+// against their targets, the glare samplers (ugr, dgp, directional) and any other
+// sampler as rows of their own, and C, L and G each in a sentence.
+void resultsSection(std::ostringstream& out, const Scene& scene, const OptimizerResult* result, const ReportData& data) {
+    out << "<h2 id=\"results\">Results</h2>\n";
+    const std::vector<const SamplerResult*> rows = shownSamplers(scene, data.samplers, result);
+    const GeometryResult* geometry = data.geometry ? &*data.geometry : result ? &result->bestGeometry : nullptr;
+    const char* cls = "missed";
+    if (result && !result->feasible) {
+        out << "<p class=\"verdict missed\">No layout kept every design rule within its hard limit"
+            << (result->bestEvaluation.rejectedBy.empty() ? "" : " (" + escapeHtml(result->bestEvaluation.rejectedBy) + ")")
+            << ": the layout shown is the least violating one.</p>\n";
+    } else {
+        const std::string sentence = goalsSentence(scene, result, data, rows, geometry, cls);
+        out << "<p class=\"verdict " << cls << "\">" << escapeHtml(sentence)
+            << (geometry ? " (a rule at any penalty above 0 is not held)" : "") << ".</p>\n";
+    }
+    if (scene.samplers.empty()) out << "<p class=\"muted\">The scene has no light samplers: no lighting goals.</p>\n";
+
+    // Task areas: the planar samplers.
+    std::ostringstream areas, glare, other;
+    for (size_t k = 0; k < rows.size(); ++k) {
+        const LightSamplerSpec& s = scene.samplers[k];
+        const std::string type = s.type->name();
+        const std::string unit = unitAfter(s.type->unit());
+        const int digits = valueDigits(s);
+        std::ostringstream& table = type == "planar" ? areas : type == "ugr" || type == "dgp" || type == "directional" ? glare : other;
+        if (!rows[k]) {
+            table << "<tr>" << cell("<b>" + escapeHtml(s.name) + "</b>") << cell(quantityName(s))
+                  << "<td class=\"num\">&ndash;</td>" << cell(targetWords(s.targetMin, s.targetMax, digits, unit))
+                  << "<td class=\"result muted\">not measured</td></tr>\n";
+            continue;
+        }
+        const std::vector<LightingTerm> terms = lightingTerms(s, *rows[k]);
+        // The value against the sampler's target.
+        const GoalStatus valueStatus = clientStatus(terms.front());
+        std::string value = number(rows[k]->value, digits) + unit;
+        if (type == "ugr" && rows[k]->value < 10) value = "&lt;10";
+        if (type != "planar") {
+            resultRow(table, cell("<b>" + escapeHtml(s.name) + "</b>"), quantityName(s), value,
+                      targetWords(s.targetMin, s.targetMax, digits, unit), &valueStatus);
+            continue;
+        }
+        // A task area: Em, then Emin and U0 (and Emax where a goal is set on it), each
+        // against its statistics goal if it has one.
+        const PointStatistics st = pointStatistics(rows[k]->points, rows[k]->pointErrors);
+        auto goal = [&](Statistic statistic) -> const LightingTerm* {
+            for (size_t i = 1; i < terms.size(); ++i)
+                if (terms[i].statistic == statistic) return &terms[i];
+            return nullptr;
+        };
+        struct Figure {
+            std::string quantity, value, target;
+            std::optional<GoalStatus> status;
+        };
+        std::vector<Figure> figures;
+        figures.push_back({quantityName(s), value, targetWords(s.targetMin, s.targetMax, digits, unit), valueStatus});
+        const bool points = !rows[k]->points.empty();
+        for (Statistic statistic : {Statistic::Min, Statistic::U0, Statistic::Max}) {
+            const LightingTerm* t = goal(statistic);
+            if (!t && (!points || statistic == Statistic::Max)) continue;
+            const bool ratio = statistic == Statistic::U0;
+            const std::string u = ratio ? "" : unit;
+            const int d = ratio ? 2 : digits;
+            const double v = t ? t->value : st.of(statistic).value;
+            const char* name = statistic == Statistic::Min   ? "E<sub>min</sub>"
+                               : statistic == Statistic::U0 ? "U<sub>0</sub> = E<sub>min</sub> / E<sub>m</sub>"
+                                                            : "E<sub>max</sub>";
+            Figure f{name, number(v, d) + (std::isfinite(v) ? u : ""), t ? targetWords(t->targetMin, t->targetMax, d, u) : "&ndash;",
+                     std::nullopt};
+            if (t) f.status = clientStatus(*t);
+            figures.push_back(f);
+        }
+        for (size_t i = 0; i < figures.size(); ++i) {
+            const std::string nameCell =
+                i == 0 ? "<td rowspan=\"" + std::to_string(figures.size()) + "\"><b>" + escapeHtml(s.name) + "</b></td>" : "";
+            resultRow(table, nameCell, figures[i].quantity, figures[i].value, figures[i].target,
+                      figures[i].status ? &*figures[i].status : nullptr);
+        }
+    }
+    const char* head = "<table class=\"results\">\n<thead><tr><th>%s</th><th>quantity</th><th>value</th><th>target</th>"
+                       "<th>result</th></tr></thead>\n";
+    auto table = [&](const char* title, const char* first, const std::ostringstream& body) {
+        if (body.str().empty()) return;
+        char header[512];
+        std::snprintf(header, sizeof header, head, first);
+        out << "<h3>" << title << "</h3>\n" << header << body.str() << "</table>\n";
+    };
+    table("Task areas", "task area", areas);
+    table("Glare", "viewpoint", glare);
+    table("Other light samplers", "sampler", other);
+    if (!scene.samplers.empty())
+        out << "<p class=\"muted\"><b>pass</b>: inside its target. <b>at bound (within noise)</b>: outside its target by "
+               "less than the measurement's standard error, so as good as on the bound. <b>fail</b>: outside its target "
+               "by more than that. Illuminance in lx, luminance in cd/m&sup2;; E<sub>m</sub> is the mean over the task "
+               "area's grid of points, E<sub>min</sub> the lowest point.</p>\n";
+
+    // C, L and G, each in a sentence.
+    const double w = scene.objective.lightingWeight;
+    std::optional<double> c, l, g;
+    std::string rejectedBy;
+    if (result && !data.geometry) {
+        const Evaluation& e = result->bestEvaluation;
+        if (e.lightingEvaluated || scene.samplers.empty()) l = e.lighting;
+        if (!e.rejected) g = e.geometry;
+        rejectedBy = e.rejectedBy;
+    } else {
+        bool measured = !rows.empty();
+        std::vector<SamplerResult> values;
+        for (const SamplerResult* r : rows) {
+            measured = measured && r;
+            if (r) values.push_back(*r);
+        }
+        if (measured) l = lightingCostOfResults(scene, values);
+        if (scene.samplers.empty()) l = 0;
+        if (geometry && !geometry->rejected) g = geometry->cost;
+        if (geometry) rejectedBy = geometry->rejectedBy;
+    }
+    if (l && g) c = scene.objective.cost(*l, *g);
+    auto figure = [](const std::optional<double>& v) { return v ? number(*v, 4) : std::string("&ndash;"); };
+    out << "<h3>The objective</h3>\n<dl class=\"summary\">\n"
+        << "<dt>C = " << figure(c) << "</dt><dd>the objective, C = w&middot;L + (1 &minus; w)&middot;G with the lighting "
+        << "weight w = " << number(w, 2) << ": what the search makes as small as it can; 0 when every lighting goal is "
+        << "met and every design rule holds.</dd>\n"
+        << "<dt>L = " << figure(l) << "</dt><dd>the lighting penalty: 0 when every lighting goal is met, growing as "
+        << "values fall further outside their targets" << (l ? "" : " (not measured)") << ".</dd>\n"
+        << "<dt>G = " << figure(g) << "</dt><dd>the design-rule penalty: 0 when every design rule (distances, "
+        << "alignments, overlaps, footprints) holds"
+        << (g ? std::string("") : geometry ? ", none here: a hard limit is passed" + (rejectedBy.empty() ? std::string("") : " (" + escapeHtml(rejectedBy) + ")") : std::string(" (not evaluated)"))
+        << ".</dd>\n</dl>\n";
 }
 
 void samplerTable(std::ostringstream& out, const Scene& scene, const std::vector<SamplerResult>& measured,
@@ -483,13 +772,25 @@ std::string reportHtml(const std::filesystem::path& folder, const Scene& scene, 
     out << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
         << "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n<title>" << escapeHtml(title)
         << "</title>\n<style>" << kStyle << "</style>\n</head>\n<body>\n<h1>" << escapeHtml(title) << "</h1>\n";
-    summary(out, scene, data);
-    if (result) optimizerSummary(out, scene, *result);
+    out << "<p class=\"lead\">" << escapeHtml(scene.name)
+        << (data.layoutLabel.empty() ? "" : ", layout shown: " + escapeHtml(data.layoutLabel)) << ".</p>\n";
+    // For the client: the results, the pictures, the room in 3D (on screen), the
+    // daylight hour by hour, the scene and the files.
+    resultsSection(out, scene, result, data);
     pictures(out, folder);
-    if (std::string viewer = viewerSection(folder); !viewer.empty()) out << viewer;
-    else if (!data.viewerNote.empty()) out << "<h2>The room in 3D</h2>\n<p class=\"muted\">" << escapeHtml(data.viewerNote) << "</p>\n";
-    samplerTable(out, scene, data.samplers, result, data.budgets);
+    if (std::string viewer = viewerSection(folder); !viewer.empty())
+        out << "<div class=\"screen-only\">\n" << viewer << "</div>\n"
+            << "<p class=\"print-only muted\">The room in 3D: open report.html in a browser to turn it.</p>\n";
+    else if (!data.viewerNote.empty())
+        out << "<div class=\"screen-only\">\n<h2>The room in 3D</h2>\n<p class=\"muted\">" << escapeHtml(data.viewerNote)
+            << "</p>\n</div>\n";
     hourTable(out, scene, data.hours);
+    summary(out, scene, data);
+    // For the engineer: the search, the samplers' detail and light budgets, the rules'
+    // terms, the moves and the timings.
+    out << "<h1 class=\"appendix\" id=\"appendix\">Appendix: engineering detail</h1>\n";
+    if (result) optimizerSummary(out, scene, *result);
+    samplerTable(out, scene, data.samplers, result, data.budgets);
     if (data.geometry) constraintTables(out, scene, *data.geometry);
     else if (result) constraintTables(out, scene, result->bestGeometry);
     if (result) moveTable(out, *result);

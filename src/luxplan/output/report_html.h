@@ -1,7 +1,13 @@
-// report.html: one self-contained page (inline CSS; no network: its 3D view's scripts
-// are copied next to it, report_viewer.h) that shows a run's pictures, the room in 3D
-// and tables: samplers against their targets with their light budgets and why they
-// miss, constraints, overlap pairs, move statistics and timings.
+// report.html: one self-contained page (inline CSS, the pictures embedded as data:
+// URIs; no network: only its 3D view's scripts are files, copied next to it,
+// report_viewer.h) that a client can be shown. Results first: the goals sentence, per
+// task area (planar sampler) Em, Emin and U0, the glare samplers and the rest, each
+// against its target with pass / at bound (within noise) / fail, and C, L and G in a
+// sentence each; then the pictures, the room in 3D (on screen only), the daylight hour
+// by hour and the scene. An appendix holds the engineer's tables: the search, samplers
+// with their light budgets and why they miss, statistics and glare detail,
+// constraints, overlap pairs, move statistics and timings. A print stylesheet lays it
+// out on A4 (report.pdf, report_pdf.h).
 #pragma once
 
 #include <filesystem>
