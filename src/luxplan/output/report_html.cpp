@@ -288,10 +288,11 @@ std::string targetWords(double lo, double hi, int digits, const std::string& uni
     return "any";
 }
 
-// What a quantity is called in the results: by the sampler's type.
-std::string quantityName(const LightSamplerSpec& s) {
+// What a quantity is called in the results: by the sampler's type. A mean illuminance
+// is a maintained one (EN 12464-1) only where a maintenance factor below 1 made it so.
+std::string quantityName(const Scene& scene, const LightSamplerSpec& s) {
     const std::string type = s.type->name();
-    if (type == "planar") return "E<sub>m</sub> (maintained mean)";
+    if (type == "planar") return scene.maintenanceFactor < 1 ? "E<sub>m</sub> (maintained mean)" : "E<sub>m</sub> (mean)";
     if (type == "ugr") return "UGR (unified glare rating)";
     if (type == "dgp") return "DGP (daylight glare probability)";
     if (type == "directional") return "luminance in view (brightest part)";
@@ -382,7 +383,7 @@ void resultsSection(std::ostringstream& out, const Scene& scene, const Optimizer
         const int digits = valueDigits(s);
         std::ostringstream& table = type == "planar" ? areas : type == "ugr" || type == "dgp" || type == "directional" ? glare : other;
         if (!rows[k]) {
-            table << "<tr>" << cell("<b>" + escapeHtml(s.name) + "</b>") << cell(quantityName(s))
+            table << "<tr>" << cell("<b>" + escapeHtml(s.name) + "</b>") << cell(quantityName(scene, s))
                   << "<td class=\"num\">&ndash;</td>" << cell(targetWords(s.targetMin, s.targetMax, digits, unit))
                   << "<td class=\"result muted\">not measured</td></tr>\n";
             continue;
@@ -393,7 +394,7 @@ void resultsSection(std::ostringstream& out, const Scene& scene, const Optimizer
         std::string value = number(rows[k]->value, digits) + unit;
         if (type == "ugr" && rows[k]->value < 10) value = "&lt;10";
         if (type != "planar") {
-            resultRow(table, cell("<b>" + escapeHtml(s.name) + "</b>"), quantityName(s), value,
+            resultRow(table, cell("<b>" + escapeHtml(s.name) + "</b>"), quantityName(scene, s), value,
                       targetWords(s.targetMin, s.targetMax, digits, unit), &valueStatus);
             continue;
         }
@@ -410,7 +411,7 @@ void resultsSection(std::ostringstream& out, const Scene& scene, const Optimizer
             std::optional<GoalStatus> status;
         };
         std::vector<Figure> figures;
-        figures.push_back({quantityName(s), value, targetWords(s.targetMin, s.targetMax, digits, unit), valueStatus});
+        figures.push_back({quantityName(scene, s), value, targetWords(s.targetMin, s.targetMax, digits, unit), valueStatus});
         const bool points = !rows[k]->points.empty();
         for (Statistic statistic : {Statistic::Min, Statistic::U0, Statistic::Max}) {
             const LightingTerm* t = goal(statistic);
