@@ -114,6 +114,8 @@ TEST(DefaultAccuracy, MeasureRepeatsTheReportAtTheDefaultCount) {
         const double a = measured["samplers"][k]["value"].get<double>(), b = report["samplers"][k]["value"].get<double>();
         EXPECT_NEAR(a, b, 1e-9 * std::abs(b)) << k;
         EXPECT_EQ(measured["samplers"][k]["points"].size(), report["samplers"][k]["points"].size()) << k;
+        // Each point's standard error beside it.
+        EXPECT_EQ(measured["samplers"][k]["point_std_errors"].size(), measured["samplers"][k]["points"].size()) << k;
     }
     test::CliResult info = test::runCli("info " + scene.string());
     ASSERT_EQ(info.exitCode, 0) << info.output;
