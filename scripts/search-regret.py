@@ -56,7 +56,7 @@ def main():
         scene = json.load(f)
     settings = scene.get("optimizer", {})
     iterations = settings.get("iterations", 10000)
-    paths = settings.get("report_paths_per_point", max(1000, settings.get("paths_per_point", 1000)))
+    paths = settings.get("report_paths_per_point", max(32000, settings.get("paths_per_point", 1000)))  # measure's default
     out = args.out or tempfile.mkdtemp(prefix="regret-")
     long_runs = []
     for k in range(args.chains):

@@ -252,7 +252,8 @@ void runMeasure(const MeasureArgs& args) {
                                       {"std_error", r.standardError},
                                       {"target", {bound(s.targetMin), bound(s.targetMax)}},
                                       {"penalty", lightingPenalty(s, r.value)},
-                                      {"points", r.points}};
+                                      {"points", r.points},
+                                      {"point_std_errors", r.pointErrors}};
             sampler.update(nlohmann::json(samplerStatisticsJson(s, r)));
             // The points furniture covers (null in `points`), for every sampler with point statistics.
             if (s.type->hasPointStatistics()) sampler["covered"] = r.covered;

@@ -199,14 +199,19 @@ int runOptimize(const OptimizeArgs& args) {
     measure.lowDiscrepancy = args.sampling == "sobol";
     measure.choiceError = false;  // the search's stops do not read it; its report's measurements do
     std::unique_ptr<PathTracedLighting> lighting;
+    // The report's count for the result (measure's default: report.json and `measure
+    // --layout --seed` give one number); the selection's, far fewer, for the confirmations
+    // and the candidates' re-measures (issue 58). Neither below the search's.
     const int reportPaths = std::max(scene.optimizer.reportPathsPerPoint, measure.pathsPerPoint);
+    const int selectionPaths = std::max(scene.optimizer.selectionPathsPerPoint, measure.pathsPerPoint);
     if (!scene.samplers.empty()) {
         PathTracerOptions search, report;
         search.sunPatches = args.sunPatches == "on";
         report.sunPatches = args.sunPatches != "off";
         search.exteriorSun = report.exteriorSun = args.exteriorSun == "on";
         lighting = std::make_unique<PathTracedLighting>(scene, daylight ? &*daylight : nullptr, measure, search, report);
-        lighting->setReportPaths(reportPaths);  // confirmations, the final choice and the report
+        lighting->setReportPaths(reportPaths);        // the result's report and the suggestions'
+        lighting->setSelectionPaths(selectionPaths);  // confirmations and the candidates' re-measures
         lighting->setIncremental(!args.fullEvaluation);
         lighting->setCheckCache(args.checkCache);
         lighting->setFreshNoise(args.freshNoise);

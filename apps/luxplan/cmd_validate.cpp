@@ -98,7 +98,8 @@ void printSummary(const Scene& s, std::ostream& out) {
         << "; walls, static geometry and blockers at most " << 1e3 * s.overlap.wallTolerance << " l\n";
     out << "  objective: lighting weight " << s.objective.lightingWeight << "; optimizer: " << s.optimizer.iterations
         << " iterations, seed " << s.optimizer.seed << "; paths per point: " << s.optimizer.searchPathsPerPoint
-        << " in the search, " << s.optimizer.reportPathsPerPoint << " for the report and measure\n";
+        << " in the search, " << s.optimizer.selectionPathsPerPoint << " for its confirmations and re-measures, "
+        << s.optimizer.reportPathsPerPoint << " for the report and measure\n";
 }
 
 }  // namespace

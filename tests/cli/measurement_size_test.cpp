@@ -48,9 +48,9 @@ TEST(MeasurementSizeCli, OptimizeWarnsOfTheSearchsAndTheReportsMeasurements) {
                                     "per point = 2.62e+07 paths, more than 2e+07"),
               std::string::npos)
         << r.output;
-    // The report's paths: max(report_paths_per_point (1000), --paths).
-    EXPECT_NE(r.output.find(scene + ": warning: the report measures the final layout at 65536 points (1 sampler) x 1000 "
-                                    "paths per point = 6.55e+07 paths"),
+    // The report's paths: max(report_paths_per_point (32000 by default), --paths).
+    EXPECT_NE(r.output.find(scene + ": warning: the report measures the final layout at 65536 points (1 sampler) x 32000 "
+                                    "paths per point = 2.1e+09 paths"),
               std::string::npos)
         << r.output;
 }

@@ -80,21 +80,23 @@ TEST(Candidates, ALayoutWithinTheSeparationReplacesItsCandidateOnlyWhenBetter) {
 
 // The search's estimate is lucky at x = 9 (0.2, truly 0.9); everywhere else, and in
 // every independent measurement, L is 0.5 + 0.1 |x - 5|. Independent measurements
-// also record their seeds.
+// also record their seeds and uses.
 class LuckyLight : public LightingEvaluator {
 public:
     double evaluate(const Layout&, const std::vector<Transform>& world, LightingBreakdown*) override {
         const double x = world[0].t.x;
         return std::abs(x - 9) < 1e-9 ? 0.2 : truth(x);
     }
-    double measureIndependently(const Layout&, const std::vector<Transform>& world, LightingBreakdown*,
-                                uint64_t seed) override {
+    double measureIndependently(const Layout&, const std::vector<Transform>& world, LightingBreakdown*, uint64_t seed,
+                                IndependentUse use) override {
         seeds.push_back(seed);
+        uses.push_back(use);
         measuredAt.push_back(world[0].t.x);
         return truth(world[0].t.x);
     }
     static double truth(double x) { return 0.5 + 0.1 * std::abs(x - 5); }
     std::vector<uint64_t> seeds;
+    std::vector<IndependentUse> uses;
     std::vector<double> measuredAt;
 };
 
@@ -120,6 +122,10 @@ TEST(HonestResult, TheLuckyEstimateIsMeasuredAgainAndLosesToTheTrulyBest) {
     EXPECT_EQ(distinct.size(), 2u);
     EXPECT_EQ(distinct.count(o.seed), 0u);
     EXPECT_EQ(light.seeds.back(), r.reportSeed);
+    // The candidates at the selection's paths, the result once more at the report's
+    // (issue 58: the selection's count stays low, the report's is measure's default).
+    for (size_t i = 0; i + 1 < light.uses.size(); ++i) EXPECT_EQ(light.uses[i], IndependentUse::Selection) << i;
+    EXPECT_EQ(light.uses.back(), IndependentUse::Report);
     EXPECT_DOUBLE_EQ(light.measuredAt.back(), 5);
     for (const Candidate& c : r.candidates) {
         ASSERT_TRUE(c.independent);
@@ -134,7 +140,8 @@ public:
     double evaluate(const Layout&, const std::vector<Transform>& world, LightingBreakdown*) override {
         return world[0].t.x >= 1 ? 0.0 : 0.5;
     }
-    double measureIndependently(const Layout&, const std::vector<Transform>& world, LightingBreakdown*, uint64_t) override {
+    double measureIndependently(const Layout&, const std::vector<Transform>& world, LightingBreakdown*, uint64_t,
+                                IndependentUse) override {
         return std::abs(world[0].t.x - 6) < 1e-9 ? 0.0 : 0.3;
     }
 };

@@ -262,7 +262,8 @@ class OptimisticLight : public LightingEvaluator {
 public:
     explicit OptimisticLight(double truth) : truth_(truth) {}
     double evaluate(const Layout&, const std::vector<Transform>&, LightingBreakdown*) override { return 0; }
-    double measureIndependently(const Layout&, const std::vector<Transform>&, LightingBreakdown*, uint64_t) override {
+    double measureIndependently(const Layout&, const std::vector<Transform>&, LightingBreakdown*, uint64_t,
+                                IndependentUse) override {
         ++confirms;
         return truth_;
     }

@@ -231,6 +231,7 @@ inline void expectSameScene(const Scene& a, const Scene& b) {
     EXPECT_EQ(oa.pathsPerPoint, ob.pathsPerPoint);
     EXPECT_EQ(oa.searchPathsPerPoint, ob.searchPathsPerPoint);
     EXPECT_EQ(oa.reportPathsPerPoint, ob.reportPathsPerPoint);
+    EXPECT_EQ(oa.selectionPathsPerPoint, ob.selectionPathsPerPoint);
     EXPECT_EQ(oa.flat, ob.flat);
     EXPECT_EQ(oa.innerIterations, ob.innerIterations);
     EXPECT_EQ(oa.constantTemperature, ob.constantTemperature);

@@ -184,7 +184,12 @@ private:
         auto paths = o.integer("paths_per_point", Range::atLeast(1));
         s.pathsPerPoint = paths.value_or(1000);
         s.searchPathsPerPoint = paths.value_or(64);
-        s.reportPathsPerPoint = o.integer("report_paths_per_point", Range::atLeast(1)).value_or(std::max(1000, s.pathsPerPoint));
+        const auto report = o.integer("report_paths_per_point", Range::atLeast(1));
+        s.reportPathsPerPoint = report.value_or(std::max(kDefaultReportPaths, s.pathsPerPoint));
+        // A file that sets the report's count alone keeps its selection at that count
+        // (as before the two were apart), or at the default where that is fewer.
+        s.selectionPathsPerPoint = o.integer("selection_paths_per_point", Range::atLeast(1))
+                                       .value_or(std::min(s.reportPathsPerPoint, std::max(kDefaultSelectionPaths, s.pathsPerPoint)));
         s.innerIterations = o.integer("inner_iterations", Range::closed(0, 1000)).value_or(s.innerIterations);
         s.nested = o.boolean("nested").value_or(s.nested);
         s.polishShare = o.number("polish_share", s.polishShare, Range::closed(0, 0.9));

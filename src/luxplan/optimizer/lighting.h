@@ -18,6 +18,13 @@ struct LightingBreakdown {
     std::vector<SamplerResult> samplers;
 };
 
+// What an independent measurement (LightingEvaluator::measureIndependently) is for: it
+// sets the measurement's paths (optimizer.selection_paths_per_point, report_paths_per_point).
+enum class IndependentUse {
+    Selection,  // a zero cost's confirmation, a candidate's re-measure: dozens in a run
+    Report,     // the result's reported value (and each suggestion's): `measure` repeats it
+};
+
 class LightingEvaluator {
 public:
     virtual ~LightingEvaluator() = default;
@@ -27,16 +34,16 @@ public:
     // geometric term rejects, and only when the lighting weight is above 0 (and once
     // more for the final layout's report).
     virtual double evaluate(const Layout& layout, const std::vector<Transform>& world, LightingBreakdown* out) = 0;
-    // L(x) measured again from `seed` instead of the search's, at the report's accuracy:
-    // the optimizer draws these seeds apart from the search's (one confirms a zero cost
-    // and selects among the best candidates, another measures the one selected for the
-    // report), so that neither the search's nor the selection's luck reaches the
-    // reported value. Commits nothing: the next evaluate() measures against the last
-    // committed layout as before. Defaults to evaluate() (an exact evaluator has
-    // nothing to draw again).
+    // L(x) measured again from `seed` instead of the search's, at the accuracy `use`
+    // asks (the selection's or the report's): the optimizer draws these seeds apart from
+    // the search's (one confirms a zero cost and selects among the best candidates,
+    // another measures the one selected for the report), so that neither the search's
+    // nor the selection's luck reaches the reported value. Commits nothing: the next
+    // evaluate() measures against the last committed layout as before. Defaults to
+    // evaluate() (an exact evaluator has nothing to draw again).
     virtual double measureIndependently(const Layout& layout, const std::vector<Transform>& world, LightingBreakdown* out,
-                                        uint64_t seed) {
-        (void)seed;
+                                        uint64_t seed, IndependentUse use) {
+        (void)seed, (void)use;
         return evaluate(layout, world, out);
     }
     // Whether two evaluations of one layout draw independent noise. The path tracer's

@@ -659,7 +659,7 @@ OptimizerResult Optimizer::run(const ProgressCallback& progress, const std::atom
         const Evaluation bestSearch = bestEval_;
         Evaluation confirmed = bestEval_;
         confirmed.lighting = lighting_->measureIndependently(best_, worldTransforms(*scene_, best_), &confirmed.samplers,
-                                                             independentSeed(kSelectionStream));
+                                                             independentSeed(kSelectionStream), IndependentUse::Selection);
         confirmed.costError = costError(confirmed);
         confirmed.cost = scene_->objective.cost(confirmed.lighting, confirmed.geometry);
         // Kept among the candidates with its measurement, even past their capacity: the
@@ -801,10 +801,12 @@ void Optimizer::chooseResult(OptimizerResult& r) {
     const bool measured = lighting_ && !scene_->samplers.empty();
     if (!measured) return;
     const double w = scene_->objective.lightingWeight;
+    // The selection's stream at the selection's paths, the report's at the report's.
     auto measure = [&](const Layout& layout, Evaluation e, uint64_t stream) {
         ++independentMeasurements_;
-        e.lighting = lighting_->measureIndependently(layout, worldTransforms(*scene_, layout), &e.samplers,
-                                                     independentSeed(stream));
+        e.lighting = lighting_->measureIndependently(
+            layout, worldTransforms(*scene_, layout), &e.samplers, independentSeed(stream),
+            stream == kReportStream ? IndependentUse::Report : IndependentUse::Selection);
         e.lightingEvaluated = true;
         e.costError = costError(e);
         e.cost = scene_->objective.cost(e.lighting, e.geometry);
@@ -871,7 +873,7 @@ void Optimizer::chooseSuggestions(OptimizerResult& r) {
         if (measured) {
             ++independentMeasurements_;
             e.lighting = lighting_->measureIndependently(c.layout, worldTransforms(*scene_, c.layout), &e.samplers,
-                                                         independentSeed(kReportStream));
+                                                         independentSeed(kReportStream), IndependentUse::Report);
             e.lightingEvaluated = true;
             e.costError = costError(e);
             e.cost = scene_->objective.cost(e.lighting, e.geometry);

@@ -60,10 +60,11 @@ double PathTracedLighting::evaluate(const Layout& /*layout*/, const std::vector<
 }
 
 double PathTracedLighting::measureIndependently(const Layout& /*layout*/, const std::vector<Transform>& world,
-                                                LightingBreakdown* out, uint64_t seed) {
+                                                LightingBreakdown* out, uint64_t seed, IndependentUse use) {
     MeasureOptions independent = options_;
     independent.seed = seed;
-    if (reportPaths_ > 0) independent.pathsPerPoint = reportPaths_;
+    const int paths = use == IndependentUse::Report ? reportPaths_ : selectionPaths_;
+    if (paths > 0) independent.pathsPerPoint = paths;
     independent.adaptive = false;
     independent.choiceError = true;
     independent.lightFloors.clear();  // as `measure` traces

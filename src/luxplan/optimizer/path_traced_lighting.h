@@ -23,11 +23,13 @@ public:
     ~PathTracedLighting() noexcept override;  // tbb::task_group's may throw: waited for first
 
     double evaluate(const Layout& layout, const std::vector<Transform>& world, LightingBreakdown* out) override;
-    // A fixed number of paths per point (setReportPaths; by default the search's), from
-    // `seed`, without the path cache: `measure --seed S --paths N` gives the same.
+    // A fixed number of paths per point (setReportPaths or setSelectionPaths, by `use`;
+    // unset, the search's), from `seed`, without the path cache: `measure --seed S
+    // --paths N` gives the same.
     double measureIndependently(const Layout& layout, const std::vector<Transform>& world, LightingBreakdown* out,
-                                uint64_t seed) override;
+                                uint64_t seed, IndependentUse use) override;
     void setReportPaths(int pathsPerPoint) { reportPaths_ = pathsPerPoint; }
+    void setSelectionPaths(int pathsPerPoint) { selectionPaths_ = pathsPerPoint; }
     // The path cache takes in or drops the last evaluation's paths in the background:
     // the next evaluation waits for it only once its own layout is in the ray tracer,
     // whose rebuild runs on one thread, so that the two overlap.
@@ -73,7 +75,7 @@ private:
     PathTracer tracer_, reportTracer_;
     bool hasGlareSurveys_ = false;  // a ugr or dgp sampler: the search traces it with reportTracer_
     MeasureOptions options_;
-    int reportPaths_ = 0;  // 0: options_.pathsPerPoint
+    int reportPaths_ = 0, selectionPaths_ = 0;  // 0: options_.pathsPerPoint
     PathCache cache_;
     tbb::task_group cacheUpdate_;  // commit() or revert() under way
     bool cacheUpdating_ = false;
