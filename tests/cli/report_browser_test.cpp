@@ -15,18 +15,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Runs `command 2>&1` and returns its output.
-std::string shell(const std::string& command) {
-    std::string out;
-    FILE* pipe = popen((command + " 2>&1").c_str(), "r");
-    if (!pipe) return out;
-    char buffer[4096];
-    size_t n;
-    while ((n = fread(buffer, 1, sizeof buffer, pipe)) > 0) out.append(buffer, n);
-    pclose(pipe);
-    return out;
-}
-
 // Writes the report of the bundled scene `name` and opens it in headless Chromium;
 // returns the page's <body> tag once the 3D view has drawn, "" after a failure.
 std::string reportBodyInChromium(const std::string& name, test::TempDir& dir) {
@@ -43,10 +31,10 @@ std::string reportBodyInChromium(const std::string& name, test::TempDir& dir) {
             return "";
         }
 
-    const std::string dom = shell("chromium --headless=new --no-sandbox --use-angle=swiftshader --enable-unsafe-swiftshader "
+    const std::string dom = test::runShell("chromium --headless=new --no-sandbox --use-angle=swiftshader --enable-unsafe-swiftshader "
                                   "--user-data-dir=" + (dir.path() / "profile").string() +
                                   " --enable-logging=stderr --v=0 --virtual-time-budget=15000 --dump-dom file://" +
-                                  (out / "report.html").string());
+                                  (out / "report.html").string()).output;
     std::smatch body;
     if (!std::regex_search(dom, body, std::regex("<body[^>]*>"))) {
         ADD_FAILURE() << dom.substr(0, 2000);

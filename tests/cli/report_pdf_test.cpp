@@ -20,18 +20,6 @@ namespace fs = std::filesystem;
 
 namespace reportpdftest {
 
-// Runs `command 2>&1` and returns its output.
-std::string commandOutput(const std::string& command) {
-    std::string out;
-    FILE* pipe = popen((command + " 2>&1").c_str(), "r");
-    if (!pipe) return out;
-    char buffer[4096];
-    size_t n;
-    while ((n = fread(buffer, 1, sizeof buffer, pipe)) > 0) out.append(buffer, n);
-    pclose(pipe);
-    return out;
-}
-
 bool installed(const char* program) { return std::system((std::string("command -v ") + program + " > /dev/null").c_str()) == 0; }
 
 // A 6 x 4 m room, a ceiling panel and a desk whose task area is named "reading desk".
@@ -78,7 +66,7 @@ TEST(ReportPdf, ReportHtmlPrintedOnA4WithTheResultsFirst) {
     for (const auto& entry : fs::directory_iterator(out))
         EXPECT_EQ(entry.path().filename().string().find(".part-"), std::string::npos) << entry.path();
 
-    const std::string text = commandOutput("pdftotext -layout " + (out / "report.pdf").string() + " -");
+    const std::string text = test::runShell("pdftotext -layout " + (out / "report.pdf").string() + " -").output;
     EXPECT_NE(text.find("Results"), std::string::npos) << text;
     EXPECT_NE(text.find("Task areas"), std::string::npos) << text;
     EXPECT_NE(text.find("reading desk"), std::string::npos) << text;
@@ -88,7 +76,7 @@ TEST(ReportPdf, ReportHtmlPrintedOnA4WithTheResultsFirst) {
     EXPECT_LT(text.find("Results"), text.find("Appendix"));
     EXPECT_EQ(text.find("drag to turn"), std::string::npos) << "the 3D view's text in print";
 
-    const std::string info = commandOutput("pdfinfo " + (out / "report.pdf").string());
+    const std::string info = test::runShell("pdfinfo " + (out / "report.pdf").string()).output;
     std::smatch pages, size;
     ASSERT_TRUE(std::regex_search(info, pages, std::regex("Pages:\\s+([0-9]+)"))) << info;
     const int count = std::stoi(pages[1].str());

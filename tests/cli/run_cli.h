@@ -13,9 +13,9 @@ struct CliResult {
     std::string output;  // stdout and stderr together
 };
 
-// `luxplan ARGS` (the binary this build made), its exit code and output.
-inline CliResult runCli(const std::string& args) {
-    std::string command = std::string(LUXPLAN_CLI) + " " + args + " 2>&1";
+// `COMMAND 2>&1` in the shell, its exit code and output.
+inline CliResult runShell(const std::string& commandLine) {
+    std::string command = commandLine + " 2>&1";
     CliResult r;
     FILE* pipe = popen(command.c_str(), "r");
     if (!pipe) return r;
@@ -26,5 +26,8 @@ inline CliResult runCli(const std::string& args) {
     r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     return r;
 }
+
+// `luxplan ARGS` (the binary this build made), its exit code and output.
+inline CliResult runCli(const std::string& args) { return runShell(std::string(LUXPLAN_CLI) + " " + args); }
 
 }  // namespace luxplan::test

@@ -490,13 +490,7 @@ void resultsSection(std::ostringstream& out, const Scene& scene, const Optimizer
 void samplerTable(std::ostringstream& out, const Scene& scene, const std::vector<SamplerResult>& measured,
                   const OptimizerResult* result, const std::vector<SamplerBudget>& budgets) {
     if (scene.samplers.empty()) return;
-    // Each scene sampler's measurement, null when it was not measured.
-    std::vector<const SamplerResult*> rows(scene.samplers.size(), nullptr);
-    const std::vector<SamplerResult>* source = !measured.empty() ? &measured
-                                               : result && result->bestEvaluation.lightingEvaluated
-                                                   ? &result->bestEvaluation.samplers.samplers
-                                                   : nullptr;
-    for (size_t k = 0; source && k < rows.size() && k < source->size(); ++k) rows[k] = &(*source)[k];
+    const std::vector<const SamplerResult*> rows = shownSamplers(scene, measured, result);
     // Its terms: the value's first, then its statistics goals'.
     std::vector<std::vector<LightingTerm>> terms(rows.size());
     int met = 0, known = 0;
