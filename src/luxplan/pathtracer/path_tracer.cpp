@@ -2,41 +2,21 @@
 
 #include <algorithm>
 #include <atomic>
-#include <optional>
 
 #include <luxplan/core/warp.h>
-#include <luxplan/daylight/preetham.h>
-#include <luxplan/scene/room.h>
+#include <luxplan/pathtracer/light_strategies.h>
 
 namespace luxplan {
 namespace {
 
-constexpr double kRayEpsilon = 1e-4;  // metres; scenes are rooms, not microns
-
 const SkyLight::View kNoView;  // before a vertex has sampled the sky
 
-Vec3 offsetAlong(const Vec3& p, const Vec3& n, const Vec3& w) { return p + n * (dot(w, n) >= 0 ? kRayEpsilon : -kRayEpsilon); }
-
-// Where the path currently scatters: the sensor itself or a surface.
-struct Vertex {
-    Vec3 p;
-    Vec3 ng;  // geometric normal on the side the path arrived from (surfaces)
-    Frame shading;
-    Vec3 wo;  // local shading coordinates
-    const Bsdf* bsdf = nullptr;  // null at the sensor
-
-    bool isSurface() const { return bsdf != nullptr; }
-};
-
-// A surface vertex where the sunlit patches were sampled, as the MIS weights of the
-// paths it continues need it: the strategy skips the beams whose far end (SunPatches::
-// beamEnd) lies behind an opaque vertex's surface, without tracing them.
-struct PatchOrigin {
-    Vec3 p, ng;
-    bool translucent = false;
-    bool valid = false;  // the path arrived from a vertex where the patches were sampled
-    bool faces(const Vec3& beamEnd) const { return translucent || dot(ng, beamEnd - p) > 0; }
-};
+// The strategies, in the order they draw their numbers at a vertex.
+const EmitterStrategy kEmitterLight;
+const SunStrategy kSunLight;
+const SkyStrategy kSkyLight;
+const SunPatchStrategy kPatchLight;
+const LightStrategy* const kStrategies[] = {&kEmitterLight, &kSunLight, &kSkyLight, &kPatchLight};
 
 // `n` with its zero components +0. Touching parts (a lamp shade's four walls) have
 // coincident faces: the same plane with opposite normals. A ray that meets the plane
@@ -47,7 +27,8 @@ struct PatchOrigin {
 // traced afresh after a move has rebuilt the BVH (lightsamplers/path_cache.h).
 Vec3 positiveZeros(const Vec3& n) { return n + Vec3(0, 0, 0); }  // -0 + 0 = +0
 
-// The vertex at a surface hit, seen from direction wo (unit, away from the surface).
+}  // namespace
+
 Vertex surfaceVertex(const Hit& hit, const Bsdf& bsdf, const Vec3& wo) {
     Vertex v;
     v.p = hit.point;
@@ -60,67 +41,6 @@ Vertex surfaceVertex(const Hit& hit, const Bsdf& bsdf, const Vec3& wo) {
     return v;
 }
 
-// The power heuristic for the sun's light at a vertex y reached from a surface vertex
-// x, among three strategies for the same path x -> y -> sun: BSDF sampling at x then
-// the sun sampled at y (densities a * pSunAtY), the sunlit patch sampled from x (b *
-// pSun, the period's own density: the patch draws its sun from all the disks), BSDF
-// sampling at x then at y (a * pBsdf), with a the area density of x's BSDF sample at y
-// and b the patch's (sun_patches.h). pSunAtY is y's own sun density, which counts only
-// the disks the shell lets through from y (open_sun_disks.h). `own` is the numerator's
-// pair. The same for the sky's light at a surface outside the room, with the portal's
-// density as b and the sky's as both light densities.
-double sunWeight(double ownFirst, double ownSecond, double a, double b, double pSunAtY, double pSun, double pBsdf) {
-    const double own = ownFirst * ownSecond;
-    const double sum = (a * pSunAtY) * (a * pSunAtY) + (b * pSun) * (b * pSun) + (a * pBsdf) * (a * pBsdf);
-    return sum > 0 ? own * own / sum : 0;
-}
-
-// Whether the sun may light a visible static surface outside the room's box (a
-// millimetre of slack) on a side that an opening sees: for some triangle outside,
-// some corner of an opening the sky is sampled through and some sun disk on the
-// same side of its plane (either side for a translucent surface, the outer side for a
-// box). Without one the outside strategy finds nothing (the morning sun on the far
-// side of a facade).
-bool sunlitOutside(const Scene& scene, const DaylightEnvironment& daylight, const std::vector<Bsdf>& bsdfs) {
-    const RoomShell* room = scene.room();
-    if (!room) return false;
-    std::vector<Vec3> corners;
-    for (const Opening& o : room->openings) {
-        if (o.material && !bsdfs[*o.material].passesStraight()) continue;
-        const Rect3 r = openingQuad(room->box, o);
-        for (const Vec3& c : {r.corner, r.corner + r.edgeU, r.corner + r.edgeV, r.corner + r.edgeU + r.edgeV}) corners.push_back(c);
-    }
-    const Bounds3 box(room->box.lo - Vec3(1e-3, 1e-3, 1e-3), room->box.hi + Vec3(1e-3, 1e-3, 1e-3));
-    for (const StaticItem& item : scene.geometry) {
-        if (item.room || item.invisible) continue;
-        const TriangleMesh& mesh = item.mesh;
-        const bool closed = item.kind == StaticKind::Box;  // wound outwards: its inner side is never seen
-        for (size_t t = 0; t < mesh.triangles.size(); ++t) {
-            const auto& tri = mesh.triangles[t];
-            const Vec3 &a = mesh.positions[tri[0]], &b = mesh.positions[tri[1]], &c = mesh.positions[tri[2]];
-            if (box.contains(a) && box.contains(b) && box.contains(c)) continue;
-            const Vec3 n = cross(b - a, c - a);
-            bool seen[2] = {false, false}, lit[2] = {false, false};  // [front, back]
-            for (const Vec3& corner : corners) {
-                const double side = dot(n, corner - a);
-                if (side != 0) seen[side > 0 ? 0 : 1] = true;
-            }
-            const double rim = length(n) * std::sin(kSunHalfAngle);  // a disk's edge reaches past its centre
-            for (const SunDisk& disk : daylight.sunDisks()) {
-                const double side = dot(n, disk.direction);
-                lit[0] = lit[0] || side > -rim;
-                lit[1] = lit[1] || side < rim;
-            }
-            const bool translucent = bsdfs[mesh.materials[t]].hasDiffuseTransmission();
-            if (translucent ? (seen[0] || seen[1]) && (lit[0] || lit[1]) : (seen[0] && lit[0]) || (!closed && seen[1] && lit[1]))
-                return true;
-        }
-    }
-    return false;
-}
-
-}  // namespace
-
 PathTracer::PathTracer(const EmbreeScene& rt, const DaylightEnvironment* daylight, const PathTracerOptions& options)
     : rt_(rt), daylight_(daylight), options_(options), sky_(rt.scene(), daylight, options.portals),
       // Glass inside the room would bend no beam but would have to be crossed one hit
@@ -130,7 +50,7 @@ PathTracer::PathTracer(const EmbreeScene& rt, const DaylightEnvironment* dayligh
       panes_(rt.scene()) {
     for (const Material& m : rt.scene().materials) bsdfs_.push_back(makeBsdf(m));
     exteriorSun_ = options.exteriorSun && options.portals && daylight && daylight->hasSun() && daylight->hasSky() &&
-                   !rt.hasGlass() && sunlitOutside(rt.scene(), *daylight, bsdfs_);
+                   !rt.hasGlass() && SkyStrategy::sunlitOutside(rt.scene(), *daylight, bsdfs_);
     updateLayout();
 }
 
@@ -209,10 +129,211 @@ double PathTracer::transmittance(const Vec3& origin, const Vec3& w, double tMax,
     return 0;
 }
 
+
+double PathTracer::otherSunDensity(const Path& path, const Vec3& ws) const {
+    return path.outsideDensity + kPatchLight.pdf(path, ws, nullptr);
+}
+
+void PathTracer::connect(Path& path, const LightSample& s) const {
+    bool skyLater = s.skyLater;
+    if (!(s.pdf > 0) || (!skyLater && maxComponent(s.Le) <= 0)) return;
+    const Vertex& v = path.v;
+    const Vec3 f = path.evalCos(v, s.wi);
+    if (maxComponent(f) <= 0) return;
+    if (s.throughShell && patches_.shadedByShell(path.spawn(v, s.wi), s.wi)) return;
+    // The light samples' roulette (PathSamples::setLightFloor), at surface vertices: a
+    // sensor's own samples count in its cells, on another scale.
+    Vec3 Le = s.Le;
+    double survival = 1;
+    if (path.lightFloor > 0 && v.isSurface()) {
+        if (skyLater) Le = daylight_->Le(s.wi), skyLater = false;
+        const double c = luminance(path.throughput * f * Le) / s.pdf;
+        if (c < path.lightFloor) {
+            survival = c / path.lightFloor;
+            if (!(path.samples.rng().uniform() < survival)) return;
+        }
+    }
+    double T = transmittance(path.spawn(v, s.wi), s.wi, v.isSurface() ? s.maxT : s.maxT - kRayEpsilon, s.target, path.stats);
+    if (T <= 0) return;
+    T /= survival;
+    if (skyLater) Le = daylight_->Le(s.wi);
+    StrategyDensities d;
+    d.light = s.pdf, d.bsdf = path.pdfOf(v, s.wi);
+    // The sun's and the sky's light at a vertex a two-bounce strategy could reach.
+    if (s.source == LightBudget::kSun && path.arrivalDensity > 0) {
+        const double b = otherSunDensity(path, s.wi);
+        if (b > 0) d.arrival = path.arrivalDensity, d.twoBounce = b, d.twoBounceLight = s.pdf * path.sunOpen;
+    } else if (s.source == LightBudget::kSky && path.outsideDensity > 0) {
+        d.arrival = path.arrivalDensity, d.twoBounce = path.outsideDensity, d.twoBounceLight = s.pdf;
+    }
+    path.add(s.wi, path.throughput * f * Le * (T * misWeight(Strategy::Light, d) / s.pdf), s.source, path.depth);
+}
+
+void PathTracer::estimateDirect(Path& path) const {
+    const Vertex& v = path.v;
+    // The portals' view first: whether the sky's sample goes outside decides whether
+    // the sun strategy draws a sample for it.
+    path.view = nullptr;
+    if (sky_.active()) {
+        if (path.depth == 0) {
+            path.views[path.current] = &sky_.viewFromSensor(v.p);
+        } else {
+            sky_.view(v.p, path.scratch[path.current]);
+            path.views[path.current] = &path.scratch[path.current];
+        }
+        path.view = path.views[path.current];
+    }
+    // A sensor draws no light sample it cannot see (the estimate is unchanged).
+    path.skyHere = path.view && (v.isSurface() || sky_.seenBy(*path.view, path.sensor));
+    path.outside = path.skyHere && exteriorSun_ && path.view->active;
+    path.sunHere = v.isSurface() || path.sensorSeesSun;
+    path.sunAtZ = EnvironmentSample();
+    for (const LightStrategy* strategy : kStrategies) strategy->sample(path);
+}
+
+bool PathTracer::scatter(Path& path, Vec3& d) const {
+    const Vertex& v = path.v;
+    Vec3 weight;
+    double pdf = 0;
+    bool delta = false;
+    if (!v.isSurface()) {
+        // A delta sensor draws no random numbers for its one direction.
+        const Sensor& sensor = path.sensor;
+        SensorSample s = sensor.isDelta() ? sensor.sample({0, 0}) : sensor.sample(path.samples.get2D(PathSamples::Direction));
+        d = s.wi, weight = Vec3(s.weight, s.weight, s.weight), pdf = s.pdf, delta = s.delta;
+    } else {
+        const double uLobe = path.samples.get1D(PathSamples::Lobe);
+        auto s = v.bsdf->sample(v.wo, uLobe, path.samples.get2D(PathSamples::Direction));
+        if (!s) return false;
+        d = v.shading.toWorld(s->wi);
+        // Reflection must stay on the arrival side of the geometric surface and
+        // transmission cross it (as evalCos() requires of light samples).
+        if (s->isTransmission ? dot(d, v.ng) >= 0 : dot(d, v.ng) <= 0) return false;
+        weight = s->weight, pdf = s->pdf, delta = s->isDelta;
+    }
+    path.throughput = path.throughput * weight;
+    if (maxComponent(path.throughput) <= 0) return false;
+    if (path.depth == 0) path.firstWeight = maxComponent(path.throughput);
+    if (!delta) {
+        path.lastPdf = pdf;
+        path.lastSunOpen = path.sunOpen;
+        path.lastPoint = v.p;
+        path.lastAtSensor = !v.isSurface();
+        path.lastPatched = SunPatchStrategy::samplesAt(path);
+        if (path.lastPatched) path.lastOrigin = {v.p, v.ng, v.bsdf->hasDiffuseTransmission(), true};
+        path.lastOutside = exteriorSun_ && path.views[path.current]->active;
+        if (sky_.active()) path.current ^= 1;  // views[current ^ 1] is now the last non-delta vertex's
+    }
+    path.lastDelta = delta;
+
+    // Russian roulette: the path goes on with probability min(0.95, throughput / (level
+    // x the first vertex's)).
+    if (path.depth >= options_.rouletteDepth) {
+        double q = std::min(0.95, maxComponent(path.throughput) / (options_.rouletteLevel * path.firstWeight));
+        if (path.samples.get1D(PathSamples::Roulette) >= q) return false;
+        path.throughput = path.throughput * (1 / q);
+    }
+    return true;
+}
+
+void PathTracer::addEscaped(Path& path, const Vec3& d) const {
+    if (!daylight_) return;
+    // Depth 0 is the sensor's own ray, through panes and off mirrors.
+    const bool hidden = path.depth == 0 && path.sensor.hidesSources();
+    const Vec3 sky = daylight_->Le(d), sun = hidden ? Vec3() : daylight_->sunLe(d);
+    double wSky = 1;
+    if (!path.lastDelta) {
+        StrategyDensities s;
+        s.light = kSkyLight.pdf(path, d, nullptr), s.bsdf = path.lastPdf;
+        if (path.outsideDensity > 0) s.arrival = path.arrivalDensity, s.twoBounce = path.outsideDensity, s.twoBounceLight = s.light;
+        wSky = misWeight(Strategy::Bsdf, s);
+    }
+    double wSun = 1;
+    if (!path.lastDelta && maxComponent(sun) > 0) {
+        StrategyDensities s;
+        s.light = kSunLight.pdf(path, d, nullptr), s.bsdf = path.lastPdf;
+        const double b = path.arrivalDensity > 0 ? otherSunDensity(path, d) : 0;
+        if (b > 0) s.arrival = path.arrivalDensity, s.twoBounce = b, s.twoBounceLight = daylight_->sunPdf(d);
+        wSun = misWeight(Strategy::Bsdf, s);
+    }
+    path.L += path.throughput * (sky * wSky + sun * wSun);
+    if (path.stats.budget) {
+        path.stats.budget->credit(LightBudget::kSky, path.depth, luminance(path.throughput * sky * wSky));
+        path.stats.budget->credit(LightBudget::kSun, path.depth, luminance(path.throughput * sun * wSun));
+    }
+}
+
+void PathTracer::addEmitterHit(Path& path, const Hit& hit, const Vec3& d) const {
+    if (path.stats.footprint) path.stats.footprint->usedEmitterChoice = true;  // the MIS weight reads it
+    const double Le = path.depth == 0 && path.sensor.hidesSources() ? 0.0 : emitters_.emitted(size_t(hit.index), d);
+    if (!(Le > 0)) return;
+    double w = 1;
+    if (!path.lastDelta) {
+        StrategyDensities s;
+        s.light = kEmitterLight.pdf(path, d, &hit), s.bsdf = path.lastPdf;
+        w = misWeight(Strategy::Bsdf, s);
+    }
+    path.L += path.throughput * Vec3(Le, Le, Le) * w;
+    if (path.stats.budget) path.stats.budget->credit(hit.index, path.depth, luminance(path.throughput * Vec3(Le, Le, Le) * w));
+}
+
+bool PathTracer::follow(Path& path, Vec3 d, bool* hitEmitterFirst) const {
+    Vertex& v = path.v;
+    Vec3 o = path.spawn(v, d);
+    path.seeThrough = path.seeThrough || (v.isSurface() && v.bsdf->hasDiffuseTransmission());
+    for (int crossings = 0; crossings < 32; ++crossings) {
+        ++path.stats.closest;
+        auto hit = rt_.intersect({o, d, 0, kInf, kAllMask, path.seeThrough});
+        if (path.stats.footprint) path.stats.footprint->add(o, d, 0, hit ? hit->t : kInf);
+        if (!hit) {
+            addEscaped(path, d);
+            return false;
+        }
+        if (hit->kind == HitKind::Emitter) {
+            if (hitEmitterFirst && path.depth == 0 && crossings == 0) *hitEmitterFirst = true;
+            addEmitterHit(path, *hit, d);
+            return false;  // emitters absorb what reaches them
+        }
+        const Bsdf& bsdf = bsdfs_[hit->material];
+        if (bsdf.passesStraight()) {
+            // A thin pane: pass straight through (not a scattering event, so the MIS
+            // state of the last vertex stays) or reflect (a delta event).
+            const PaneResponse r = bsdf.glass().response(std::abs(dot(d, hit->geometricNormal)));
+            double scatter = r.reflectance + r.transmittance;
+            if (scatter <= 0) return false;
+            path.throughput = path.throughput * scatter;
+            if (path.samples.rng().uniform() * scatter < r.transmittance) {
+                o = offsetAlong(hit->point, hit->geometricNormal, d);
+            } else {
+                d = reflect(-d, hit->geometricNormal);
+                o = offsetAlong(hit->point, hit->geometricNormal, d);
+                path.lastDelta = true;
+            }
+            path.seeThrough = true;
+            continue;
+        }
+        // A scattering surface: the next vertex. Surfaces are two-sided.
+        v = surfaceVertex(*hit, bsdf, -d);
+        path.arrivalDensity = path.outsideDensity = 0;
+        path.arrivalFrom.valid = false;
+        if (!path.lastDelta && (path.lastPatched || path.lastOutside)) {
+            const Vec3 e = v.p - path.lastPoint;
+            const double d2 = dot(e, e);
+            if (d2 > 0) {
+                const double toArea = std::abs(dot(v.ng, d)) / d2;
+                path.arrivalDensity = path.lastPdf * toArea;
+                if (path.lastPatched) path.arrivalFrom = path.lastOrigin;
+                if (path.lastOutside && !sky_.inRoom(v.p)) path.outsideDensity = kSkyLight.pdf(path, d, nullptr) * toArea;
+            }
+        }
+        return true;
+    }
+    return false;
+}
+
 double PathTracer::sample(const Sensor& sensor, PathSamples& samples, RayStats& stats, bool* hitEmitterFirst,
                           SensorLight* sensorLight) const {
     if (sensorLight) sensorLight->count = 0;
-    const double lightFloor = samples.lightFloor();
     const Vec3 origin = sensor.position();
     if (Vec3 exit; sealedAt(origin, &exit)) {
         // Its value depends on the box around it and on the luminaires (one might move
@@ -224,496 +345,29 @@ double PathTracer::sample(const Sensor& sensor, PathSamples& samples, RayStats& 
         }
         return 0;
     }
-    Vec3 L, throughput(1, 1, 1);
-    Vertex v;
-    v.p = origin;
-
-    // f * |cos| and the sampling pdf of the current vertex for a world direction.
-    auto evalCos = [&](const Vertex& x, const Vec3& wi) -> Vec3 {
-        if (!x.isSurface()) {
-            double r = sensor.response(wi);
-            return Vec3(r, r, r);
-        }
-        // Light must arrive on the side the path is on (no leaks through surfaces), or
-        // from the other side of a translucent one; on the same side of the geometric
-        // and the shading normal (wo is on the upper side of both).
-        const double side = dot(wi, x.ng);
-        if (side == 0 || (side < 0 && !x.bsdf->hasDiffuseTransmission())) return Vec3();
-        Vec3 local = x.shading.toLocal(wi);
-        if ((side > 0) != (local.z > 0)) return Vec3();
-        return x.bsdf->eval(x.wo, local) * std::abs(local.z);
-    };
-    auto pdfOf = [&](const Vertex& x, const Vec3& wi) -> double {
-        if (!x.isSurface()) return sensor.pdf(wi);
-        return x.bsdf->pdf(x.wo, x.shading.toLocal(wi));
-    };
-    // Rays leave a surface offset along its normal, and a sensor 0.1 mm along the ray,
-    // so that a sampler point lying on a surface (a micron off it, after the transforms
-    // of a rotated entity) sees past that surface.
-    auto spawn = [&](const Vertex& x, const Vec3& wi) {
-        return x.isSurface() ? offsetAlong(x.p, x.ng, wi) : x.p + wi * kRayEpsilon;
-    };
-
-    // A light sample the sensor cannot see adds nothing: none is drawn (a glare
-    // frustum facing away from the sun and the windows).
-    const bool sensorSeesSun = daylight_ && daylight_->hasSun() && sensor.maySee(daylight_->sunConeAxis(), daylight_->sunConeCos());
-    bool sensorSeesEmitters = false;
-    for (size_t i = 0; i < emitters_.size() && !sensorSeesEmitters; ++i) {
+    thread_local SkyLight::View scratch[2];
+    Path path(*this, sensor, samples, stats, sensorLight);
+    path.v.p = path.lastPoint = origin;
+    path.views[0] = path.views[1] = &kNoView;
+    path.scratch = scratch;
+    path.sensorSeesSun = daylight_ && daylight_->hasSun() && sensor.maySee(daylight_->sunConeAxis(), daylight_->sunConeCos());
+    for (size_t i = 0; i < emitters_.size() && !path.sensorSeesEmitters; ++i) {
         // The cone round the sphere that holds the luminaire (all of it, from within).
         const Vec3 toCentre = emitters_[i].center - origin;
         const double distance = length(toCentre), reach = emitters_[i].reach;
-        sensorSeesEmitters = !(distance > reach) ||
-                             sensor.maySee(toCentre / distance, std::sqrt(1 - (reach / distance) * (reach / distance)));
+        path.sensorSeesEmitters = !(distance > reach) ||
+                                  sensor.maySee(toCentre / distance, std::sqrt(1 - (reach / distance) * (reach / distance)));
     }
-    bool lastDelta = false;
-    double lastPdf = 0;
-    // The share of the sun's disks open from this vertex and the last non-delta one
-    // (OpenSunDisks; 1 where no sun sample was asked for: no sun light can come there).
-    double sunOpen = 1, lastSunOpen = 1;
-    Vec3 lastPoint = origin;
-    bool lastAtSensor = true;  // lastPoint is the sensor's (its emitter view applies)
-    const bool sky = sky_.active();
-    // This vertex's view of the sky's portals and the last non-delta vertex's. A View
-    // is large (16 spherical rectangles): a path neither zeroes nor copies one. The
-    // sensor's is its thread's cached view, a surface's is set up in this thread's scratch.
-    thread_local SkyLight::View scratch[2];
-    const SkyLight::View* views[2] = {&kNoView, &kNoView};
-    int current = 0;
-    double firstWeight = 0;
-    // The area density at the current vertex of the BSDF sample that reached it from a
-    // surface vertex where the sunlit patches were sampled (0 otherwise): the patch
-    // strategy could have made the same path, and the sun's MIS weights count it.
-    double arrivalDensity = 0;
-    PatchOrigin arrivalFrom, lastOrigin;
-    bool lastPatched = false;
-    // The patch strategy's area density at patch point y (normal ng) for sun direction
-    // ws, had it been sampled from `from`.
-    auto patchDensity = [&](const PatchOrigin& from, const Vec3& y, const Vec3& ng, const Vec3& ws) {
-        return from.faces(patches_.beamEnd(y, -ws)) ? patches_.density(y, ng, ws) : 0.0;
-    };
-    // The same for the sunlit surfaces outside: at a vertex outside the room reached
-    // through an opening, the area density with which the last vertex's portal sample
-    // could have reached it (0 otherwise; never non-zero where a patch's is, which
-    // lies in the room). lastOutside: the last non-delta vertex took that strategy.
-    double outsideDensity = 0;
-    bool lastOutside = false;
-    // The density at this vertex of the other way to its sun light, a sunlit patch or a
-    // surface outside (0: BSDF sampling and the sun's own sampling only).
-    auto otherSunDensity = [&](const Vec3& ws) {
-        return outsideDensity + (arrivalFrom.valid ? patchDensity(arrivalFrom, v.p, v.ng, ws) : 0.0);
-    };
-
-    // The sunlit patches (sun_patches.h): one patch point y per path, drawn at the first
-    // surface vertex (a sun direction, a point of an opening, the sunbeam through it to
-    // y) and connected to every later surface vertex that faces the beam, each
-    // connection weighed against the two BSDF ways to the same path (sunWeight). Every
-    // vertex's estimate is unbiased on its own, since y is drawn independently of the
-    // path; drawing it once costs the beam and y's view of the sun once per path.
-    struct PatchLight {
-        bool drawn = false, traced = false, lit = false;
-        EnvironmentSample sun;
-        Vec3 entry, beamEnd;
-        std::optional<Hit> hit;
-        double density = 0, toSun = -1;  // toSun < 0: not asked yet
-        double openAtY = 0;  // the open disks' share at y (OpenSunDisks), once asked
-    } patch;
-    int depth = 0;
-    auto patchesHere = [&]() { return patches_.active() && v.isSurface(); };
-    auto addSunPatch = [&]() {
-        if (!patch.drawn) {
-            patch.drawn = true;
-            const double uDisk = samples.get1D(PathSamples::PatchSunDisk);
-            patch.sun = daylight_->sampleSun(uDisk, samples.get2D(PathSamples::PatchSunPoint));
-            const Vec2 uEntry = samples.get2D(PathSamples::PatchEntry);
-            patch.lit = patch.sun.pdf > 0 && patches_.sampleEntry(patch.sun.wi, uEntry, patch.entry);
-            if (patch.lit) patch.beamEnd = patches_.beamEnd(patch.entry, -patch.sun.wi);
-        }
-        if (!patch.lit) return;
-        const PatchOrigin here{v.p, v.ng, v.bsdf->hasDiffuseTransmission()};
-        if (!here.faces(patch.beamEnd)) return;
-        const Vec3 ws = patch.sun.wi;
-        if (!patch.traced) {
-            patch.traced = true;
-            ++stats.closest;
-            patch.hit = rt_.intersect({patch.entry, -ws, 0, kInf, kOpaqueMask | kEmitterMask});
-            if (stats.footprint) stats.footprint->add(patch.entry, -ws, 0, patch.hit ? patch.hit->t : kInf);
-            const Hit* h = patch.hit ? &*patch.hit : nullptr;
-            patch.lit = h && h->kind != HitKind::Emitter && patches_.inRoom(h->point);
-            // Zero when the beam grazed an opening's edge.
-            if (patch.lit) patch.density = patches_.density(h->point, h->geometricNormal, ws);
-            patch.lit = patch.density > 0;
-            if (!patch.lit) return;
-        }
-        const Hit& h = *patch.hit;
-        const Vec3 toPatch = h.point - v.p;
-        const double d2 = dot(toPatch, toPatch);
-        if (!(d2 > 0)) return;
-        const double dist = std::sqrt(d2);
-        const Vec3 wi = toPatch / dist;
-        const Vec3 fx = evalCos(v, wi);
-        if (maxComponent(fx) <= 0) return;
-        const Vertex y = surfaceVertex(h, bsdfs_[h.material], -wi);
-        const Vec3 fy = evalCos(y, ws);
-        if (maxComponent(fy) <= 0) return;
-        const double b = patch.density, pSun = patch.sun.pdf;
-        const double cosY = std::abs(dot(y.ng, wi));
-        // y's own sun sample would count only the disks the shell lets through from y
-        // (from its shadow ray's origin, offset towards the sun: the same whichever side
-        // of y's surface the path comes from).
-        if (!(patch.openAtY > 0)) patch.openAtY = sunDisks_.at(y.p, &y.ng, kRayEpsilon).share;
-        const double w = sunWeight(b, pSun, pdfOf(v, wi) * cosY / d2, b, pSun / patch.openAtY, pSun, pdfOf(y, ws));
-        if (!(w > 0)) return;
-        if (patch.toSun < 0) {
-            patch.toSun = transmittance(spawn(y, ws), ws, kInf, -1, stats);
-            patch.lit = patch.toSun > 0;
-            if (!patch.lit) return;
-        }
-        // Between the two surfaces, each end offset from its own: a ray from x's offset
-        // point to y itself would meet y's surface first when x is near it.
-        const Vec3 from = spawn(v, wi), to = spawn(y, -wi);
-        const Vec3 span = to - from;
-        const double gap = std::sqrt(dot(span, span));
-        if (!(gap > 0) || dot(span, wi) <= 0) return;
-        const double connection = transmittance(from, span / gap, gap, -1, stats);
-        if (connection <= 0) return;
-        const Vec3 contribution = throughput * fx * fy * patch.sun.Le * (cosY / d2 * connection * patch.toSun * w / (pSun * b));
-        if (stats.budget) stats.budget->credit(LightBudget::kSun, depth, luminance(contribution));
-        L += contribution;
-    };
-
-    // Once through a see-through surface, a path may run inside parts whose faces
-    // coincide with another material's (a glass top resting on a wooden leg, and so
-    // into the leg): its rays' ties then go by a fixed order, so that it is the same
-    // path after any move (EmbreeScene::intersect; a second query per ray, which paths
-    // that never meet glass or a translucent surface do not pay).
-    bool seeThrough = false;
-    for (; depth < options_.maxDepth; ++depth) {
-        samples.setDepth(depth);
-        bool deltaVertex = v.isSurface() ? v.bsdf->isDelta() : sensor.isDelta();
-
-        // ---- next-event estimation (skipped at delta vertices) ----
-        sunOpen = 1;
-        if (!deltaVertex) {
-            // `throughShell`: the direction must leave through an opening (the sun's: a
-            // direction that leaves the box through an opaque wall is blocked whatever the
-            // layout), tested once the surface is known to face it.
-            // `skyLater`: a sky sample whose radiance, positive wherever it points
-            // (DaylightEnvironment::radiancePositive), is looked up only once the shadow
-            // ray has found the way open (most are blocked, by furniture).
-            auto addLight = [&](const Vec3& wi, const Vec3& sampledLe, double lightPdf, double maxT, int target, int source,
-                                bool throughShell = false, bool skyLater = false) {
-                if (!(lightPdf > 0) || (!skyLater && maxComponent(sampledLe) <= 0)) return;
-                Vec3 f = evalCos(v, wi);
-                if (maxComponent(f) <= 0) return;
-                if (throughShell && patches_.shadedByShell(spawn(v, wi), wi)) return;
-                // The light samples' roulette (PathSamples::setLightFloor), at surface
-                // vertices: a sensor's own samples count in its cells, on another scale.
-                Vec3 Le = sampledLe;
-                double survival = 1;
-                if (lightFloor > 0 && v.isSurface()) {
-                    if (skyLater) Le = daylight_->Le(wi), skyLater = false;
-                    const double c = luminance(throughput * f * Le) / lightPdf;
-                    if (c < lightFloor) {
-                        survival = c / lightFloor;
-                        if (!(samples.rng().uniform() < survival)) return;
-                    }
-                }
-                double T = transmittance(spawn(v, wi), wi, v.isSurface() ? maxT : maxT - kRayEpsilon, target, stats);
-                if (T <= 0) return;
-                T /= survival;
-                if (skyLater) Le = daylight_->Le(wi);
-                const double bsdfPdf = pdfOf(v, wi);
-                double w = powerHeuristic(1, lightPdf, 1, bsdfPdf);
-                if (source == LightBudget::kSun && arrivalDensity > 0) {
-                    const double b = otherSunDensity(wi);
-                    if (b > 0) w = sunWeight(arrivalDensity, lightPdf, arrivalDensity, b, lightPdf, lightPdf * sunOpen, bsdfPdf);
-                } else if (source == LightBudget::kSky && outsideDensity > 0) {
-                    w = sunWeight(arrivalDensity, lightPdf, arrivalDensity, outsideDensity, lightPdf, lightPdf, bsdfPdf);
-                }
-                Vec3 contribution = throughput * f * Le * (T * w / lightPdf);
-                if (stats.budget) stats.budget->credit(source, depth, luminance(contribution));
-                if (depth == 0 && sensorLight) {
-                    sensorLight->wi[sensorLight->count] = wi;
-                    sensorLight->value[sensorLight->count++] = luminance(contribution);
-                } else {
-                    L += contribution;
-                }
-            };
-            // The sky's portal sample, followed to what it meets (exteriorSun_): open sky,
-            // as addLight would take it, or a surface z outside the room, whose light
-            // from the sun and the sky it takes (samples drawn independently of the
-            // portal's). A path here -> z -> light BSDF sampling here also makes, then
-            // the light's sampling or BSDF sampling at z: the power heuristic over the three.
-            auto addSkyOrOutside = [&](const EnvironmentSample& s, const EnvironmentSample& sunAtZ) {
-                if (!(s.pdf > 0)) return;
-                const Vec3 f = evalCos(v, s.wi);
-                if (maxComponent(f) <= 0) return;
-                const Vec3 from = spawn(v, s.wi);
-                const unsigned blockers = kOpaqueMask | kEmitterMask;
-                // Most of these samples are blocked inside the room (by furniture), where
-                // what blocks them does not matter: an any-hit query up to the room's
-                // walls says so, and a move across that part of the ray changes the path
-                // only if it changes that answer (the path cache asks it again).
-                const double inside = sky_.inRoomUntil(from, s.wi);
-                ++stats.shadow;
-                const bool blocked = rt_.occluded({from, s.wi, 0, inside, blockers});
-                if (stats.footprint) stats.footprint->addOcclusion(from, s.wi, 0, inside, blockers, blocked);
-                if (blocked) return;
-                ++stats.closest;
-                const std::optional<Hit> z = rt_.intersect({from, s.wi, inside, kInf, blockers, seeThrough});
-                if (stats.footprint) {
-                    if (z) stats.footprint->add(from, s.wi, inside, z->t);
-                    else stats.footprint->addOcclusion(from, s.wi, inside, kInf, blockers, false);
-                }
-                Vec3 contribution;
-                int creditDepth = depth;
-                if (!z) {
-                    if (maxComponent(s.Le) <= 0) return;
-                    const double T = panes_.transmittance(from, s.wi, kInf);
-                    if (T <= 0) return;
-                    contribution = throughput * f * s.Le * (T * powerHeuristic(1, s.pdf, 1, pdfOf(v, s.wi)) / s.pdf);
-                } else {
-                    if (z->kind == HitKind::Emitter || sky_.inRoom(z->point)) return;
-                    const double T = panes_.transmittance(from, s.wi, z->t);
-                    if (T <= 0) return;
-                    const Vertex outside = surfaceVertex(*z, bsdfs_[z->material], -s.wi);
-                    const double a = pdfOf(v, s.wi);
-                    // Light arriving at z from direction wl (sampled with density pl),
-                    // weighed against the two BSDF ways to the same path.
-                    auto lightAtZ = [&](const Vec3& wl, const Vec3& Le, double pl) {
-                        if (!(pl > 0) || maxComponent(Le) <= 0) return;
-                        const Vec3 fz = evalCos(outside, wl);
-                        if (maxComponent(fz) <= 0) return;
-                        const double V = transmittance(spawn(outside, wl), wl, kInf, -1, stats);
-                        if (V <= 0) return;
-                        // z lies outside the room: every disk is open from it.
-                        const double w = sunWeight(s.pdf, pl, a, s.pdf, pl, pl, pdfOf(outside, wl));
-                        contribution += throughput * f * fz * Le * (T * V * w / (s.pdf * pl));
-                    };
-                    // The sun (this vertex's sun sample), then the sky and the ground, which
-                    // light a facade too (a sample of the map, as a vertex outside samples
-                    // it, from the path's own stream).
-                    lightAtZ(sunAtZ.wi, sunAtZ.Le, sunAtZ.pdf);
-                    const double u0 = samples.rng().uniform();
-                    const EnvironmentSample skyAtZ = daylight_->sampleSky({u0, samples.rng().uniform()});
-                    lightAtZ(skyAtZ.wi, skyAtZ.Le, skyAtZ.pdf);
-                    if (maxComponent(contribution) <= 0) return;
-                    creditDepth = depth + 1;  // reflected off z, not direct
-                }
-                if (stats.budget) stats.budget->credit(LightBudget::kSky, creditDepth, luminance(contribution));
-                if (depth == 0 && sensorLight) {
-                    sensorLight->wi[sensorLight->count] = s.wi;
-                    sensorLight->value[sensorLight->count++] = luminance(contribution);
-                } else {
-                    L += contribution;
-                }
-            };
-            if (!emitters_.empty()) {
-                // The choice reads every luminaire, and so does a sensor's test of them:
-                // a moved one changes the path either way.
-                if (stats.footprint) stats.footprint->usedEmitterChoice = true;
-                if (v.isSurface() || sensorSeesEmitters) {
-                    const double uChoice = samples.get1D(PathSamples::EmitterChoice);
-                    const Vec2 uPoint = samples.get2D(PathSamples::EmitterPoint);
-                    // Every path of a sampler point starts at it: its thread's view of the
-                    // luminaires from there (the same numbers, set up once).
-                    EmitterSample s = v.isSurface() ? emitters_.sample(v.p, uChoice, uPoint)
-                                                    : emitters_.sample(emitters_.viewFrom(v.p), uChoice, uPoint);
-                    if (s.pdf > 0 && s.Lv > 0) addLight(s.wi, Vec3(s.Lv, s.Lv, s.Lv), s.pdf, s.distance, s.emitter, s.emitter);
-                }
-            }
-            // The portals' view first: whether the sky's sample goes outside decides
-            // whether it needs this vertex's sun sample.
-            const SkyLight::View* view = nullptr;
-            if (sky) {
-                if (depth == 0) {
-                    views[current] = &sky_.viewFromSensor(v.p);
-                } else {
-                    sky_.view(v.p, scratch[current]);
-                    views[current] = &scratch[current];
-                }
-                view = views[current];
-            }
-            // A sensor draws no light sample it cannot see (the estimate is unchanged).
-            const bool skyHere = sky && (v.isSurface() || sky_.seenBy(*view, sensor));
-            const bool outside = skyHere && exteriorSun_ && view->active;  // the sky's sample lights z with the sun's
-            const bool sunHere = v.isSurface() || sensorSeesSun;
-            EnvironmentSample sun, sunAtZ;
-            if (daylight_ && daylight_->hasSun() && (sunHere || outside)) {
-                const double uDisk = samples.get1D(PathSamples::SunDisk);
-                const Vec2 uPoint = samples.get2D(PathSamples::SunPoint);
-                // The exterior strategy lights the surface outside with the period's own
-                // choice of disk (every disk is open from out there).
-                if (outside) sunAtZ = daylight_->sampleSun(uDisk, uPoint);
-                // A surface that only reflects, with every sun direction behind it, would
-                // find the sample unlit (evalCos): its numbers are drawn all the same, so
-                // that every later one stays, but the direction is not.
-                const bool behind = v.isSurface() && !v.bsdf->hasDiffuseTransmission() && daylight_->sunBehind(v.ng);
-                if (sunHere && !behind) {
-                    // The disk among those the shell may let through from the shadow ray's
-                    // origin (OpenSunDisks), and its density over their share. At a
-                    // surface whose plane the disk's cone does not cross, that origin is
-                    // spawn()'s, the same for every direction of the disk (a point of the
-                    // floor or a wall: on the shell itself, its origin is just inside);
-                    // else within kRayEpsilon.
-                    const OpenSunDisks::Open open = sunDisks_.at(v.p, v.isSurface() ? &v.ng : nullptr, kRayEpsilon);
-                    sunOpen = open.share;
-                    const size_t disk = sunDisks_.active() ? sunDisks_.choose(open, uDisk) : daylight_->sunDiskOf(uDisk);
-                    bool walled = disk == OpenSunDisks::kNone;
-                    if (!walled && (!sunDisks_.active() || sunDisks_.grouped(disk))) {
-                        // Its own cone untested: where the shell blocks it whole, no
-                        // direction is made (the sample would find no opening:
-                        // addLight's shadedByShell).
-                        const Vec3& axis = daylight_->sunDisks()[disk].direction;
-                        const double halfAngle = kSunHalfAngle * (1 + 1e-6) + 1e-9;
-                        Vec3 from = v.p;
-                        double within = kRayEpsilon;
-                        if (v.isSurface() && std::abs(dot(axis, v.ng)) > halfAngle) from = offsetAlong(v.p, v.ng, axis), within = 0;
-                        walled = patches_.shadesCone(from, within, axis, halfAngle);
-                    }
-                    if (!walled) {
-                        sun = daylight_->sampleSunDisk(disk, uPoint);
-                        sun.pdf /= open.share;
-                    }
-                    addLight(sun.wi, sun.Le, sun.pdf, kInf, -1, LightBudget::kSun, true);
-                }
-            }
-            if (skyHere) {
-                const bool later = !outside && view->active && daylight_->radiancePositive();
-                EnvironmentSample s = sky_.sample(*view, v.p, samples.get2D(PathSamples::SkyPoint), !later);
-                if (outside) addSkyOrOutside(s, sunAtZ);
-                else addLight(s.wi, s.Le, s.pdf, kInf, -1, LightBudget::kSky, false, later);
-            }
-            if (patchesHere()) addSunPatch();
-        }
-
-        // ---- choose the next direction ----
-        Vec3 d, weight;
-        double pdf = 0;
-        bool delta = false;
-        if (!v.isSurface()) {
-            // A delta sensor draws no random numbers for its one direction.
-            SensorSample s = sensor.isDelta() ? sensor.sample({0, 0}) : sensor.sample(samples.get2D(PathSamples::Direction));
-            d = s.wi, weight = Vec3(s.weight, s.weight, s.weight), pdf = s.pdf, delta = s.delta;
-        } else {
-            const double uLobe = samples.get1D(PathSamples::Lobe);
-            auto s = v.bsdf->sample(v.wo, uLobe, samples.get2D(PathSamples::Direction));
-            if (!s) break;
-            d = v.shading.toWorld(s->wi);
-            // Reflection must stay on the arrival side of the geometric surface and
-            // transmission cross it (as evalCos() requires of light samples).
-            if (s->isTransmission ? dot(d, v.ng) >= 0 : dot(d, v.ng) <= 0) break;
-            weight = s->weight, pdf = s->pdf, delta = s->isDelta;
-        }
-        throughput = throughput * weight;
-        if (maxComponent(throughput) <= 0) break;
-        if (depth == 0) firstWeight = maxComponent(throughput);
-        if (!delta) {
-            lastPdf = pdf;
-            lastSunOpen = sunOpen;
-            lastPoint = v.p;
-            lastAtSensor = !v.isSurface();
-            lastPatched = patchesHere();
-            if (lastPatched) lastOrigin = {v.p, v.ng, v.bsdf->hasDiffuseTransmission(), true};
-            lastOutside = exteriorSun_ && views[current]->active;
-            if (sky) current ^= 1;  // views[current ^ 1] is now the last non-delta vertex's
-        }
-        lastDelta = delta;
-
-        // ---- Russian roulette ----
-        if (depth >= options_.rouletteDepth) {
-            double q = std::min(0.95, maxComponent(throughput) / (options_.rouletteLevel * firstWeight));
-            if (samples.get1D(PathSamples::Roulette) >= q) break;
-            throughput = throughput * (1 / q);
-        }
-
-        // ---- follow the ray, passing through glass panes ----
-        Vec3 o = spawn(v, d);
-        seeThrough = seeThrough || (v.isSurface() && v.bsdf->hasDiffuseTransmission());
-        bool scattered = false;
-        for (int crossings = 0; crossings < 32 && !scattered; ++crossings) {
-            ++stats.closest;
-            auto hit = rt_.intersect({o, d, 0, kInf, kAllMask, seeThrough});
-            if (stats.footprint) stats.footprint->add(o, d, 0, hit ? hit->t : kInf);
-            if (!hit) {
-                if (daylight_) {
-                    // Depth 0 is the sensor's own ray, through panes and off mirrors.
-                    const bool hidden = depth == 0 && sensor.hidesSources();
-                    Vec3 sky = daylight_->Le(d), sun = hidden ? Vec3() : daylight_->sunLe(d);
-                    double wSky = 1;
-                    if (!lastDelta) {
-                        const double pSky = sky_.pdf(*views[current ^ 1], lastPoint, d);
-                        wSky = outsideDensity > 0 ? sunWeight(arrivalDensity, lastPdf, arrivalDensity, outsideDensity, pSky, pSky, lastPdf)
-                                                  : powerHeuristic(1, lastPdf, 1, pSky);
-                    }
-                    double wSun = 1;
-                    if (!lastDelta && maxComponent(sun) > 0) {
-                        // The last vertex's own sun sample would have chosen among its open disks.
-                        const double pSun = daylight_->sunPdf(d), pSunThere = pSun / lastSunOpen;
-                        const double b = arrivalDensity > 0 ? otherSunDensity(d) : 0;
-                        wSun = b > 0 ? sunWeight(arrivalDensity, lastPdf, arrivalDensity, b, pSunThere, pSun, lastPdf)
-                                     : powerHeuristic(1, lastPdf, 1, pSunThere);
-                    }
-                    L += throughput * (sky * wSky + sun * wSun);
-                    if (stats.budget) {
-                        stats.budget->credit(LightBudget::kSky, depth, luminance(throughput * sky * wSky));
-                        stats.budget->credit(LightBudget::kSun, depth, luminance(throughput * sun * wSun));
-                    }
-                }
-                return luminance(L);
-            }
-            if (hit->kind == HitKind::Emitter) {
-                if (hitEmitterFirst && depth == 0 && crossings == 0) *hitEmitterFirst = true;
-                if (stats.footprint) stats.footprint->usedEmitterChoice = true;  // the MIS weight reads it
-                double Le = depth == 0 && sensor.hidesSources() ? 0.0 : emitters_.emitted(size_t(hit->index), d);
-                if (Le > 0) {
-                    const size_t e = size_t(hit->index);
-                    double w = lastDelta ? 1
-                                         : powerHeuristic(1, lastPdf, 1,
-                                                          lastAtSensor ? emitters_.pdf(e, emitters_.viewFrom(lastPoint), hit->point)
-                                                                       : emitters_.pdf(e, lastPoint, hit->point));
-                    L += throughput * Vec3(Le, Le, Le) * w;
-                    if (stats.budget) stats.budget->credit(hit->index, depth, luminance(throughput * Vec3(Le, Le, Le) * w));
-                }
-                return luminance(L);  // emitters absorb what reaches them
-            }
-            const Bsdf& bsdf = bsdfs_[hit->material];
-            if (bsdf.passesStraight()) {
-                // A thin pane: pass straight through (not a scattering event, so the MIS
-                // state of the last vertex stays) or reflect (a delta event).
-                const PaneResponse r = bsdf.glass().response(std::abs(dot(d, hit->geometricNormal)));
-                double scatter = r.reflectance + r.transmittance;
-                if (scatter <= 0) return luminance(L);
-                throughput = throughput * scatter;
-                if (samples.rng().uniform() * scatter < r.transmittance) {
-                    o = offsetAlong(hit->point, hit->geometricNormal, d);
-                } else {
-                    d = reflect(-d, hit->geometricNormal);
-                    o = offsetAlong(hit->point, hit->geometricNormal, d);
-                    lastDelta = true;
-                }
-                seeThrough = true;
-                continue;
-            }
-            // A scattering surface: the next vertex. Surfaces are two-sided.
-            v = surfaceVertex(*hit, bsdf, -d);
-            arrivalDensity = outsideDensity = 0;
-            arrivalFrom.valid = false;
-            if (!lastDelta && (lastPatched || lastOutside)) {
-                const Vec3 e = v.p - lastPoint;
-                const double d2 = dot(e, e);
-                if (d2 > 0) {
-                    const double toArea = std::abs(dot(v.ng, d)) / d2;
-                    arrivalDensity = lastPdf * toArea;
-                    if (lastPatched) arrivalFrom = lastOrigin;
-                    if (lastOutside && !sky_.inRoom(v.p)) outsideDensity = sky_.pdf(*views[current ^ 1], lastPoint, d) * toArea;
-                }
-            }
-            scattered = true;
-        }
-        if (!scattered) break;
+    // Next-event estimation at every non-delta vertex, BSDF sampling to the next.
+    for (; path.depth < options_.maxDepth; ++path.depth) {
+        samples.setDepth(path.depth);
+        const bool deltaVertex = path.v.isSurface() ? path.v.bsdf->isDelta() : sensor.isDelta();
+        path.sunOpen = 1;
+        if (!deltaVertex) estimateDirect(path);
+        Vec3 d;
+        if (!scatter(path, d) || !follow(path, d, hitEmitterFirst)) break;
     }
-    return luminance(L);
+    return luminance(path.L);
 }
 
 }  // namespace luxplan

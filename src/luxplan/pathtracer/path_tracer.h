@@ -32,6 +32,9 @@
 
 namespace luxplan {
 
+struct Path;
+struct LightSample;
+
 struct PathTracerOptions {
     EmitterSelection emitterSelection = EmitterSelection::PowerDistance;
     bool portals = true;       // sample the sky through the room's openings from inside it
@@ -157,6 +160,27 @@ public:
     double transmittance(const Vec3& p, const Vec3& w, double tMax, int target, RayStats& stats) const;
 
 private:
+    // The lights are strategies (light_strategy.h) that read the tracer's parts.
+    friend class EmitterStrategy;
+    friend class SunStrategy;
+    friend class SkyStrategy;
+    friend class SunPatchStrategy;
+
+    // Next-event estimation at the path's current vertex: each strategy in turn.
+    void estimateDirect(Path& path) const;
+    // A light sample joined to the current vertex by a shadow ray, weighed by MIS.
+    void connect(Path& path, const LightSample& s) const;
+    // BSDF sampling at the current vertex (its direction into d) and Russian roulette;
+    // false ends the path.
+    bool scatter(Path& path, Vec3& d) const;
+    // The ray along d through the panes it crosses to the next scattering vertex (true),
+    // or to the light it escapes to or meets (false: the path ends).
+    bool follow(Path& path, Vec3 d, bool* hitEmitterFirst) const;
+    void addEscaped(Path& path, const Vec3& d) const;
+    void addEmitterHit(Path& path, const Hit& hit, const Vec3& d) const;
+    // The density at the current vertex of the two-bounce ways to its sun light (a
+    // sunlit patch, a surface outside), 0: BSDF sampling and the sun's own sampling only.
+    double otherSunDensity(const Path& path, const Vec3& ws) const;
 
     const EmbreeScene& rt_;
     const DaylightEnvironment* daylight_;
