@@ -75,7 +75,7 @@ TEST_P(ReferenceTracer, FastTracerAgreesAtTheScenesSamplers) {
     const ReferencePathTracer reference(rt, day);
     // Up to three samplers, spread over the scene's list.
     const size_t count = scene.samplers.size(), used = std::min<size_t>(3, count);
-    constexpr int kFastPaths = 1500, kReferencePaths = 1500;
+    constexpr int kFastPaths = 4000, kReferencePaths = 4000;
     for (size_t n = 0; n < used; ++n) {
         const size_t k = n * count / used;
         const std::unique_ptr<PlacedSampler> placed = placeSampler(scene.samplers[k], fast);
