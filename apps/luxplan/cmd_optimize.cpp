@@ -108,8 +108,9 @@ void checkOutputFolder(const std::filesystem::path& folder) {
     std::filesystem::remove(probe, ec);
 }
 
-// snapshots.json (--snapshots N): the best layout at each checkpoint of the run, in
-// the scene the search ran on (the flattened one with --flat: measure --flat reads it).
+// snapshots.json (the setting snapshots): the best layout at each checkpoint of the run,
+// in the scene the search ran on (the flattened one in a flat run: measure with flat
+// true reads it).
 void writeSnapshots(const std::filesystem::path& file, const Scene& scene, const OptimizerResult& result) {
     nlohmann::json list = nlohmann::json::array();
     for (const Snapshot& s : result.snapshots)
@@ -124,7 +125,7 @@ void writeSnapshots(const std::filesystem::path& file, const Scene& scene, const
     writeFileAtomically(file, j.dump(1) + "\n");
 }
 
-// --check-cache's verdict: every reused path traced again, and what differed.
+// check_cache's verdict: every reused path traced again, and what differed.
 void printCacheCheck(const Scene& scene, const CacheCheck& check) {
     if (check.differing == 0) {
         std::cout << "  path cache check: all " << check.checked
@@ -239,7 +240,7 @@ int runOptimize(const OptimizeArgs& args) {
     if (!result.snapshots.empty()) writeSnapshots(std::filesystem::path(args.out) / "snapshots.json", scene, result);
     if (flattened) {
         // layout.json in the scene file's hierarchy, so that --layout reads it back;
-        // layout_flat.json keeps every object's own placement (measure --flat).
+        // layout_flat.json keeps every object's own placement (measure --set flat=true).
         io::writeLayout(std::filesystem::path(args.out) / "layout_flat.json", scene, result.best);
         io::writeLayout(std::filesystem::path(args.out) / "layout.json", original,
                         hierarchicalLayoutOf(original, *flattened, result.best));
