@@ -31,11 +31,24 @@ std::vector<io::SettingOverride> parsedSettings(const std::vector<std::string>& 
     return settings;
 }
 
+
+const char* const kAdvanced = "Advanced options";
+
+// The default --help leaves the advanced options' group out (a hidden option's group,
+// "", would also take its name out of its error messages).
+class DesignerHelp : public CLI::Formatter {
+public:
+    std::string make_group(std::string group, bool positional, std::vector<const CLI::Option*> opts) const override {
+        if (group == kAdvanced && !helpAll) return "";
+        return CLI::Formatter::make_group(std::move(group), positional, std::move(opts));
+    }
+};
+
 }  // namespace
 
 void setHelpAll(bool all) { helpAll = all; }
 
-std::string advancedGroup() { return helpAll ? "Advanced options" : ""; }
+std::string advancedGroup() { return kAdvanced; }
 
 void addSharedOptions(CLI::App* cmd, SharedArgs& args, int& threads, const std::string& pathsHelp, unsigned which) {
     cmd->add_option("scene", args.scene, "Scene JSON file")->required();
@@ -59,6 +72,7 @@ void addSharedOptions(CLI::App* cmd, SharedArgs& args, int& threads, const std::
             },
             ""));
     if (which & kQuietOption) cmd->add_flag("-q,--quiet", args.quiet, "No progress line");
+    cmd->formatter(std::make_shared<DesignerHelp>());
     cmd->footer(helpAll ? "\n" + io::settingsTableText()
                         : "\n--help-all: the advanced options too, and every --set key with its default and meaning");
 }

@@ -30,7 +30,7 @@ enum SharedOption : unsigned { kLayoutOption = 1, kQuietOption = 2 };
 // Registers the shared options on `cmd` (`which`: kLayoutOption | kQuietOption);
 // `pathsHelp` says which count --paths sets for this command.
 void addSharedOptions(CLI::App* cmd, SharedArgs& args, int& threads, const std::string& pathsHelp, unsigned which);
-// The group of options the default --help leaves out ("": hidden; --help-all shows them).
+// The group of options the default --help leaves out (--help-all shows them).
 std::string advancedGroup();
 // Whether this run asked for --help-all (main() turns it into --help).
 void setHelpAll(bool all);
