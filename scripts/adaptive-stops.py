@@ -6,7 +6,7 @@ usage: scripts/adaptive-stops.py BINARY SCENE LAYOUT [SEEDS] [--sun-patches on|o
 
 The truth of every sampler is the mean of four fixed runs at 16000 paths per point
 (with the sunlit patches: the lowest noise). Then SEEDS adaptive runs at the search's
-most, 1000 paths per point (`measure --adaptive`, the patches as the search traces
+most, 1000 paths per point (`measure --set adaptive=true`, the patches as the search traces
 them: off unless asked; the sun off surfaces outside as measure takes it: on unless
 asked), are compared with it: an early stop (fewer than 1000 paths)
 whose value lies in another piece than the truth's (below, inside or above the target
@@ -29,10 +29,10 @@ import tempfile
 
 
 def measure(binary, scene, layout, paths, seed, patches, adaptive, exterior="on"):
-    cmd = [binary, "measure", scene, "--paths", str(paths), "--threads", "2", "--json", "--sun-patches", patches,
-           "--exterior-sun", exterior, "--seed", str(seed)] + ([] if layout == "-" else ["--layout", layout])
+    cmd = [binary, "measure", scene, "--paths", str(paths), "--threads", "2", "--json", "--set", "sun_patches=" + patches,
+           "--set", "exterior_sun=" + exterior, "--seed", str(seed)] + ([] if layout == "-" else ["--layout", layout])
     if adaptive:
-        cmd.append("--adaptive")
+        cmd += ["--set", "adaptive=true"]
     return json.loads(subprocess.run(cmd, capture_output=True, text=True, check=True).stdout)["samplers"]
 
 

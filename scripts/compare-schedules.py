@@ -21,10 +21,10 @@ import sys
 import tempfile
 
 SCHEDULES = {
-    "cycle 4": ["--cycle", "--inner", "4"],
-    "cycle by DOF": ["--cycle", "--inner", "0"],
-    "nested 4": ["--nested", "--inner", "4"],
-    "nested by DOF": ["--nested", "--inner", "0"],
+    "cycle 4": ["--set", "cycle=true", "--set", "inner_iterations=4"],
+    "cycle by DOF": ["--set", "cycle=true", "--set", "inner_iterations=0"],
+    "nested 4": ["--set", "nested=true", "--set", "inner_iterations=4"],
+    "nested by DOF": ["--set", "nested=true", "--set", "inner_iterations=0"],
 }
 
 

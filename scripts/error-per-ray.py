@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """Empirical error per ray of two path estimators, on every bundled scene: scrambled
-Sobol (the default) against PCG (`--sampling random`), or, with `--sun-patches`, the
+Sobol (the default) against PCG (`--set sampling=random`), or, with `--sun-patches`, the
 sunlit patches sampled (the default of `measure`) against BSDF sampling alone
-(`--sun-patches off`).
+(`--set sun_patches=off`).
 
 A low-discrepancy estimate's reported standard error comes from the spread of its
 paths, which overstates its real error (the paths are not independent), so this
@@ -61,9 +61,9 @@ def main():
     if other:
         names, options, binaries = ("new", "old"), {"new": [], "old": []}, {"new": binary, "old": other}
     elif "--sun-patches" in argv:
-        names, options = ("patches", "off"), {"patches": ["--sun-patches", "on"], "off": ["--sun-patches", "off"]}
+        names, options = ("patches", "off"), {"patches": ["--set", "sun_patches=on"], "off": ["--set", "sun_patches=off"]}
     else:
-        names, options = ("sobol", "random"), {"sobol": ["--sampling", "sobol"], "random": ["--sampling", "random"]}
+        names, options = ("sobol", "random"), {"sobol": ["--set", "sampling=sobol"], "random": ["--set", "sampling=random"]}
     binaries = binaries or {m: binary for m in names}
     first, second = names
     scenes = chosen or ["scenes/demo/office.json"] + sorted(glob.glob("scenes/paper/*.json"))

@@ -12,8 +12,8 @@ and rewrites; delete OUT to start afresh). Each search runs single-threaded, JOB
 so they grow when JOBS exceeds the idle cores. With --only, the other experiments are
 read from OUT if there, and left out of the page otherwise.
 
-  fig6   hierarchical against the groupless --flat baseline, 16 seeds, on the three
-         hierarchy scenes: the best-so-far layout (optimize --snapshots) re-measured
+  fig6   hierarchical against the groupless flat baseline (--set flat=true), 16 seeds, on the three
+         hierarchy scenes: the best-so-far layout (optimize --set snapshots=N) re-measured
          with an independent seed, against iterations, wall time and lighting
          evaluations, with bootstrap intervals over the seeds.
   fig7   the six-workstation office at three times of day, 8 seeds each, with a
@@ -81,7 +81,7 @@ class Runner:
         if layout:
             args += ["--layout", layout]
         if flat:
-            args.append("--flat")
+            args += ["--set", "flat=true"]
         text, _ = self.run(args)
         result = json.loads(text[text.index("{"):])
         if cache:
@@ -166,7 +166,7 @@ def fig6(r, out):
         def one(run):
             mode, seed = run
             folder = os.path.join(out, "fig6", name, "%s-%d" % (mode, seed))
-            extra = ["--snapshots", str(SNAPSHOTS)] + (["--flat"] if mode == "flat" else [])
+            extra = ["--set", "snapshots=%d" % SNAPSHOTS] + (["--set", "flat=true"] if mode == "flat" else [])
             r.optimize(scene, folder, seed, extra)
             snaps = load(os.path.join(folder, "snapshots.json"))["snapshots"]
             points = []
@@ -251,11 +251,11 @@ def convergence_svg(path, title, by_mode):
 
 def fig6_page(rows):
     lines = ["## Figure 6: the hierarchy against the flat baseline (%d seeds)" % FIG6_SEEDS, "",
-             "Each scene at its own settings (iterations, paths), hierarchical and `--flat` (the groups "
+             "Each scene at its own settings (iterations, paths), hierarchical and flat (`--set flat=true`: the groups "
              "dissolved, members held to their anchors by cohesion constraints: the same objective, "
-             "[optimizer.md](optimizer.md#hierarchy)), seeds 1–%d, `--snapshots %d`. Every snapshot's "
+             "[optimizer.md](optimizer.md#hierarchy)), seeds 1–%d, `--set snapshots=%d`. Every snapshot's "
              "best-so-far layout is measured again with seed + %d at the scene's `report_paths_per_point` "
-             "(`measure --layout`, `--flat` for the flat runs): **C below is that independent measurement**, "
+             "(`measure --layout`, `--set flat=true` for the flat runs): **C below is that independent measurement**, "
              "not the search's estimate. A run that stops at a confirmed C = 0 keeps its last value. "
              "Intervals: 95%% percentile bootstrap over the seeds (2000 resamples). \"feasible\": runs "
              "with a layout that passes the geometric rules; means are over those runs (¹: not every run, so "

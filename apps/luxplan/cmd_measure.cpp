@@ -1,7 +1,9 @@
-// `luxplan measure SCENE [--layout L] [--paths N] [--seed S] [--threads T] [--json] [--flat] [--at TIME]
-// [--daylight-factor]`: evaluates every light sampler by path tracing. --flat: in the flattened
-// scene (the layout_flat.json of an `optimize --flat` run). --daylight-factor: each planar
-// sampler's daylight factor under the CIE overcast sky instead (lightsamplers/daylight_factor.h).
+// `luxplan measure SCENE [--layout L] [--paths N] [--seed S] [--threads T] [--set KEY=VALUE] [--json]
+// [--at TIME] [--daylight-factor]`: evaluates every light sampler by path tracing. The settings
+// (io/settings_table.h) it reads: seed, report_paths_per_point, sampling, sun_patches,
+// exterior_sun, light_roulette, adaptive, flat (the flattened scene: the layout_flat.json of
+// an optimize run with hierarchy flat). --daylight-factor: each planar sampler's daylight
+// factor under the CIE overcast sky instead (lightsamplers/daylight_factor.h).
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
@@ -17,6 +19,7 @@
 #include "commands.h"
 #include "daylight_progress.h"
 #include "option_checks.h"
+#include "shared_options.h"
 #include <luxplan/checks/scene_warnings.h>
 #include <luxplan/constraints/geometry_cost.h>
 #include <luxplan/constraints/penalty.h>
@@ -44,17 +47,20 @@ std::string errorText(double error, int paths, int digits) {
     return out.str();
 }
 
-struct MeasureArgs {
-    std::string scene, layout;
-    int paths = 0;
-    std::optional<uint64_t> seed;
-    bool json = false, flat = false, adaptive = false, daylightFactor = false;
-    double lightRoulette = 0;
-    std::string sampling = "sobol";
-    std::string sunPatches = "on";
-    std::string exteriorSun = "on";
+struct MeasureArgs : SharedArgs {
+    bool json = false, daylightFactor = false;
     std::string at;  // ISO 8601: one instant of daylight instead of the period
 };
+
+// The tracing settings as measure applies them (its own defaults where the scene's
+// settings leave one to the command).
+PathTracerOptions measureTracing(const TracingSettings& s) {
+    PathTracerOptions tracing;
+    tracing.sunPatches = s.samplesSunPatches(SunPatchUse::On, false);
+    tracing.exteriorSun = s.exteriorSun;
+    return tracing;
+}
+const char* samplingName(const TracingSettings& s) { return s.lowDiscrepancy ? "sobol" : "random"; }
 
 // The scene's daylight at one instant (--at) instead of its period's average.
 DaylightParams daylightAt(const Scene& scene, const std::string& at) {
@@ -131,11 +137,8 @@ void runDaylightFactor(const MeasureArgs& args, const Scene& scene, const Layout
     // Of the samplers it measures (no directional one).
     if (options.pathsPerPoint < 2) warnFewPaths(daylightFactorScene(scene).scene, options.pathsPerPoint, args.paths > 0);
     options.seed = args.seed.value_or(scene.optimizer.seed);
-    options.lowDiscrepancy = args.sampling == "sobol";
-    PathTracerOptions tracing;
-    tracing.sunPatches = args.sunPatches == "on";
-    tracing.exteriorSun = args.exteriorSun == "on";
-    const DaylightFactorResult df = measureDaylightFactors(scene, layout, options, tracing);
+    options.lowDiscrepancy = scene.optimizer.lowDiscrepancy;
+    const DaylightFactorResult df = measureDaylightFactors(scene, layout, options, measureTracing(scene.optimizer));
     const DaylightParams sky = daylightFactorSky(scene);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (args.json) {
@@ -164,7 +167,7 @@ void runDaylightFactor(const MeasureArgs& args, const Scene& scene, const Layout
                                                    {"luminaires", "off"}}},
                               {"samplers", samplers},
                               {"paths_per_point", options.pathsPerPoint},
-                              {"sampling", args.sampling},
+                              {"sampling", samplingName(scene.optimizer)},
                               {"seed", options.seed},
                               {"seconds", seconds}};
         std::cout << out.dump(2) << "\n";
@@ -190,11 +193,16 @@ void runDaylightFactor(const MeasureArgs& args, const Scene& scene, const Layout
 
 void runMeasure(const MeasureArgs& args) {
     auto start = std::chrono::steady_clock::now();
-    Scene scene = io::loadScene(args.scene);
+    Scene scene = loadSceneWithSettings(args);
     printSceneWarnings(scene);
-    if (args.flat) scene = flattenScene(scene).scene;
+    const TracingSettings settings = scene.optimizer;
+    if (scene.optimizer.flatScene) scene = flattenScene(scene).scene;
     Layout layout = args.layout.empty() ? initialLayout(scene) : io::readLayout(args.layout, scene);
     if (args.daylightFactor) {
+        // It measures every point at a fixed count, every light sample traced.
+        if (settings.adaptive) throw CLI::ValidationError("--daylight-factor", "excludes the setting adaptive (true)");
+        if (settings.lightRoulette.value_or(0) > 0)
+            throw CLI::ValidationError("--daylight-factor", "excludes the setting light_roulette (above 0)");
         if (std::string why = daylightFactorRefusal(scene); !why.empty()) throw std::runtime_error("--daylight-factor: " + why);
         runDaylightFactor(args, scene, layout, start);
         return;
@@ -215,17 +223,15 @@ void runMeasure(const MeasureArgs& args) {
         daylight = bakeDaylight(*scene.daylight, scene.site);
     }
     EmbreeScene rt(scene, layout);
-    PathTracerOptions tracing;
-    tracing.sunPatches = args.sunPatches == "on";
-    tracing.exteriorSun = args.exteriorSun == "on";
-    PathTracer tracer(rt, daylight ? &*daylight : nullptr, tracing);
+    PathTracer tracer(rt, daylight ? &*daylight : nullptr, measureTracing(settings));
     MeasureOptions options;
     options.pathsPerPoint = pathsPerPoint;
     warnFewPaths(scene, options.pathsPerPoint, args.paths > 0);
     options.seed = args.seed.value_or(scene.optimizer.seed);
-    options.adaptive = args.adaptive;
-    if (args.lightRoulette > 0) options.lightFloors = lightSampleFloors(tracer, args.lightRoulette, options.seed);
-    options.lowDiscrepancy = args.sampling == "sobol";
+    options.adaptive = settings.adaptive;
+    const double lightRoulette = settings.lightRoulette.value_or(0);
+    if (lightRoulette > 0) options.lightFloors = lightSampleFloors(tracer, lightRoulette, options.seed);
+    options.lowDiscrepancy = settings.lowDiscrepancy;
     MeasureResult result;
     {
         MeasureProgress progress(options, (unsigned long long)(samplerPoints(scene)) * (unsigned long long)(pathsPerPoint));
@@ -265,9 +271,9 @@ void runMeasure(const MeasureArgs& args) {
         }
         nlohmann::json out = {{"samplers", samplers},
                               {"paths_per_point", options.pathsPerPoint},
-                              {"adaptive", options.adaptive}, {"sampling", args.sampling}, {"sun_patches", tracer.samplesSunPatches()},
+                              {"adaptive", options.adaptive}, {"sampling", samplingName(settings)}, {"sun_patches", tracer.samplesSunPatches()},
                               {"exterior_sun", tracer.samplesExteriorSun()},
-                              {"light_roulette", args.lightRoulette},
+                              {"light_roulette", lightRoulette},
                               {"seed", options.seed},
                               {"maintenance_factor", scene.maintenanceFactor},
                               {"L", lighting}, {"L_std_error", lightingError},
@@ -360,44 +366,16 @@ void warnLargeMeasurement(const Scene& scene, int pathsPerPoint, const std::stri
 void registerMeasureCommand(CLI::App& app, int& threads) {
     auto args = std::make_shared<MeasureArgs>();
     auto* cmd = app.add_subcommand("measure", "Evaluate every light sampler of a scene by path tracing");
-    cmd->add_option("scene", args->scene, "Scene JSON file")->required();
-    cmd->add_option("--layout", args->layout, "layout.json to measure instead of the scene's placement");
-    cmd->add_option("--paths", args->paths, "Paths per sampler point (default: the report's, optimizer.report_paths_per_point)")
-        ->check(wholeNumber(1));
-    addSeedOption(cmd, args->seed);
-    cmd->add_option("--threads", threads, "Worker threads (default: all cores)")->check(wholeNumber(0));
+    addSharedOptions(cmd, *args, threads, "Paths per sampler point (default: the report's, optimizer.report_paths_per_point)",
+                     kLayoutOption);
     cmd->add_flag("--json", args->json, "Print JSON with per-point values");
-    cmd->add_option("--at", args->at,
-                    "One instant of daylight (ISO 8601 with its UTC offset, e.g. 2026-03-20T16:30+02:00) instead of the "
-                    "scene's period averaged");
-    cmd->add_flag("--adaptive", args->adaptive,
-                  "Stop each sampler once value +- 3 standard errors (Student's interval for an error from fold "
-                  "values) lies inside one linear piece of its penalty, looking first after 64 paths per point "
-                  "(--paths is then the most per point)");
-    cmd->add_option("--light-roulette", args->lightRoulette,
-                    "Trace a light sample worth less than a floor only with probability worth / floor, weighed up when "
-                    "it is: the floor is this share of each sampler's variance per path over its mean (from 64 paths "
-                    "per point), so the samples it skips add at most this share to a path's variance (optimize's "
-                    "search: 0.2; default 0: every sample). Unbiased")
-        ->check(finiteNumber(true, kMostLightRoulette));
-    cmd->add_option("--sampling", args->sampling,
-                    "Random numbers of the paths' first vertices: sobol (scrambled low-discrepancy, default) or random (PCG)")
-        ->check(CLI::IsMember({"sobol", "random"}));
-    cmd->add_option("--sun-patches", args->sunPatches,
-                    "Sample the room's sunlit patches at every surface a path meets (on, default) or find them by BSDF "
-                    "sampling alone (off); the same values either way, with less noise where sunlight bounces")
-        ->check(CLI::IsMember({"on", "off"}));
-    cmd->add_option("--exterior-sun", args->exteriorSun,
-                    "Follow the sky's samples through the openings to sunlit surfaces outside (a facade across the "
-                    "street) and take the light of the sun and the sky there (on, default: where the sun can light a "
-                    "side of something outside that an opening sees) or find that light by BSDF sampling alone (off); "
-                    "the same values either way")
-        ->check(CLI::IsMember({"on", "off"}));
-    cmd->add_flag("--flat", args->flat, "Measure in the flattened scene (read the layout_flat.json of optimize --flat)");
-    auto* df = cmd->add_flag("--daylight-factor", args->daylightFactor,
-                             "Each planar sampler's mean daylight factor (%): its illuminance under the CIE standard overcast "
-                             "sky over the open horizontal plane's, the luminaires off (the scene's own daylight not used)");
-    df->excludes(cmd->get_option("--at"))->excludes(cmd->get_option("--adaptive"))->excludes(cmd->get_option("--light-roulette"));
+    auto* at = cmd->add_option("--at", args->at,
+                               "One instant of daylight (ISO 8601 with its UTC offset, e.g. 2026-03-20T16:30+02:00) instead "
+                               "of the scene's period averaged");
+    cmd->add_flag("--daylight-factor", args->daylightFactor,
+                  "Each planar sampler's mean daylight factor (%): its illuminance under the CIE standard overcast "
+                  "sky over the open horizontal plane's, the luminaires off (the scene's own daylight not used)")
+        ->excludes(at);
     cmd->callback([args] { namingScene(args->scene, [&] { runMeasure(*args); }); });
 }
 

@@ -1,8 +1,9 @@
-// `luxplan optimize SCENE -o OUTDIR [--iterations N] [--seed S] [--threads T] [--flat]`:
+// `luxplan optimize SCENE -o OUTDIR [--iterations N] [--seed S] [--threads T] [--set KEY=VALUE]`:
 // the hierarchical Metropolis search with path-traced lighting; writes layout.json,
 // report.json, trace.csv, then the pictures, scene.glb, report.html and report.pdf
 // (unless --no-pictures; --no-pdf: no report.pdf). Ctrl-C stops the run and still
-// writes the best layout. --flat runs
+// writes the best layout. The search's and the tracing's settings come from the scene's
+// "optimizer" object and --set (io/settings_table.h); hierarchy flat (or flat true) runs
 // the paper's flat baseline on the flattened scene (optimizer/flatten.h).
 #include <atomic>
 #include <chrono>
@@ -19,6 +20,7 @@
 #include "commands.h"
 #include "daylight_progress.h"
 #include "option_checks.h"
+#include "shared_options.h"
 #include "picture_progress.h"
 #include <luxplan/core/atomic_file.h>
 #include <luxplan/core/error.h>
@@ -64,19 +66,15 @@ private:
     void (*previous_[std::size(kStopSignals)])(int) = {};
 };
 
-struct OptimizeArgs {
-    std::string scene, out;
-    int iterations = -1, paths = 0, spp = 0, inner = -1, snapshots = 0, suggestions = 0;
+struct OptimizeArgs : SharedArgs {
+    std::string out;
+    int iterations = -1, spp = 0, suggestions = 0;
     std::string start;  // --start LAYOUT.json
-    std::optional<uint64_t> seed;
-    bool noPdf = false;
-    bool flat = false, quiet = false, noPictures = false, fixedPaths = false, fullEvaluation = false, checkCache = false,
-         freshNoise = false, noiseBlind = false, nested = false, cycle = false, singleTest = false;
-    std::string sampling = "sobol";
-    std::string sunPatches = "report";
-    std::string exteriorSun = "on";
-    double lightRoulette = 0.2;
+    bool noPdf = false, noPictures = false;
 };
+
+// optimize's default light roulette floor in the search (the setting light_roulette).
+constexpr double kSearchLightRoulette = 0.2;
 
 // One status line, redrawn in place on a terminal, printed every few seconds
 // otherwise; and once, the moment the first layout passes the rules (the cost then
@@ -110,8 +108,9 @@ void checkOutputFolder(const std::filesystem::path& folder) {
     std::filesystem::remove(probe, ec);
 }
 
-// snapshots.json (--snapshots N): the best layout at each checkpoint of the run, in
-// the scene the search ran on (the flattened one with --flat: measure --flat reads it).
+// snapshots.json (the setting snapshots): the best layout at each checkpoint of the run,
+// in the scene the search ran on (the flattened one in a flat run: measure with flat
+// true reads it).
 void writeSnapshots(const std::filesystem::path& file, const Scene& scene, const OptimizerResult& result) {
     nlohmann::json list = nlohmann::json::array();
     for (const Snapshot& s : result.snapshots)
@@ -126,7 +125,7 @@ void writeSnapshots(const std::filesystem::path& file, const Scene& scene, const
     writeFileAtomically(file, j.dump(1) + "\n");
 }
 
-// --check-cache's verdict: every reused path traced again, and what differed.
+// check_cache's verdict: every reused path traced again, and what differed.
 void printCacheCheck(const Scene& scene, const CacheCheck& check) {
     if (check.differing == 0) {
         std::cout << "  path cache check: all " << check.checked
@@ -150,7 +149,8 @@ void printCacheCheck(const Scene& scene, const CacheCheck& check) {
 int runOptimize(const OptimizeArgs& args) {
     // From the start, so that a signal during loading still ends in written outputs.
     StopSignals stopSignals;
-    const Scene original = io::loadScene(args.scene);
+    const Scene original = loadSceneWithSettings(args);
+    const TracingSettings& tracingSettings = original.optimizer;
     printSceneWarnings(original);
     checkOutputFolder(args.out);
     {
@@ -166,14 +166,7 @@ int runOptimize(const OptimizeArgs& args) {
     OptimizerOptions options = optimizerOptions(original);
     if (args.iterations >= 0) options.iterations = args.iterations;
     if (args.seed) options.seed = *args.seed;
-    if (args.flat) options.hierarchy = Hierarchy::Flat;
-    if (args.noiseBlind) options.noiseAware = false;
-    if (args.singleTest) options.delayedAcceptance = false;
-    if (args.inner >= 0) options.innerIterations = args.inner;
-    options.snapshots = args.snapshots;
     if (args.suggestions > 0) options.suggestions = args.suggestions;
-    if (args.nested) options.focusInner = true;
-    if (args.cycle) options.focusInner = false;
     // Flat: the same furniture without groups, kept together by cohesion constraints.
     std::optional<FlatScene> flattened;
     if (options.hierarchy == Hierarchy::Flat) {
@@ -195,8 +188,8 @@ int runOptimize(const OptimizeArgs& args) {
     measure.pathsPerPoint = args.paths > 0 ? args.paths : scene.optimizer.searchPathsPerPoint;
     warnFewPaths(original, measure.pathsPerPoint, args.paths > 0);
     measure.seed = options.seed;
-    measure.adaptive = !args.fixedPaths;
-    measure.lowDiscrepancy = args.sampling == "sobol";
+    measure.adaptive = !tracingSettings.fixedPaths;
+    measure.lowDiscrepancy = tracingSettings.lowDiscrepancy;
     measure.choiceError = false;  // the search's stops do not read it; its report's measurements do
     std::unique_ptr<PathTracedLighting> lighting;
     // The report's count for the result (measure's default: report.json and `measure
@@ -206,16 +199,16 @@ int runOptimize(const OptimizeArgs& args) {
     const int selectionPaths = std::max(scene.optimizer.selectionPathsPerPoint, measure.pathsPerPoint);
     if (!scene.samplers.empty()) {
         PathTracerOptions search, report;
-        search.sunPatches = args.sunPatches == "on";
-        report.sunPatches = args.sunPatches != "off";
-        search.exteriorSun = report.exteriorSun = args.exteriorSun == "on";
+        search.sunPatches = tracingSettings.samplesSunPatches(SunPatchUse::Report, true);
+        report.sunPatches = tracingSettings.samplesSunPatches(SunPatchUse::Report, false);
+        search.exteriorSun = report.exteriorSun = tracingSettings.exteriorSun;
         lighting = std::make_unique<PathTracedLighting>(scene, daylight ? &*daylight : nullptr, measure, search, report);
         lighting->setReportPaths(reportPaths);        // the result's report and the suggestions'
         lighting->setSelectionPaths(selectionPaths);  // confirmations and the candidates' re-measures
-        lighting->setIncremental(!args.fullEvaluation);
-        lighting->setCheckCache(args.checkCache);
-        lighting->setFreshNoise(args.freshNoise);
-        lighting->setLightRoulette(args.lightRoulette);
+        lighting->setIncremental(!tracingSettings.fullEvaluation);
+        lighting->setCheckCache(tracingSettings.checkCache);
+        lighting->setFreshNoise(tracingSettings.freshNoise);
+        lighting->setLightRoulette(tracingSettings.lightRoulette.value_or(kSearchLightRoulette));
     }
 
     // With lighting weight 0 the chain never calls it, but the result's report does.
@@ -247,7 +240,7 @@ int runOptimize(const OptimizeArgs& args) {
     if (!result.snapshots.empty()) writeSnapshots(std::filesystem::path(args.out) / "snapshots.json", scene, result);
     if (flattened) {
         // layout.json in the scene file's hierarchy, so that --layout reads it back;
-        // layout_flat.json keeps every object's own placement (measure --flat).
+        // layout_flat.json keeps every object's own placement (measure --set flat=true).
         io::writeLayout(std::filesystem::path(args.out) / "layout_flat.json", scene, result.best);
         io::writeLayout(std::filesystem::path(args.out) / "layout.json", original,
                         hierarchicalLayoutOf(original, *flattened, result.best));
@@ -309,8 +302,8 @@ int runOptimize(const OptimizeArgs& args) {
         OutputOptions pictures;
         pictures.seed = options.seed;
         pictures.samplerPaths = scene.optimizer.reportPathsPerPoint;  // the start's too, as the result's
-        pictures.tracing.sunPatches = args.sunPatches != "off";
-        pictures.tracing.exteriorSun = args.exteriorSun == "on";
+        pictures.tracing.sunPatches = tracingSettings.samplesSunPatches(SunPatchUse::Report, false);
+        pictures.tracing.exteriorSun = tracingSettings.exteriorSun;
         pictures.initialLabel = "start";
         // A (second) stop signal from now on skips the pictures still to make.
         interrupted.store(false);
@@ -335,7 +328,7 @@ int runOptimize(const OptimizeArgs& args) {
         std::cout << "  lighting: " << lighting->evaluations() << " evaluations, "
                   << lighting->rays().closest + lighting->rays().shadow << " rays, " << lighting->tracedPaths()
                   << " paths traced, " << lighting->reusedPaths() << " reused from earlier layouts\n";
-    if (lighting && args.checkCache) printCacheCheck(scene, lighting->cacheCheck());
+    if (lighting && tracingSettings.checkCache) printCacheCheck(scene, lighting->cacheCheck());
     return result.stop == StopReason::Cancelled || interrupted.load() ? stopSignal.load() : 0;
 }
 
@@ -344,68 +337,13 @@ int runOptimize(const OptimizeArgs& args) {
 void registerOptimizeCommand(CLI::App& app, int& threads) {
     auto args = std::make_shared<OptimizeArgs>();
     auto* cmd = app.add_subcommand("optimize", "Search the furniture layout for the design rules and lighting goals");
-    cmd->add_option("scene", args->scene, "Scene JSON file")->required();
     cmd->add_option("-o,--out", args->out, "Output folder (layout.json, report.json, trace.csv)")->required();
     cmd->add_option("--iterations", args->iterations, "Iterations (default: optimizer.iterations)")
         ->check(wholeNumber(0));
-    addSeedOption(cmd, args->seed);
-    cmd->add_option("--threads", threads, "Worker threads for light transport (default: all cores)")
-        ->check(wholeNumber(0));
-    cmd->add_option("--paths", args->paths, "Paths per sampler point during the search (default: optimizer.paths_per_point, or 64 if the scene does not give it)")
-        ->check(wholeNumber(1));
-    cmd->add_flag("--fixed-paths", args->fixedPaths,
-                  "Trace exactly --paths per point for every sampler (default: a sampler stops early once its "
-                  "penalty is settled, --paths being the most)");
-    cmd->add_option("--sampling", args->sampling, "Random numbers of the paths' first vertices: sobol (default) or random")
-        ->check(CLI::IsMember({"sobol", "random"}));
-    cmd->add_option("--sun-patches", args->sunPatches,
-                    "Sample the room's sunlit patches at every surface a path meets: in the re-measured candidates, "
-                    "the report and the pictures only (report, default: in the search they cost more rays than their "
-                    "lower noise saves), everywhere (on) or nowhere (off). The values are the same, with less noise "
-                    "where sunlight bounces")
-        ->check(CLI::IsMember({"on", "off", "report"}));
-    cmd->add_option("--exterior-sun", args->exteriorSun,
-                    "Follow the sky's samples through the openings to sunlit surfaces outside and take the light of "
-                    "the sun and the sky there (on, default: where the sun can light a side of something outside "
-                    "that an opening sees) or find that light by BSDF sampling alone (off), in the search, the "
-                    "report and the pictures; the same values either way")
-        ->check(CLI::IsMember({"on", "off"}));
-    cmd->add_option("--light-roulette", args->lightRoulette,
-                    "In the search, trace a light sample worth less than a floor only with probability worth / floor, "
-                    "weighed up when it is: the floor is this share of each sampler's variance per path over its mean "
-                    "(from 64 paths per point at the scene's layout), so the samples it skips add at most this share "
-                    "to a path's variance (default 0.2; 0: every sample). Unbiased; the candidates' measurements and "
-                    "the report trace every sample")
-        ->check(finiteNumber(true, kMostLightRoulette));
-    auto* full = cmd->add_flag("--full-evaluation", args->fullEvaluation,
-                  "Trace every path of every evaluated layout (default: only the paths a move can change are "
-                  "traced again; the numbers are the same but where two entities' faces of different materials "
-                  "overlap in one plane)");
-    auto* check = cmd->add_flag("--check-cache", args->checkCache,
-                                "Trace every path the path cache reads back again from scratch and compare the two bit "
-                                "for bit (a diagnostic of the incremental evaluation, at more than --full-evaluation's "
-                                "cost): report.json's path_cache_check counts the differences and names the first");
-    auto* fresh = cmd->add_flag("--fresh-noise", args->freshNoise,
-                  "Draw every lighting estimate anew and test with the penalty method: the chain then follows the "
-                  "true costs, at twice the evaluations and without the path cache (default: common random numbers)");
-    check->excludes(full)->excludes(fresh);  // neither uses the path cache
-    cmd->add_flag("--noise-blind", args->noiseBlind,
-                  "The paper's plain Metropolis test on the estimates, the temperature free to fall below their noise");
-    cmd->add_flag("--single-test", args->singleTest,
-                  "One Metropolis test after lighting every proposal, instead of the rules' change first and the light's "
-                  "only for proposals that pass (delayed acceptance)");
-    cmd->add_option("--inner", args->inner,
-                    "Object-level proposals per group-level one (default: optimizer.inner_iterations; 0: by degrees of freedom)")
-        ->check(CLI::Range(0, 1000));
-    cmd->add_flag("--nested", args->nested, "Object-level proposals move the members of the group just proposed");
-    cmd->add_flag("--cycle", args->cycle, "Object-level proposals move any group's members (the paper's plain cycle)")
-        ->excludes("--nested");
-    cmd->add_flag("--flat", args->flat,
-                  "Flat baseline (the paper's Figure 6): no groups, every object on its own, groups kept by cohesion constraints");
-    cmd->add_option("--snapshots", args->snapshots,
-                    "Write snapshots.json: the best layout so far at N checkpoints (iteration ceil(iterations (k/N)^2)), "
-                    "with its wall time and lighting evaluations")
-        ->check(CLI::Range(0, 1000));
+    addSharedOptions(cmd, *args, threads,
+                     "Paths per sampler point during the search (default: optimizer.paths_per_point, or 64 if the scene "
+                     "does not give it)",
+                     kQuietOption);
     cmd->add_option("--suggestions", args->suggestions,
                     "Also write OUTDIR/suggestions/1.json ... K.json: the K best mutually distinct layouts (some movable "
                     "entity more than 0.5 m or 45 degrees apart, or in another region), each measured again like the result")
@@ -413,10 +351,11 @@ void registerOptimizeCommand(CLI::App& app, int& threads) {
     cmd->add_option("--start", args->start,
                     "Start the search from this layout file (as layout.json; entities it does not name keep the scene's "
                     "placement) instead of a uniform draw");
-    cmd->add_flag("-q,--quiet", args->quiet, "No progress line");
     cmd->add_flag("--no-pictures", args->noPictures, "Skip the pictures, scene.glb, report.html and report.pdf");
-    cmd->add_flag("--no-pdf", args->noPdf, "Skip report.pdf (report.html printed by headless Chromium)");
-    cmd->add_option("--spp", args->spp, "Samples per pixel of render.png (default 16)")->check(wholeNumber(1));
+    cmd->add_flag("--no-pdf", args->noPdf, "Skip report.pdf (report.html printed by headless Chromium)")->group(advancedGroup());
+    cmd->add_option("--spp", args->spp, "Samples per pixel of render.png (default 16)")
+        ->check(wholeNumber(1))
+        ->group(advancedGroup());
     cmd->callback([args] {
         namingScene(args->scene, [&] {
             if (int signal = runOptimize(*args)) throw CLI::RuntimeError(128 + signal);

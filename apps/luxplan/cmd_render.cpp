@@ -1,12 +1,14 @@
 // `luxplan render SCENE [--layout L] -o OUTDIR`: render.png, plan.png and scene.glb
 // for a layout (with --glb-only, scene.glb alone, no light transport); `luxplan report SCENE [--layout L] -o OUTDIR`: every picture and
-// report.html for a layout, measured but not optimized.
+// report.html for a layout, measured but not optimized. Both read the settings seed,
+// report_paths_per_point, sun_patches and exterior_sun (--set, io/settings_table.h).
 #include <cmath>
 #include <iostream>
 
 #include "commands.h"
 #include "daylight_progress.h"
 #include "option_checks.h"
+#include "shared_options.h"
 #include "picture_progress.h"
 #include <luxplan/constraints/penalty.h>
 #include <luxplan/core/limits.h>
@@ -19,10 +21,9 @@
 namespace luxplan::cli {
 namespace {
 
-struct PictureArgs {
-    std::string scene, layout, out;
-    int width = 0, height = 0, spp = 0, paths = 0;
-    std::optional<uint64_t> seed;
+struct PictureArgs : SharedArgs {
+    std::string out;
+    int width = 0, height = 0, spp = 0;
     double cell = 0;
     int cellPaths = 0;
     bool raw = false;
@@ -35,23 +36,24 @@ struct PictureArgs {
 
 void addPictureOptions(CLI::App* cmd, PictureArgs& args, int& threads) {
     OutputOptions defaults;
-    cmd->add_option("scene", args.scene, "Scene JSON file")->required();
-    cmd->add_option("--layout", args.layout, "layout.json to show instead of the scene's placement");
+    addSharedOptions(cmd, args, threads, "Paths per sampler point (default: the report's, optimizer.report_paths_per_point)",
+                     kLayoutOption);
+    const std::string advanced = advancedGroup();
     cmd->add_option("--width", args.width, "Render width in pixels (default " + std::to_string(defaults.renderWidth) + ")")
-        ->check(wholeNumber(1));
+        ->check(wholeNumber(1))
+        ->group(advanced);
     cmd->add_option("--height", args.height, "Render height in pixels (default " + std::to_string(defaults.renderHeight) + ")")
-        ->check(wholeNumber(1));
+        ->check(wholeNumber(1))
+        ->group(advanced);
     cmd->add_option("--spp", args.spp, "Render samples per pixel (default " + std::to_string(defaults.renderSamplesPerPixel) + ")")
-        ->check(wholeNumber(1));
-    cmd->add_flag("--raw", args.raw, "render.png without the denoising filter (the path tracer's pixel means)");
-    cmd->add_option("--paths", args.paths, "Paths per sampler point (default: the report's, optimizer.report_paths_per_point)")
-        ->check(wholeNumber(1));
-    cmd->add_option("--cell", args.cell, "Work-plane grid cell in metres (default 0.25)")->check(positiveNumber());
+        ->check(wholeNumber(1))
+        ->group(advanced);
+    cmd->add_flag("--raw", args.raw, "render.png without the denoising filter (the path tracer's pixel means)")->group(advanced);
+    cmd->add_option("--cell", args.cell, "Work-plane grid cell in metres (default 0.25)")->check(positiveNumber())->group(advanced);
     cmd->add_option("--cell-paths", args.cellPaths, "Illuminance samples per work-plane cell (default " +
                                                         std::to_string(defaults.cellPaths) + ")")
-        ->check(wholeNumber(1));
-    cmd->add_option("--threads", threads, "Worker threads (default: all cores)")->check(wholeNumber(0));
-    addSeedOption(cmd, args.seed);
+        ->check(wholeNumber(1))
+        ->group(advanced);
     auto* camera = cmd->add_option("--camera", args.camera, "render.png from the scene's camera of that name (\"cameras\")")
                        ->check(CLI::Validator([](std::string& name) { return name.empty() ? "expected a camera's name, got \"\"" : ""; },
                                               "NAME"));
@@ -99,11 +101,13 @@ OutputOptions outputOptions(const PictureArgs& args, const Scene& scene) {
     o.seed = args.seed.value_or(scene.optimizer.seed);
     o.camera = chosenCamera(args, scene);
     o.pdf = !args.noPdf;
+    o.tracing.sunPatches = scene.optimizer.samplesSunPatches(SunPatchUse::On, false);
+    o.tracing.exteriorSun = scene.optimizer.exteriorSun;
     return o;
 }
 
 void runPictures(const PictureArgs& args, bool report) {
-    Scene scene = io::loadScene(args.scene);
+    Scene scene = loadSceneWithSettings(args);
     Layout initial = initialLayout(scene);
     Layout layout = args.layout.empty() ? initial : io::readLayout(args.layout, scene);
     std::optional<DaylightEnvironment> daylight;

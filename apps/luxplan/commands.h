@@ -50,5 +50,7 @@ void registerOptimizeCommand(CLI::App& app, int& threads);
 void registerSunCommand(CLI::App& app);
 void registerRenderCommand(CLI::App& app, int& threads);
 void registerReportCommand(CLI::App& app, int& threads);
+// `luxplan settings`: every --set key (the scene file's "optimizer" keys) with its type, default and meaning.
+void registerSettingsCommand(CLI::App& app);
 
 }  // namespace luxplan::cli

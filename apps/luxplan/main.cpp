@@ -1,13 +1,24 @@
 // luxplan: furniture layout optimization guided by illumination goals.
 #include <iostream>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include <tbb/global_control.h>
 
 #include "commands.h"
+#include "shared_options.h"
 #include <luxplan/core/error.h>
 
 int main(int argc, char** argv) {
+    // --help-all: --help with the advanced options shown and every --set key listed.
+    std::vector<char*> args(argv, argv + argc);
+    static char help[] = "--help";
+    for (char*& a : args)
+        if (std::string(a) == "--help-all") {
+            luxplan::cli::setHelpAll(true);
+            a = help;
+        }
     CLI::App app{"luxplan: arrange furniture so that design rules and lighting goals hold"};
     app.require_subcommand(1);
     app.set_version_flag("--version", "luxplan 0.1.0");
@@ -19,6 +30,7 @@ int main(int argc, char** argv) {
     luxplan::cli::registerSunCommand(app);
     luxplan::cli::registerRenderCommand(app, threads);
     luxplan::cli::registerReportCommand(app, threads);
+    luxplan::cli::registerSettingsCommand(app);
     // The one place that sets the thread count: CLI11 runs this after storing the options
     // and before the subcommand's callback, and every parallel loop (core/parallel.h) runs
     // on TBB's default arena, which the control limits for as long as it lives.
@@ -27,7 +39,7 @@ int main(int argc, char** argv) {
         if (threads > 0) parallelism.emplace(tbb::global_control::max_allowed_parallelism, size_t(threads));
     });
     try {
-        app.parse(argc, argv);
+        app.parse(int(args.size()), args.data());
     } catch (const CLI::RuntimeError& e) {
         return e.get_exit_code();  // a run stopped by a signal: 128 + the signal
     } catch (const CLI::ParseError& e) {

@@ -3,7 +3,6 @@
 #include <charconv>
 #include <cmath>
 #include <limits>
-#include <sstream>
 #include <string>
 
 namespace luxplan::cli {
@@ -34,25 +33,17 @@ CLI::Validator wholeNumber(int least) {
         "INT >= " + std::to_string(least));
 }
 
-CLI::Validator positiveNumber() { return finiteNumber(false); }
-
-CLI::Validator finiteNumber(bool zeroToo, double most) {
+CLI::Validator positiveNumber() {
     return CLI::Validator(
-        [zeroToo, most](std::string& text) -> std::string {
+        [](std::string& text) -> std::string {
             double v = 0;
             const char* end = text.data() + text.size();
             auto [ptr, ec] = std::from_chars(text.data(), end, v);
             if (ec != std::errc() || ptr != end || text.empty()) return "expected a number, got " + text;
-            const bool ok = std::isfinite(v) && (v > 0 || (zeroToo && v == 0));
-            if (!ok) return std::string("must be a finite number ") + (zeroToo ? ">= 0" : "> 0") + ", got " + text;
-            if (v > most) {
-                std::ostringstream bound;
-                bound << most;
-                return "must be at most " + bound.str() + ", got " + text;
-            }
+            if (!std::isfinite(v) || v <= 0) return "must be a finite number > 0, got " + text;
             return "";
         },
-        zeroToo ? "NUMBER >= 0" : "NUMBER > 0");
+        "NUMBER > 0");
 }
 
 CLI::Option* addSeedOption(CLI::App* cmd, std::optional<uint64_t>& seed) {

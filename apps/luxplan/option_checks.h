@@ -15,13 +15,9 @@ namespace luxplan::cli {
 CLI::Validator wholeNumber(int least);
 // A finite number > 0 (--cell, ...).
 CLI::Validator positiveNumber();
-// --light-roulette's most: a floor that may add ten times a path's variance.
-constexpr double kMostLightRoulette = 10;
 // --suggestions' most: each is measured again at the report's accuracy, and a designer
 // reads a handful.
 constexpr int kMostSuggestions = 50;
-// ... or >= 0 where zeroToo (--light-roulette, 0 being off), and at most `most`.
-CLI::Validator finiteNumber(bool zeroToo, double most = std::numeric_limits<double>::infinity());
 // --seed: a whole number in [0, 2^64 - 1], read exactly; unset when not given.
 CLI::Option* addSeedOption(CLI::App* cmd, std::optional<uint64_t>& seed);
 

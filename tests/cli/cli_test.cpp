@@ -78,9 +78,9 @@ TEST(Cli, OptionValuesAreCheckedAndSeedsReadExactly) {
     expectRefused("--threads -1", "--threads: expected a whole number, got -1 (at least 0)");
     expectRefused("--seed 18446744073709551616", "--seed: expected a whole number up to 18446744073709551615, got 18446744073709551616");
     expectRefused("--seed 1e3", "--seed: expected a whole number, got 1e3");
-    expectRefused("--light-roulette -1", "--light-roulette: must be a finite number >= 0, got -1");
-    expectRefused("--light-roulette nan", "--light-roulette: must be a finite number >= 0, got nan");
-    expectRefused("--light-roulette 11", "--light-roulette: must be at most 10, got 11");
+    expectRefused("--set light_roulette=-1", "--set: light_roulette=-1: value -1 outside [0, 10]");
+    expectRefused("--set light_roulette=nan", "--set: light_roulette=nan: expected a number, got a string");
+    expectRefused("--set light_roulette=11", "--set: light_roulette=11: value 11 outside [0, 10]");
     Result r = run("render " + kDemo + " --cell 0 -o x");
     EXPECT_EQ(r.exitCode, 2) << r.output;
     EXPECT_NE(r.output.find("--cell: must be a finite number > 0, got 0"), std::string::npos) << r.output;
@@ -133,13 +133,13 @@ TEST(Cli, MeasureJsonFollowsTheContract) {
     EXPECT_FALSE(p.contains("light_floor"));
     // The light samples' roulette: each sampler's floor from its pilot, the same at
     // any thread count (here with no surface for a path to meet, the same values too).
-    Result rouletted = run("measure " + file.string() + " --paths 32 --seed 3 --threads 2 --light-roulette 2 --json");
+    Result rouletted = run("measure " + file.string() + " --paths 32 --seed 3 --threads 2 --set light_roulette=2 --json");
     ASSERT_EQ(rouletted.exitCode, 0) << rouletted.output;
     auto withFloors = nlohmann::json::parse(rouletted.output);
     EXPECT_EQ(withFloors["light_roulette"], 2.0);
     EXPECT_GT(withFloors["samplers"][0]["light_floor"].get<double>(), 0);
     EXPECT_EQ(withFloors["samplers"][0]["points"], p["points"]);
-    Result oneThread = run("measure " + file.string() + " --paths 32 --seed 3 --threads 1 --light-roulette 2 --json");
+    Result oneThread = run("measure " + file.string() + " --paths 32 --seed 3 --threads 1 --set light_roulette=2 --json");
     EXPECT_EQ(nlohmann::json::parse(oneThread.output)["samplers"], withFloors["samplers"]);
 }
 
@@ -268,7 +268,7 @@ TEST(Cli, OptimizeFlatRunsTheGrouplessBaselineAndItsLayoutsReadBack) {
     test::TempDir dir;
     auto scene = dir.write("scene.json", kDiningSet);
     auto out = dir.path() / "flat";
-    Result r = run("optimize " + scene.string() + " -o " + out.string() + " --flat --threads 1 --no-pictures");
+    Result r = run("optimize " + scene.string() + " -o " + out.string() + " --set flat=true --threads 1 --no-pictures");
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_NE(r.output.find("flat: 3 objects without groups, 4 cohesion constraints"), std::string::npos) << r.output;
     auto report = nlohmann::json::parse(std::ifstream(out / "report.json"));
@@ -285,7 +285,7 @@ TEST(Cli, OptimizeFlatRunsTheGrouplessBaselineAndItsLayoutsReadBack) {
         }
     }
     // layout.json is in the scene's hierarchy and validates against it; layout_flat.json
-    // measures (--flat) exactly as the report did.
+    // measures (flat=true) exactly as the report did.
     auto layout = nlohmann::json::parse(std::ifstream(out / "layout.json"));
     for (const char* e : {"set", "set.chair1", "set.chair2"}) EXPECT_TRUE(layout["entities"].contains(e)) << e;
     Result v = run("validate " + scene.string() + " --layout " + (out / "layout.json").string());
@@ -295,7 +295,7 @@ TEST(Cli, OptimizeFlatRunsTheGrouplessBaselineAndItsLayoutsReadBack) {
     const std::string repeat =
         " --paths 64 --json --seed " + std::to_string(report["report_measurement"]["seed"].get<uint64_t>());
     EXPECT_NE(report["report_measurement"]["seed"].get<uint64_t>(), 4u);
-    Result m = run("measure " + scene.string() + " --flat --layout " + (out / "layout_flat.json").string() + repeat);
+    Result m = run("measure " + scene.string() + " --set flat=true --layout " + (out / "layout_flat.json").string() + repeat);
     ASSERT_EQ(m.exitCode, 0) << m.output;
     auto measured = nlohmann::json::parse(m.output.substr(m.output.find('{')));
     EXPECT_DOUBLE_EQ(measured["samplers"][0]["value"].get<double>(), report["samplers"][0]["value"].get<double>());
@@ -325,7 +325,7 @@ TEST(Cli, OptimizeFindsTheLitRegionAndWritesItsOutputs) {
     // The search's light samples' roulette: its floor per sampler (none with it off).
     EXPECT_GT(report["samplers"][0]["search_light_floor"].get<double>(), 0) << report["samplers"][0].dump();
     auto every = dir.path() / "every";
-    ASSERT_EQ(run("optimize " + scene.string() + " -o " + every.string() + " --threads 2 -q --no-pictures --iterations 20 --light-roulette 0").exitCode, 0);
+    ASSERT_EQ(run("optimize " + scene.string() + " -o " + every.string() + " --threads 2 -q --no-pictures --iterations 20 --set light_roulette=0").exitCode, 0);
     EXPECT_FALSE(nlohmann::json::parse(std::ifstream(every / "report.json"))["samplers"][0].contains("search_light_floor"));
     // The layout reads back.
     Result m = run("measure " + scene.string() + " --layout " + (out / "layout.json").string() + " --paths 8 --json");
@@ -336,7 +336,7 @@ TEST(Cli, OptimizeFindsTheLitRegionAndWritesItsOutputs) {
     EXPECT_EQ(nlohmann::json::parse(std::ifstream(again / "layout.json")), layout);
 }
 
-// --check-cache: every path the path cache reads back is traced again and compared;
+// check_cache: every path the path cache reads back is traced again and compared;
 // the numbers, and so the layout, are those of the run without it (the chairs' moves
 // leave the table's paths that miss them to the cache). It needs the cache.
 TEST(Cli, OptimizeChecksItsPathCacheAgainstFreshTraces) {
@@ -345,7 +345,7 @@ TEST(Cli, OptimizeChecksItsPathCacheAgainstFreshTraces) {
     auto plain = dir.path() / "plain", checked = dir.path() / "checked";
     const std::string common = " --threads 2 -q --no-pictures --iterations 60";
     ASSERT_EQ(run("optimize " + scene.string() + " -o " + plain.string() + common).exitCode, 0);
-    Result r = run("optimize " + scene.string() + " -o " + checked.string() + common + " --check-cache");
+    Result r = run("optimize " + scene.string() + " -o " + checked.string() + common + " --set check_cache=true");
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_NE(r.output.find("reused paths traced again from scratch gave the same numbers, bit for bit"), std::string::npos)
         << r.output;
@@ -357,21 +357,22 @@ TEST(Cli, OptimizeChecksItsPathCacheAgainstFreshTraces) {
     EXPECT_FALSE(nlohmann::json::parse(std::ifstream(plain / "report.json")).contains("path_cache_check"));
     EXPECT_EQ(nlohmann::json::parse(std::ifstream(checked / "layout.json")),
               nlohmann::json::parse(std::ifstream(plain / "layout.json")));
-    for (const char* other : {"--full-evaluation", "--fresh-noise"}) {
+    for (const char* other : {"full_evaluation", "fresh_noise"}) {
         Result bad = run("optimize " + scene.string() + " -o " + (dir.path() / "bad").string() + common +
-                         " --check-cache " + other);
-        EXPECT_NE(bad.exitCode, 0) << other;
-        EXPECT_NE(bad.output.find("--check-cache"), std::string::npos) << bad.output;
+                         " --set check_cache=true --set " + other + "=true");
+        EXPECT_EQ(bad.exitCode, 2) << other;
+        EXPECT_NE(bad.output.find(std::string("\"check_cache\" and \"") + other + "\" exclude each other"), std::string::npos)
+            << bad.output;
     }
 }
 
-// --snapshots N: snapshots.json holds the best layout at N checkpoints with its wall
+// snapshots N: snapshots.json holds the best layout at N checkpoints with its wall
 // time and lighting evaluations; each layout reads back with measure --layout.
 TEST(Cli, OptimizeSnapshotsTheBestLayoutSoFar) {
     test::TempDir dir;
     auto scene = dir.write("scene.json", kLightSeeking);
     auto out = dir.path() / "out";
-    Result r = run("optimize " + scene.string() + " -o " + out.string() + " --threads 1 -q --no-pictures --snapshots 3");
+    Result r = run("optimize " + scene.string() + " -o " + out.string() + " --threads 1 -q --no-pictures --set snapshots=3");
     ASSERT_EQ(r.exitCode, 0) << r.output;
     auto snapshots = nlohmann::json::parse(std::ifstream(out / "snapshots.json"));
     EXPECT_EQ(snapshots["seed"], 2);
@@ -391,7 +392,7 @@ TEST(Cli, OptimizeSnapshotsTheBestLayoutSoFar) {
     auto first = dir.write("first.json", list[0]["layout"].dump());
     Result m = run("measure " + scene.string() + " --layout " + first.string() + " --paths 8 --json");
     EXPECT_EQ(m.exitCode, 0) << m.output;
-    // Without --snapshots, no file.
+    // Without snapshots, no file.
     auto plain = dir.path() / "plain";
     ASSERT_EQ(run("optimize " + scene.string() + " -o " + plain.string() + " --threads 1 -q --no-pictures").exitCode, 0);
     EXPECT_FALSE(std::filesystem::exists(plain / "snapshots.json"));

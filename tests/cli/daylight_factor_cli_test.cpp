@@ -141,8 +141,8 @@ TEST(DaylightFactorCli, RefusesScenesWithoutOpeningsOrPlanarSamplers) {
                                                      "factor is measured at a planar sampler's points (a work plane)"),
               std::string::npos)
         << r.output;
-    // Options that mean nothing under the overcast sky are command-line mistakes.
-    for (const char* option : {"--at 2026-06-21T12:00+02:00", "--adaptive", "--light-roulette 0.2"}) {
+    // Options and settings that mean nothing under the overcast sky are command-line mistakes.
+    for (const char* option : {"--at 2026-06-21T12:00+02:00", "--set adaptive=true", "--set light_roulette=0.2"}) {
         r = test::runCli("measure " + closedFile.string() + " --daylight-factor --paths 4 " + option);
         EXPECT_EQ(r.exitCode, 2) << option << ": " << r.output;
         EXPECT_NE(r.output.find("excludes"), std::string::npos) << r.output;

@@ -1,4 +1,4 @@
-// `measure --exterior-sun`: the sun's light off the facade across the street in the
+// `measure --set exterior_sun=on|off`: the sun's light off the facade across the street in the
 // paper's afternoon office, taken where the sky's portal samples meet it or found by
 // BSDF sampling alone; off in the morning, when the sun is behind that facade.
 #include <gtest/gtest.h>
@@ -24,7 +24,7 @@ nlohmann::json measure(const std::string& scene, int paths, const std::string& e
 // The desks read the same either way (within their errors), with much less noise.
 TEST(ExteriorSunCli, TheAfternoonOfficeReadsTheSameWithLessNoise) {
     nlohmann::json on = measure("fig7-office-afternoon.json", 256),
-                   off = measure("fig7-office-afternoon.json", 256, "--exterior-sun off");
+                   off = measure("fig7-office-afternoon.json", 256, "--set exterior_sun=off");
     ASSERT_FALSE(on.is_null());
     ASSERT_FALSE(off.is_null());
     EXPECT_EQ(on["exterior_sun"], true);
@@ -37,9 +37,9 @@ TEST(ExteriorSunCli, TheMorningSunIsBehindTheFacade) {
 }
 
 TEST(ExteriorSunCli, AnUnknownChoiceIsAnError) {
-    test::CliResult r = test::runCli("measure " + kScenes + "fig7-office-afternoon.json --paths 4 --exterior-sun maybe");
-    EXPECT_NE(r.exitCode, 0);
-    EXPECT_NE(r.output.find("--exterior-sun"), std::string::npos) << r.output;
+    test::CliResult r = test::runCli("measure " + kScenes + "fig7-office-afternoon.json --paths 4 --set exterior_sun=maybe");
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.output.find("exterior_sun=maybe: unknown exterior_sun \"maybe\""), std::string::npos) << r.output;
 }
 
 }  // namespace

@@ -1,4 +1,4 @@
-// `--sun-patches`: measure's choice of estimator, and optimize's (the search's and the
+// The setting sun_patches: measure's choice of estimator, and optimize's (the search's and the
 // report's apart).
 #include <gtest/gtest.h>
 
@@ -24,7 +24,7 @@ nlohmann::json measure(const std::string& extra) {
 // The same values either way (within their errors), with less noise in all over the
 // sunlit office.
 TEST(SunPatchesCli, MeasureGivesTheSameValuesWithLessNoise) {
-    nlohmann::json on = measure(""), off = measure("--sun-patches off");
+    nlohmann::json on = measure(""), off = measure("--set sun_patches=off");
     ASSERT_FALSE(on.is_null());
     ASSERT_FALSE(off.is_null());
     EXPECT_EQ(on["sun_patches"], true);
@@ -33,12 +33,12 @@ TEST(SunPatchesCli, MeasureGivesTheSameValuesWithLessNoise) {
 }
 
 TEST(SunPatchesCli, AnUnknownChoiceIsAnError) {
-    test::CliResult r = test::runCli("measure " + kOffice + " --paths 4 --sun-patches maybe");
-    EXPECT_NE(r.exitCode, 0);
-    EXPECT_NE(r.output.find("--sun-patches"), std::string::npos) << r.output;
-    r = test::runCli("optimize " + kOffice + " -o /nonexistent --sun-patches sometimes");
-    EXPECT_NE(r.exitCode, 0);
-    EXPECT_NE(r.output.find("--sun-patches"), std::string::npos) << r.output;
+    test::CliResult r = test::runCli("measure " + kOffice + " --paths 4 --set sun_patches=maybe");
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.output.find("sun_patches=maybe: unknown sun_patches \"maybe\""), std::string::npos) << r.output;
+    r = test::runCli("optimize " + kOffice + " -o /nonexistent --set sun_patches=sometimes");
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.output.find("(on, off or report)"), std::string::npos) << r.output;
 }
 
 // optimize's default samples the patches in the report but not in the search: the search
@@ -53,7 +53,7 @@ TEST(SunPatchesCli, OptimizeSamplesThemForTheReportOnly) {
         std::ifstream layout(out / "layout.json"), report(out / "report.json");
         return std::make_pair(nlohmann::json::parse(layout), nlohmann::json::parse(report));
     };
-    const auto standard = run("report", ""), off = run("off", "--sun-patches off"), on = run("on", "--sun-patches on");
+    const auto standard = run("report", ""), off = run("off", "--set sun_patches=off"), on = run("on", "--set sun_patches=on");
     EXPECT_EQ(standard.first, off.first);
     EXPECT_EQ(standard.second["search_estimate"], off.second["search_estimate"]);
     EXPECT_NE(standard.second["C"], off.second["C"]);

@@ -137,7 +137,7 @@ private:
             scene_.objective.lightingWeight = o.number("lighting_weight", 0.5, kUnit);
             o.finish();
         }
-        if (f.has("optimizer")) readOptimizer(f.get("optimizer"), f.at("optimizer"));
+        readOptimizer(f.has("optimizer") ? &f.get("optimizer") : nullptr, f.at("optimizer"));
         f.finish();
         checkUniqueNames();
     }
@@ -176,49 +176,24 @@ private:
         scene_.cameras.push_back(c);
     }
 
-    void readOptimizer(const Json& j, const std::string& path) {
-        Fields o(sink_, j, path);
-        OptimizerSettings& s = scene_.optimizer;
-        s.iterations = o.integer("iterations", Range::atLeast(0)).value_or(10000);
-        s.seed = o.unsignedInteger("seed").value_or(1);
-        auto paths = o.integer("paths_per_point", Range::atLeast(1));
-        s.pathsPerPoint = paths.value_or(1000);
-        s.searchPathsPerPoint = paths.value_or(64);
-        const auto report = o.integer("report_paths_per_point", Range::atLeast(1));
-        s.reportPathsPerPoint = report.value_or(std::max(kDefaultReportPaths, s.pathsPerPoint));
-        // A file that sets the report's count alone keeps its selection at that count
-        // (as before the two were apart), or at the default where that is fewer.
-        s.selectionPathsPerPoint = o.integer("selection_paths_per_point", Range::atLeast(1))
-                                       .value_or(std::min(s.reportPathsPerPoint, std::max(kDefaultSelectionPaths, s.pathsPerPoint)));
-        s.innerIterations = o.integer("inner_iterations", Range::closed(0, 1000)).value_or(s.innerIterations);
-        s.nested = o.boolean("nested").value_or(s.nested);
-        s.polishShare = o.number("polish_share", s.polishShare, Range::closed(0, 0.9));
-        s.guided = o.boolean("guided").value_or(s.guided);
-        s.suggestions = o.integer("suggestions", Range::closed(0, 50)).value_or(s.suggestions);
-        s.margin = o.number("margin", s.margin, Range::closed(0, 5));
-        s.adaptiveShare = o.boolean("adaptive_share").value_or(s.adaptiveShare);
-        if (auto h = o.string("hierarchy")) {
-            static const EnumNames<bool> hierarchies{{{false, "hierarchical"}, {true, "flat"}}};
-            if (auto flat = hierarchies.parse(*h)) s.flat = *flat;
-            else o.error("hierarchy", hierarchies.unknown("hierarchy", *h));
+    // The settings' one table (settings_table.h), with the command line's --set over the file's keys.
+    void readOptimizer(const Json* j, const std::string& path) {
+        const std::vector<SettingOverride>& set = options_.settings;
+        if (set.empty() || (j && !j->is_object())) {
+            if (!j) return;
+            Fields o(sink_, *j, path);
+            readSettings(o, scene_.optimizer);
+            o.finish();
+            return;
         }
-        if (auto start = o.string("start")) {
-            static const EnumNames<bool> starts{{{false, "uniform"}, {true, "scene"}}};
-            if (auto scene = starts.parse(*start)) s.startFromScene = *scene;
-            else o.error("start", starts.unknown("start", *start));
+        Json merged = j ? *j : Json::object();
+        std::map<std::string, std::string> keyPaths;
+        for (const SettingOverride& o : set) {
+            merged[o.key] = o.value;
+            keyPaths[o.key] = "--set " + o.key + "=" + (o.value.is_string() ? o.value.get<std::string>() : o.value.dump());
         }
-        if (o.has("temperature")) {
-            const Json& t = o.get("temperature");
-            if (t.is_number()) {
-                s.constantTemperature = true;
-                s.temperatureStart = s.temperatureEnd = o.number("temperature", 0.1, Range::positive());
-            } else {
-                Fields tf(sink_, t, o.at("temperature"), "a number or {\"start\", \"end\"}");
-                s.temperatureStart = tf.number("start", 0.1, Range::positive());
-                s.temperatureEnd = tf.number("end", 0.001, Range::positive());
-                tf.finish();
-            }
-        }
+        Fields o(sink_, merged, path, keyPaths);
+        readSettings(o, scene_.optimizer);
         o.finish();
     }
 

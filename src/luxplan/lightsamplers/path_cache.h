@@ -19,7 +19,7 @@
 // first in a fixed order, not the BVH of the moment (EmbreeScene::intersect), but for
 // faces of two entities' different materials that overlap in one plane and that a path
 // meets before any see-through surface (docs/light-transport.md, "What is left",
-// optimize --check-cache finds them). What a measurement traces goes
+// optimize --set check_cache=true finds them). What a measurement traces goes
 // to a pending delta: commit() makes it the committed state (the optimizer accepted the
 // layout), discard() drops it.
 #pragma once

@@ -52,9 +52,9 @@ OptimizerOptions optimizerOptions(const Scene& scene) {
     const OptimizerSettings& s = scene.optimizer;
     o.iterations = s.iterations;
     o.seed = s.seed;
-    o.hierarchy = s.flat ? Hierarchy::Flat : Hierarchy::Hierarchical;
+    o.hierarchy = s.flat || s.flatScene ? Hierarchy::Flat : Hierarchy::Hierarchical;
     o.innerIterations = s.innerIterations;
-    o.focusInner = s.nested;
+    o.focusInner = s.nested && !s.cycle;
     o.schedule.kind = s.constantTemperature ? Schedule::Kind::Constant : Schedule::Kind::Geometric;
     o.schedule.start = s.temperatureStart;
     o.schedule.end = s.temperatureEnd;
@@ -64,6 +64,9 @@ OptimizerOptions optimizerOptions(const Scene& scene) {
     o.suggestions = s.suggestions;
     o.marginZ = s.margin;
     o.adaptiveShare = s.adaptiveShare;
+    o.noiseAware = !s.noiseBlind;
+    o.delayedAcceptance = !s.singleTest;
+    o.snapshots = s.snapshots;
     return o;
 }
 

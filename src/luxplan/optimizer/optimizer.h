@@ -137,7 +137,8 @@ struct OptimizerOptions {
     int traceEvery = 0;          // iterations between trace rows; 0: about 10^4 rows per run
 };
 
-// Iterations and seed from the scene's "optimizer" object; the rest at their defaults.
+// The search's settings from the scene's "optimizer" object (with any --set over it:
+// scene/settings.h); the rest at their defaults.
 OptimizerOptions optimizerOptions(const Scene& scene);
 
 struct MoveStats {

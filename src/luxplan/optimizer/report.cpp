@@ -213,7 +213,7 @@ std::string reportJson(const Scene& scene, const OptimizerResult& r) {
         j["suggestions"] = list;
     }
     j["levels"] = levels;
-    if (r.cacheCheck.on) {  // optimize --check-cache
+    if (r.cacheCheck.on) {  // optimize --set check_cache=true
         Json first = Json::array();
         for (const CacheDifference& d : r.cacheCheck.first)
             first.push_back({{"evaluation", d.evaluation},

@@ -19,6 +19,7 @@
 #include <luxplan/materials/material.h>
 #include <luxplan/scene/mesh.h>
 #include <luxplan/scene/region.h>
+#include <luxplan/scene/settings.h>
 #include <luxplan/scene/voxels.h>
 
 namespace luxplan {
@@ -164,37 +165,6 @@ struct OverlapRule {
 struct Objective {
     double lightingWeight = 0.5;
     double cost(double lighting, double geometry) const { return lightingWeight * lighting + (1 - lightingWeight) * geometry; }
-};
-
-// The default paths per point of the report and `measure` (report_paths_per_point):
-// with it every point of a window-lit room under the CIE overcast sky reads within 1%
-// of the converged value (3 times its seed-to-seed spread; docs/light-transport.md,
-// "How accurate a default measurement is").
-inline constexpr int kDefaultReportPaths = 32000;
-// ... and of the search's independent measurements (selection_paths_per_point): dozens
-// in a run, which choose among layouts and report nothing.
-inline constexpr int kDefaultSelectionPaths = 1000;
-
-struct OptimizerSettings {
-    int iterations = 10000;
-    uint64_t seed = 1;
-    int pathsPerPoint = 1000;        // per sampler point: `measure`'s default, and the search's when given
-    int searchPathsPerPoint = 64;    // what the search uses: paths_per_point if the file gives it, else 64
-    int reportPathsPerPoint = kDefaultReportPaths;  // the final layout's report, `measure` and `render`
-    // The search's independent measurements: a zero cost's confirmation, the candidates'
-    // re-measures (the report's count where the file sets that alone: as before).
-    int selectionPathsPerPoint = kDefaultSelectionPaths;
-    bool flat = false;               // ignore groups (the paper's Figure 6 comparison)
-    int innerIterations = 0;         // object-level proposals per group-level one; 0: by degrees of freedom
-    bool nested = false;             // object-level proposals move the members of the group just proposed
-    bool constantTemperature = false;
-    double temperatureStart = 0.1, temperatureEnd = 0.001;
-    bool startFromScene = false;     // start from the scene's placement instead of uniform draws
-    double polishShare = 0.2;        // the run's last share: a zero-temperature polish of the best
-    bool guided = true;              // the guided move from the light map (optimizer/light_map.h)
-    int suggestions = 0;             // distinct layouts written beside the result (optimize --suggestions)
-    double margin = 2;               // the search's margin inside every lighting band, in standard errors
-    bool adaptiveShare = true;       // the object level's share by what the levels' proposals yield
 };
 
 // The scene file's names for these enums ("south", "glossy"): one table each
