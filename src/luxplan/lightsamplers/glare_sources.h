@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-#include <luxplan/lightsamplers/sampler_result.h>
+#include <luxplan/scene/sampler_result.h>
 #include <luxplan/lightsamplers/sampler_type.h>
 
 namespace luxplan {

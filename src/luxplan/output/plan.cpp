@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include <luxplan/core/estimator.h>
+#include <luxplan/core/format.h>
 #include <luxplan/core/parallel.h>
 #include <luxplan/core/rng.h>
 #include <luxplan/scene/room.h>
@@ -318,17 +319,17 @@ Image renderPlan(const Scene& scene, const Layout& layout, const PlanOptions& op
             if (!spec.type->hasPointStatistics() || std::string_view(spec.type->unit()) != "lx") continue;
             const SamplerResult& r = (*data.samplers)[k];
             const PointStatistics st = pointStatistics(r.points, r.pointErrors);
-            std::string target = formatValue(spec.targetMin);
+            std::string target = compactNumber(spec.targetMin);
             if (std::isfinite(spec.targetMax)) {
                 target += '-';
-                target += formatValue(spec.targetMax);
+                target += compactNumber(spec.targetMax);
             } else {
                 target += '+';
             }
             char row[300];
             std::snprintf(row, sizeof row, "%-*s %8s %8s %8s %6.2f  %s", int(nameWidth), spec.name.c_str(),
-                          formatValue(st.mean.value).c_str(), formatValue(st.min.value).c_str(),
-                          formatValue(st.max.value).c_str(), st.u0.value, target.c_str());
+                          compactNumber(st.mean.value).c_str(), compactNumber(st.min.value).c_str(),
+                          compactNumber(st.max.value).c_str(), st.u0.value, target.c_str());
             tableRows.push_back({row, allMet(lightingTerms(spec, r))});
         }
     const int tableHeight = tableRows.empty() ? 0 : int(tableRows.size() + 1) * (kLineAdvance + 3) + 8;
@@ -417,7 +418,7 @@ Image renderPlan(const Scene& scene, const Layout& layout, const PlanOptions& op
             for (const ContourSegment& seg : segments)
                 image.drawLine(toPixels(seg.a), toPixels(seg.b), kContourColor, bandEdge ? 2 : 1, bandEdge ? 0.9 : 0.6);
             const ContourSegment& mid = segments[segments.size() / 2];
-            contourLabels.push_back({(toPixels(mid.a) + toPixels(mid.b)) * 0.5 - Vec2(0, options.labelHeight / 2), formatValue(level)});
+            contourLabels.push_back({(toPixels(mid.a) + toPixels(mid.b)) * 0.5 - Vec2(0, options.labelHeight / 2), compactNumber(level)});
         }
     }
 
@@ -524,7 +525,7 @@ Image renderPlan(const Scene& scene, const Layout& layout, const PlanOptions& op
         if (data.samplers && k < data.samplers->size()) {
             double v = (*data.samplers)[k].value;
             color = allMet(lightingTerms(spec, (*data.samplers)[k])) ? kPassColor : kFailColor;
-            text.append(" ").append(formatValue(std::round(v * 10) / 10)).append(" ").append(spec.type->unit());
+            text.append(" ").append(compactNumber(std::round(v * 10) / 10)).append(" ").append(spec.type->unit());
         }
         auto poly = footprint(drawing.outline, map);
         if (drawing.fillOpacity > 0) image.fillPolygon(poly, color, drawing.fillOpacity);
@@ -544,8 +545,8 @@ Image renderPlan(const Scene& scene, const Layout& layout, const PlanOptions& op
         std::snprintf(text, sizeof text, "lx at %.2g m", g.height - bounds.lo.z);
         drawLegend(image, falseColor, lx, ly, 16, lh, text);
         const PointStatistics st = workPlaneStatistics(g, free);
-        std::snprintf(text, sizeof text, "work plane\nEm   %s lx\nEmin %s lx\nEmax %s lx\nU0   %.2f", formatValue(st.mean.value).c_str(),
-                      formatValue(st.min.value).c_str(), formatValue(st.max.value).c_str(), st.u0.value);
+        std::snprintf(text, sizeof text, "work plane\nEm   %s lx\nEmin %s lx\nEmax %s lx\nU0   %.2f", compactNumber(st.mean.value).c_str(),
+                      compactNumber(st.min.value).c_str(), compactNumber(st.max.value).c_str(), st.u0.value);
         const double sx = lx - 50, sy = ly + lh + 16;
         image.drawText(sx, sy, text, kBlack, 1, TextAlign::Left);
         labels.reserve(lx - 50, ly - 14, image.width(), sy + textHeight(text) + 2);
