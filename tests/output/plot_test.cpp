@@ -64,10 +64,10 @@ TEST(Plot, EmptyAndInfeasibleTracesStillDraw) {
     Image none = plotConvergence(infeasible);
     EXPECT_EQ(countPixels(none, isBest), 0);
     // The "no data" note, in the current cost's grey at the plot box's centre (the box
-    // from x 70 to width - 20, y 20 to height - 50), and no other grey: the same pixels
-    // as the note drawn alone.
+    // from x 70 to width - 20, y 40 under the title to height - 50), and no other grey:
+    // the same pixels as the note drawn alone.
     Image note(none.width(), none.height(), kWhite);
-    note.drawText((70 + none.width() - 20) / 2.0, (20 + none.height() - 50) / 2.0, "no data", Rgb{150, 150, 150}, 2,
+    note.drawText((70 + none.width() - 20) / 2.0, (40 + none.height() - 50) / 2.0, "no data", Rgb{150, 150, 150}, 2,
                   TextAlign::Center);
     ASSERT_GT(countPixels(note, isCurrent), 50);
     EXPECT_EQ(countPixels(none, isCurrent), countPixels(note, isCurrent));
