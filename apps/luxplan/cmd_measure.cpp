@@ -23,6 +23,7 @@
 #include <luxplan/checks/scene_warnings.h>
 #include <luxplan/constraints/geometry_cost.h>
 #include <luxplan/constraints/penalty.h>
+#include <luxplan/core/format.h>
 #include <luxplan/daylight/datetime.h>
 #include <luxplan/daylight/daylight.h>
 #include <luxplan/io/layout_io.h>
@@ -38,14 +39,6 @@ namespace luxplan::cli {
 namespace {
 
 nlohmann::json bound(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
-
-// A standard error as the table shows it: n/a from fewer than 2 paths per point.
-std::string errorText(double error, int paths, int digits) {
-    if (paths < 2) return "n/a";
-    std::ostringstream out;
-    out << std::fixed << std::setprecision(digits) << error;
-    return out.str();
-}
 
 struct MeasureArgs : SharedArgs {
     bool json = false, daylightFactor = false;
@@ -183,7 +176,7 @@ void runDaylightFactor(const MeasureArgs& args, const Scene& scene, const Layout
         const SamplerResult& m = df.measured.samplers[i];
         const DaylightFactor& f = df.factors[i];
         std::cout << std::left << std::setw(24) << s.name << std::right << std::fixed << std::setprecision(2) << std::setw(10)
-                  << f.percent << std::setw(10) << errorText(f.stdError, m.pathsPerPoint, 2) << std::setw(10) << f.min
+                  << f.percent << std::setw(10) << (m.pathsPerPoint < 2 ? "n/a" : fixedDigits(f.stdError, 2)) << std::setw(10) << f.min
                   << std::setprecision(1) << std::setw(12) << m.value << std::setw(10) << (f.points.size() - m.covered.size())
                   << "\n";
     }
@@ -251,16 +244,17 @@ void runMeasure(const MeasureArgs& args) {
         for (size_t k = 0; k < scene.samplers.size(); ++k) {
             const LightSamplerSpec& s = scene.samplers[k];
             const SamplerResult& r = result.samplers[k];
+            const SamplerRow row(s, r);
             nlohmann::json sampler = {{"name", s.name},
                                       {"type", s.type->name()},
                                       {"unit", s.type->unit()},
                                       {"value", r.value},
                                       {"std_error", r.standardError},
                                       {"target", {bound(s.targetMin), bound(s.targetMax)}},
-                                      {"penalty", lightingPenalty(s, r.value)},
+                                      {"penalty", row.penalty()},
                                       {"points", r.points},
                                       {"point_std_errors", r.pointErrors}};
-            sampler.update(nlohmann::json(samplerStatisticsJson(s, r)));
+            sampler.update(nlohmann::json(row.detailsJson()));
             // The points furniture covers (null in `points`), for every sampler with point statistics.
             if (s.type->hasPointStatistics()) sampler["covered"] = r.covered;
             // Only when it happened, so that the usual output stays as it was.
@@ -291,39 +285,21 @@ void runMeasure(const MeasureArgs& args) {
               << "penalty" << "\n";
     for (size_t k = 0; k < scene.samplers.size(); ++k) {
         const LightSamplerSpec& s = scene.samplers[k];
-        const SamplerResult& r = result.samplers[k];
-        const std::vector<LightingTerm> terms = lightingTerms(s, r);
-        const double penalty = terms[0].penalty;
-        std::ostringstream target;
-        target << std::defaultfloat << "[" << s.targetMin << ", ";
-        if (std::isfinite(s.targetMax)) target << s.targetMax;
-        else target << "inf";
-        target << "]";
-        // UGR below 10 reads "<10" (CIE 117's scale starts there; JSON keeps the number),
-        // DGP is a probability.
-        const std::string type = s.type->name();
-        std::ostringstream value;
-        value << std::fixed << std::setprecision(type == "dgp" ? 3 : 1) << r.value;
-        std::cout << std::left << std::setw(24) << s.name << std::setw(12) << s.type->name() << std::right << std::fixed
-                  << std::setprecision(1) << std::setw(12) << (type == "ugr" && r.value < 10 ? std::string("<10") : value.str())
-                  << std::setw(10) << errorText(r.standardError, r.pathsPerPoint, type == "dgp" ? 3 : 1) << std::setprecision(1)
-                  << std::setw(8) << s.type->unit() << std::setw(22) << target.str() << std::setprecision(3) << std::setw(10) << penalty
-                  << (penalty > 0 ? "  MISSED" : "  ok") << "\n";
-        if (std::string stats = describeStatistics(s, r); !stats.empty()) std::cout << "    " << stats << "\n";
+        const SamplerRow row(s, result.samplers[k]);
+        std::cout << std::left << std::setw(24) << s.name << std::setw(12) << s.type->name() << std::right << std::setw(12)
+                  << row.valueText() << std::setw(10) << row.errorText() << std::setw(8) << s.type->unit() << std::setw(22)
+                  << row.targetText() << std::fixed << std::setprecision(3) << std::setw(10) << row.penalty()
+                  << (row.penalty() > 0 ? "  MISSED" : "  ok") << "\n";
+        if (std::string details = row.detailsText(); !details.empty()) std::cout << "    " << details << "\n";
         // A statistics goal's line, under its sampler's columns (U0 is a ratio).
-        for (size_t i = 1; i < terms.size(); ++i) {
-            const LightingTerm& t = terms[i];
+        for (size_t i = 1; i < row.terms().size(); ++i) {
+            const LightingTerm& t = row.terms()[i];
             const bool ratio = t.statistic == Statistic::U0;
-            std::ostringstream goal;
-            goal << std::defaultfloat << "[" << t.targetMin << ", ";
-            if (std::isfinite(t.targetMax)) goal << t.targetMax;
-            else goal << "inf";
-            goal << "]";
             std::cout << std::left << std::setw(24) << ("    " + std::string(statisticNames().name(t.statistic)))
                       << std::setw(12) << "" << std::right << std::fixed << std::setprecision(ratio ? 3 : 1) << std::setw(12)
                       << t.value << std::setw(10) << t.standardError << std::setw(8) << (ratio ? "" : s.type->unit())
-                      << std::setw(22) << goal.str() << std::setprecision(3) << std::setw(10) << t.penalty
-                      << (t.penalty > 0 ? "  MISSED" : "  ok") << "\n";
+                      << std::setw(22) << targetBandText(t.targetMin, t.targetMax) << std::setprecision(3) << std::setw(10)
+                      << t.penalty << (t.penalty > 0 ? "  MISSED" : "  ok") << "\n";
         }
     }
     std::cout << std::defaultfloat << std::setprecision(4) << "C " << cost << " +- " << w * lightingError << " (L "

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.h"
+#include <luxplan/core/format.h>
 #include <luxplan/daylight/daylight.h>
 #include <luxplan/daylight/preetham.h>
 #include <luxplan/daylight/solar_position.h>
@@ -29,15 +30,10 @@ struct SunOptions {
     std::optional<double> turbidity;
 };
 
-std::string num(double v) {
-    std::ostringstream s;
-    s << v;
-    return s.str();
-}
-
 void checkRange(const char* flag, double v, double lo, double hi) {
     if (!(v >= lo && v <= hi))
-        throw std::runtime_error(std::string(flag) + " " + num(v) + " outside [" + num(lo) + ", " + num(hi) + "]");
+        throw std::runtime_error(std::string(flag) + " " + significantDigits(v, 6) + " outside [" + significantDigits(lo, 6) + ", " +
+                                 significantDigits(hi, 6) + "]");
 }
 
 void runSun(const SunOptions& o) {

@@ -59,7 +59,7 @@ TEST(DateTime, RejectsInvalidInputWithReason) {
 }
 
 TEST(DateTime, JulianDayMatchesReferenceEpochs) {
-    // J2000.0 and the NREL SPA worked example (JD 2452930.312847, REFERENCES.md 1.1).
+    // J2000.0 and the NREL SPA worked example (JD 2452930.312847, Reda and Andreas 2004; docs/daylight.md, "Validation").
     EXPECT_DOUBLE_EQ(parseOk("2000-01-01T12:00Z").julianDayUT(), 2451545.0);
     EXPECT_NEAR(parseOk("2003-10-17T12:30:30-07:00").julianDayUT(), 2452930.312847, 5e-7);
     // Meeus, Astronomical Algorithms, example 7.a: 1957-10-04.81 -> JD 2436116.31.

@@ -15,9 +15,9 @@ Vec3 fromAngles(double zenith, double phi) {
     return {std::sin(zenith) * std::cos(phi), std::sin(zenith) * std::sin(phi), std::cos(zenith)};
 }
 
-// REFERENCES.md has PSS99's coefficients but no table of sky values, so the expected values
-// below were computed by hand (Python, outside luxplan) from the coefficient matrices quoted
-// in REFERENCES.md 2.1 [DERIVED]. Each is rounded to the last decimal the published
+// PSS99 gives its coefficients but no table of sky values, so the expected values
+// below were computed by hand (Python, outside luxplan) from the coefficient matrices
+// in PSS99's appendix. Each is rounded to the last decimal the published
 // coefficients carry and checked to half a unit in that place (plus a little for the
 // rounding): zenith luminance to 1e-4 kcd/m^2 (0.1 cd/m^2), chromaticities to 1e-5,
 // Perez coefficients to 1e-4.
@@ -33,7 +33,7 @@ TEST(PreethamSky, ZenithLuminanceAtHandComputedPoints) {
 }
 
 TEST(PreethamSky, ZenithChromaticityAtHandComputedPoints) {
-    // The paper's 5-decimal matrix; Mitsuba's variant (REFERENCES.md 2.1) is off by up to
+    // The paper's 5-decimal matrix; Mitsuba's variant is off by up to
     // 1.5e-4, which this tolerance tells apart.
     struct Point {
         double turbidity, sunZenithDeg, x, y;
@@ -49,7 +49,7 @@ TEST(PreethamSky, ZenithChromaticityAtHandComputedPoints) {
 }
 
 TEST(PreethamSky, PerezCoefficientsMatchThePapersTable) {
-    // PSS99 table 2 (REFERENCES.md 2.1) evaluated at T = 2, 3 and 6: A, B, C, D, E.
+    // PSS99 table 2 evaluated at T = 2, 3 and 6: A, B, C, D, E.
     struct Row {
         double turbidity;
         std::array<double, 5> y, x, yc;

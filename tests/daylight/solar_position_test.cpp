@@ -10,7 +10,7 @@ namespace {
 
 using test::at;
 
-// Golden, Colorado: the site of NREL's example (REFERENCES.md 1.1).
+// Golden, Colorado: the site of NREL's example (Reda and Andreas 2004; docs/daylight.md, "Validation").
 SolarObserver golden() {
     SolarObserver o;
     o.latitudeDeg = 39.742476;

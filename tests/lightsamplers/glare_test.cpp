@@ -1,5 +1,5 @@
 // The glare samplers against the formulas computed by hand (docs/glare.md): the Guth
-// position index and DGP worked examples of REFERENCES.md, and UGR and DGP of one
+// position index and DGP worked examples of docs/glare.md, and UGR and DGP of one
 // small rect luminaire of known luminance seen against a uniform sky over a black
 // ground, where every term of the formulas is known in closed form.
 #include <cmath>

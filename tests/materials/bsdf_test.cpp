@@ -311,7 +311,7 @@ TEST(GlossyCoat, AlbedoMatchesIndependentQuadrature) {
 }
 
 TEST(GlossyCoat, BaseShowsThroughAtNormalIncidenceAndCoatDominatesAtGrazing) {
-    // A screen (SCENE-FORMAT.md example): F0 0.05, roughness 0.1, base 0.02.
+    // A screen (docs/scene-format.md, "glossy"): F0 0.05, roughness 0.1, base 0.02.
     Bsdf screen = Bsdf::glossy({0.05, 0.05, 0.05}, {0.02, 0.02, 0.02}, 0.1);
     double normal = screen.albedo(Vec3(0, 0, 1)).x, grazing = screen.albedo(direction(85, 0)).x;
     EXPECT_GT(normal, 0.05);

@@ -215,7 +215,9 @@ TEST_F(OptimizerTest, CancellationKeepsTheBestLayout) {
     OptimizerResult r = Optimizer(scene, o, &light).run(
         [&](const Progress& p) {
             seen.push_back(p.iteration);
-            EXPECT_GE(p.etaSeconds, 0);
+            // The time left: the time per iteration so far times the iterations left.
+            EXPECT_DOUBLE_EQ(p.etaSeconds, p.seconds / p.iteration * (p.iterations - p.iteration));
+            EXPECT_GT(p.etaSeconds, 0);  // 2500 iterations and more to go
             for (double a : p.acceptance) EXPECT_TRUE(a >= 0 && a <= 1);
             if (p.iteration >= 500) cancel = true;
         },

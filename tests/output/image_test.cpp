@@ -7,6 +7,7 @@
 #include <stb_image.h>
 
 #include <luxplan/core/error.h>
+#include <luxplan/core/format.h>
 #include <luxplan/output/false_color.h>
 #include <luxplan/output/image.h>
 #include "support/temp_files.h"
@@ -173,10 +174,10 @@ TEST(FalseColor, AutomaticMaximumIsARoundNumberAboveThePercentile) {
     EXPECT_EQ(autoFalseColor(values).maxValue, 500);
     EXPECT_EQ(autoFalseColor({}).maxValue, 1);
     EXPECT_EQ(autoFalseColor({0, 0}).maxValue, 1);
-    EXPECT_EQ(formatValue(0), "0");
-    EXPECT_EQ(formatValue(250), "250");
-    EXPECT_EQ(formatValue(2.5), "2.5");
-    EXPECT_EQ(formatValue(25000), "25k");
+    EXPECT_EQ(compactNumber(0), "0");
+    EXPECT_EQ(compactNumber(250), "250");
+    EXPECT_EQ(compactNumber(2.5), "2.5");
+    EXPECT_EQ(compactNumber(25000), "25k");
 }
 
 TEST(FalseColor, LegendDrawsTheBarAndItsLabels) {

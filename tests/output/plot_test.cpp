@@ -63,7 +63,20 @@ TEST(Plot, EmptyAndInfeasibleTracesStillDraw) {
     for (int i = 0; i < 5; ++i) infeasible[size_t(i)] = {i * 10, 3.0, kInf, false};
     Image none = plotConvergence(infeasible);
     EXPECT_EQ(countPixels(none, isBest), 0);
-    EXPECT_EQ(countPixels(none, isCurrent) > 0, true);  // the "no data" note
+    // The "no data" note, in the current cost's grey at the plot box's centre (the box
+    // from x 70 to width - 20, y 40 under the title to height - 50), and no other grey:
+    // the same pixels as the note drawn alone.
+    Image note(none.width(), none.height(), kWhite);
+    note.drawText((70 + none.width() - 20) / 2.0, (40 + none.height() - 50) / 2.0, "no data", Rgb{150, 150, 150}, 2,
+                  TextAlign::Center);
+    ASSERT_GT(countPixels(note, isCurrent), 50);
+    EXPECT_EQ(countPixels(none, isCurrent), countPixels(note, isCurrent));
+    for (int y = 0; y < note.height(); ++y)
+        for (int x = 0; x < note.width(); ++x) {
+            if (isCurrent(note.at(x, y))) {
+                EXPECT_TRUE(isCurrent(none.at(x, y))) << x << " " << y;
+            }
+        }
 }
 
 }  // namespace

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include <luxplan/core/penalty.h>  // penalty(c, bmin, bmax, brej, alpha): Eq. 2, infinite bounds open
-#include <luxplan/lightsamplers/sampler_result.h>
+#include <luxplan/scene/sampler_result.h>
 #include <luxplan/scene/scene.h>
 
 namespace luxplan {

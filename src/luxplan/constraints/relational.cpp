@@ -3,11 +3,11 @@
 #include <luxplan/constraints/relational.h>
 
 #include <cmath>
-#include <cstdio>
 
 #include <nlohmann/json.hpp>
 
 #include <luxplan/constraints/penalty.h>
+#include <luxplan/core/format.h>
 #include <luxplan/json/fields.h>
 
 namespace luxplan {
@@ -125,11 +125,7 @@ PenaltyTerm evaluateRelational(const Scene& scene, const EntityInfo& info, const
     return t;
 }
 
-std::string describeNumber(double v) {
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.4g", v);
-    return buffer;
-}
+std::string describeNumber(double v) { return significantDigits(v, 4); }
 
 std::string describeRange(const DistanceRange& range) {
     return "range [" + describeNumber(range.min) + ", " + describeNumber(range.max) + "] m";

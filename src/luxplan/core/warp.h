@@ -60,12 +60,6 @@ inline Vec3 sampleUniformCone(Vec2 u, double cosThetaMax) {
 }
 inline double uniformConePdf(double cosThetaMax) { return 1 / (2 * kPi * (1 - cosThetaMax)); }
 
-// Barycentrics (b0, b1) uniform over a triangle; b2 = 1 - b0 - b1.
-inline Vec2 sampleUniformTriangle(Vec2 u) {
-    double su0 = std::sqrt(u.x);
-    return {1 - su0, u.y * su0};
-}
-
 // Veach's power heuristic (beta = 2) for multiple importance sampling.
 inline double powerHeuristic(double nf, double fPdf, double ng, double gPdf) {
     double f = nf * fPdf, g = ng * gPdf;

@@ -2,21 +2,15 @@
 #include <luxplan/daylight/daylight.h>
 
 #include <cmath>
-#include <cstdio>
 #include <memory>
 
+#include <luxplan/core/format.h>
 #include <luxplan/daylight/cie_sky.h>
 #include <luxplan/daylight/preetham.h>
 #include <luxplan/daylight/solar_position.h>
 
 namespace luxplan {
 namespace {
-
-std::string num(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.10g", v);
-    return buf;
-}
 
 std::string quoted(std::string_view s) {
     std::string r(1, '"');  // appended piecewise: GCC 12 warns falsely (-Wrestrict) on "x" + string
@@ -64,7 +58,7 @@ std::vector<Diagnostic> validateDaylight(const DaylightParams& p, const Site& si
     std::vector<Diagnostic> d;
     auto add = [&](std::string path, std::string message) { d.push_back({"", std::move(path), std::move(message)}); };
     auto range = [&](const char* path, const char* key, double v, double lo, double hi) {
-        if (!(v >= lo && v <= hi)) add(path, std::string(key) + " " + num(v) + " outside [" + num(lo) + ", " + num(hi) + "]");
+        if (!(v >= lo && v <= hi)) add(path, std::string(key) + " " + formatNumber(v) + " outside [" + formatNumber(lo) + ", " + formatNumber(hi) + "]");
     };
 
     range("/site/latitude", "latitude", site.latitudeDeg, -90, 90);
@@ -78,19 +72,19 @@ std::vector<Diagnostic> validateDaylight(const DaylightParams& p, const Site& si
             add("/daylight/sky", "sky model " + quoted(model) + " needs \"horizontal_illuminance_lx\"");
         else if (!(*p.horizontalIlluminanceLx > 0) || !std::isfinite(*p.horizontalIlluminanceLx))
             add("/daylight/sky/horizontal_illuminance_lx",
-                "horizontal_illuminance_lx " + num(*p.horizontalIlluminanceLx) + " must be > 0");
+                "horizontal_illuminance_lx " + formatNumber(*p.horizontalIlluminanceLx) + " must be > 0");
         else if (*p.horizontalIlluminanceLx > limits::kMaxIlluminanceLx)
-            add("/daylight/sky/horizontal_illuminance_lx", "horizontal_illuminance_lx " + num(*p.horizontalIlluminanceLx) +
-                                                               " exceeds the limit of " + num(limits::kMaxIlluminanceLx));
+            add("/daylight/sky/horizontal_illuminance_lx", "horizontal_illuminance_lx " + formatNumber(*p.horizontalIlluminanceLx) +
+                                                               " exceeds the limit of " + formatNumber(limits::kMaxIlluminanceLx));
     }
     if (p.model == SkyModelType::Uniform) {
         if (!p.luminanceNits)
             add("/daylight/sky", "sky model \"uniform\" needs \"luminance_nits\"");
         else if (!(*p.luminanceNits >= 0) || !std::isfinite(*p.luminanceNits))
-            add("/daylight/sky/luminance_nits", "luminance_nits " + num(*p.luminanceNits) + " must be >= 0");
+            add("/daylight/sky/luminance_nits", "luminance_nits " + formatNumber(*p.luminanceNits) + " must be >= 0");
         else if (*p.luminanceNits > limits::kMaxLuminanceNits)
             add("/daylight/sky/luminance_nits",
-                "luminance_nits " + num(*p.luminanceNits) + " exceeds the limit of " + num(limits::kMaxLuminanceNits));
+                "luminance_nits " + formatNumber(*p.luminanceNits) + " exceeds the limit of " + formatNumber(limits::kMaxLuminanceNits));
     }
     if (p.model == SkyModelType::CieGeneral && (p.cieSkyType < 1 || p.cieSkyType > 15))
         add("/daylight/sky/type", "type " + std::to_string(p.cieSkyType) + " outside [1, 15]");
@@ -101,10 +95,10 @@ std::vector<Diagnostic> validateDaylight(const DaylightParams& p, const Site& si
         range("/daylight/sun/azimuth_deg", "azimuth_deg", s.azimuthDeg, 0, 360);
         if (s.normalIlluminanceLx && (!(*s.normalIlluminanceLx >= 0) || !std::isfinite(*s.normalIlluminanceLx)))
             add("/daylight/sun/normal_illuminance_lx",
-                "normal_illuminance_lx " + num(*s.normalIlluminanceLx) + " must be >= 0");
+                "normal_illuminance_lx " + formatNumber(*s.normalIlluminanceLx) + " must be >= 0");
         else if (s.normalIlluminanceLx && *s.normalIlluminanceLx > limits::kMaxIlluminanceLx)
-            add("/daylight/sun/normal_illuminance_lx", "normal_illuminance_lx " + num(*s.normalIlluminanceLx) +
-                                                           " exceeds the limit of " + num(limits::kMaxIlluminanceLx));
+            add("/daylight/sun/normal_illuminance_lx", "normal_illuminance_lx " + formatNumber(*s.normalIlluminanceLx) +
+                                                           " exceeds the limit of " + formatNumber(limits::kMaxIlluminanceLx));
         if (p.from || p.to) add("/daylight/sun", "only one of \"sun\" override and \"from\"/\"to\"");
     }
     if (!needsSunPosition(p.model) && p.sunEnabled() && !(p.sunOverride && p.sunOverride->normalIlluminanceLx))
@@ -116,20 +110,20 @@ std::vector<Diagnostic> validateDaylight(const DaylightParams& p, const Site& si
                              " needs a time (\"from\") or a fixed \"sun\" {\"altitude_deg\", \"azimuth_deg\"}");
     if (p.to && !p.from) add("/daylight/to", "\"to\" needs \"from\"");
     if (!(p.stepMinutes > 0) || !std::isfinite(p.stepMinutes))
-        add("/daylight/step_minutes", "step_minutes " + num(p.stepMinutes) + " must be > 0");
+        add("/daylight/step_minutes", "step_minutes " + formatNumber(p.stepMinutes) + " must be > 0");
     else if (p.from && p.to) {
         if (p.to->julianDayUT() < p.from->julianDayUT())
             add("/daylight/to", "\"to\" " + p.to->str() + " is before \"from\" " + p.from->str());
         else if (!(stepCount(*p.from, *p.to, p.stepMinutes) <= kMaxDaylightSteps))
-            add("/daylight/step_minutes", "from..to every " + num(p.stepMinutes) + " minutes is " +
-                                              num(stepCount(*p.from, *p.to, p.stepMinutes)) +
+            add("/daylight/step_minutes", "from..to every " + formatNumber(p.stepMinutes) + " minutes is " +
+                                              formatNumber(stepCount(*p.from, *p.to, p.stepMinutes)) +
                                               " time steps, which exceeds the limit of " + std::to_string(kMaxDaylightSteps));
     }
     range("/daylight/ground_reflectance", "ground_reflectance", p.groundReflectance, 0, 1);
     if (!(p.pressureMbar > 0) || !std::isfinite(p.pressureMbar))
-        add("/daylight/pressure_mbar", "pressure_mbar " + num(p.pressureMbar) + " must be > 0");
+        add("/daylight/pressure_mbar", "pressure_mbar " + formatNumber(p.pressureMbar) + " must be > 0");
     if (!(p.temperatureC > -273.15) || !std::isfinite(p.temperatureC))
-        add("/daylight/temperature_c", "temperature_c " + num(p.temperatureC) + " must be > -273.15");
+        add("/daylight/temperature_c", "temperature_c " + formatNumber(p.temperatureC) + " must be > -273.15");
     return d;
 }
 

@@ -1,4 +1,4 @@
-// Daylight from a scene's "daylight" object (SCENE-FORMAT.md): parameters, their validation,
+// Daylight from a scene's "daylight" object (docs/scene-format.md): parameters, their validation,
 // the time steps it covers, and the baked DaylightEnvironment (time-averaged sky map + sun
 // disks) that the path tracer uses. Models: Preetham (PSS99), CIE overcast, uniform, and
 // the ISO 15469 general skies. See docs/daylight.md.

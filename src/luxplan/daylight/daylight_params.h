@@ -1,4 +1,4 @@
-// What a scene's "site" and "daylight" objects say (SCENE-FORMAT.md), as the scene
+// What a scene's "site" and "daylight" objects say (docs/scene-format.md), as the scene
 // model holds them; daylight.h validates them and bakes the environment.
 #pragma once
 

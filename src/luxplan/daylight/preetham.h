@@ -1,7 +1,7 @@
 // Preetham, Shirley & Smits (1999) "A Practical Analytic Model for Daylight", SIGGRAPH 99,
 // https://doi.org/10.1145/311535.311545: clear-sky luminance and chromaticity from turbidity
 // (Perez distribution with turbidity-linear coefficients) and the sun's spectral attenuation
-// (appendix) giving the direct normal illuminance. Formulas: REFERENCES.md section 2.
+// (appendix) giving the direct normal illuminance. Formulas: the paper and its appendix (docs/daylight.md).
 // Directions are unit vectors with +z the zenith; angles in radians unless named *Deg.
 #pragma once
 
@@ -52,7 +52,6 @@ public:
     PreethamSky(double turbidity, const Vec3& sunDirection);
 
     double zenithLuminance() const { return zenithY_; }
-    Vec2 zenithChromaticity() const { return {zenithX_, zenithYc_}; }
     double luminance(const Vec3& w) const;
     Vec3 xyY(const Vec3& w) const;  // (x, y, Y)
     Vec3 rgb(const Vec3& w) const;

@@ -46,7 +46,6 @@ public:
     Vec3 c90() const { return c90_; }
     // A direction of this frame in the luminaire's (x: C = 0, y: C = 90, z: gamma = 0).
     Vec3 toLuminaire(const Vec3& w) const { return {dot(w, c0_), dot(w, c90_), dot(w, axis_)}; }
-    Vec3 fromLuminaire(const Vec3& l) const { return c0_ * l.x + c90_ * l.y + axis_ * l.z; }
     // The file's candela along the unit direction w (light leaving the luminaire).
     double intensity(const Vec3& w) const { return distribution_->intensity(toLuminaire(w)); }
     // The area the opening shows across w: A |cos| to a flat opening's normal, A / 4

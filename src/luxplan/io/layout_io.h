@@ -1,4 +1,4 @@
-// layout.json (SCENE-FORMAT.md): {"entities": {"dotted.path": {"position": [x,y,z],
+// layout.json (docs/scene-format.md, "layout.json"): {"entities": {"dotted.path": {"position": [x,y,z],
 // "rotation": deg, "region": k}}} for every movable entity, in its parent's frame.
 #pragma once
 

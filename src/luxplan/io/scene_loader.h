@@ -1,4 +1,4 @@
-// Loads and validates a scene file (SCENE-FORMAT.md, version 1) into the scene model.
+// Loads and validates a scene file (docs/scene-format.md, version 1) into the scene model.
 #pragma once
 
 #include <filesystem>

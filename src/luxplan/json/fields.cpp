@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 
 #include <nlohmann/json.hpp>
@@ -24,13 +23,6 @@ std::string pointer(const std::string& base, const std::string& key) {
 std::string pointer(const std::string& base, size_t index) { return base + "/" + std::to_string(index); }
 
 nlohmann::ordered_json numberOrNull(double v) { return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json(nullptr); }
-
-std::string formatNumber(double v) {
-    if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.10g", v);
-    return buf;
-}
 
 std::string Range::describe() const {
     std::string u = *unit ? std::string(" ") + unit : "";

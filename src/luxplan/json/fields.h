@@ -15,6 +15,7 @@
 #include <nlohmann/json_fwd.hpp>
 
 #include <luxplan/core/error.h>
+#include <luxplan/core/format.h>
 #include <luxplan/core/limits.h>
 #include <luxplan/core/math.h>
 
@@ -156,6 +157,6 @@ std::optional<std::vector<double>> readNumbers(DiagnosticSink& sink, const Json&
 
 // Human-readable JSON type name ("a number", "a string", ...).
 std::string typeName(const Json& value);
-std::string formatNumber(double v);
+using luxplan::formatNumber;  // core/format.h
 
 }  // namespace luxplan::json

@@ -59,6 +59,7 @@ public:
 
     const char* name() const override { return "cylindrical"; }
     const char* unit() const override { return "lx"; }
+    std::string quantityHtml(bool) const override { return "E<sub>z</sub> (cylindrical illuminance)"; }
     std::unique_ptr<PlacedSampler> place(const Transform& world) const override {
         return std::make_unique<PlacedCylindrical>(world.applyPoint(center));
     }

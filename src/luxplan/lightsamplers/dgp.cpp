@@ -13,7 +13,7 @@ namespace {
 
 constexpr int kMinCells = 2, kMaxCells = 64;
 
-class Dgp final : public SamplerType {
+class Dgp final : public GlareSamplerType {
 public:
     Vec3 origin, direction{0, -1, 0};
     double thresholdNits = 2000;
@@ -21,6 +21,9 @@ public:
 
     const char* name() const override { return "dgp"; }
     const char* unit() const override { return "DGP"; }
+    // A probability.
+    ValueFormat valueFormat() const override { return {.digits = 3, .summaryDigits = 2, .unitless = true}; }
+    std::string quantityHtml(bool) const override { return "DGP (daylight glare probability)"; }
     std::unique_ptr<PlacedSampler> place(const Transform& world) const override {
         return std::make_unique<PlacedGlare>(PlacedGlare::Metric::Dgp, world.applyPoint(origin),
                                              normalize(world.applyVector(direction)), thresholdNits, grid);
@@ -37,6 +40,11 @@ public:
         const int n = grid->cellsPerSide();
         return "daylight glare probability, sources above " + json::formatNumber(thresholdNits) + " cd/m2, " +
                std::to_string(n) + " x " + std::to_string(n) + " direction cells";
+    }
+
+protected:
+    std::string surveyHead(double value, const GlareSurvey& g) const override {
+        return "DGP " + fixedDigits(value, 3) + ", Ev " + fixedDigits(g.verticalIlluminance, 0) + " lx";
     }
 };
 

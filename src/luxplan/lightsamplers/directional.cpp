@@ -391,6 +391,8 @@ public:
 
     const char* name() const override { return "directional"; }
     const char* unit() const override { return "cd/m2"; }
+    ResultGroup resultGroup() const override { return ResultGroup::Glare; }  // glare on a screen
+    std::string quantityHtml(bool) const override { return "luminance in view (brightest part)"; }
 
     std::unique_ptr<PlacedSampler> place(const Transform& world) const override {
         auto p = std::make_unique<PlacedDirectional>();

@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include <nlohmann/json.hpp>
+
+#include <luxplan/core/format.h>
 #include <luxplan/core/warp.h>
 #include <luxplan/daylight/preetham.h>
 #include <luxplan/pathtracer/path_tracer.h>
@@ -131,7 +134,7 @@ void PlacedGlare::sampleSlot(const PathTracer& tracer, int item, PathSamples& sa
     }
 }
 
-GlareSurvey PlacedGlare::survey(const std::vector<double>& m) const {
+GlareSurvey PlacedGlare::surveyOf(const std::vector<double>& m) const {
     GlareSurvey s;
     s.verticalIlluminance = m.empty() ? 0 : m[0];
     double direct = 0;
@@ -219,10 +222,10 @@ Estimate PlacedGlare::combine(const ItemEstimates& e) const {
         return m;
     };
     Estimate r;
-    r.value = survey(meansOf(-1)).value;
+    r.value = surveyOf(meansOf(-1)).value;
     std::vector<double> folds;
     for (int g = 0; g < ItemEstimates::kFolds; ++g)
-        if (e.pathsInFold(0, g) > 0) folds.push_back(survey(meansOf(g)).value);
+        if (e.pathsInFold(0, g) > 0) folds.push_back(surveyOf(meansOf(g)).value);
     if (folds.size() >= 2) {
         double mean = 0, var = 0;
         for (double v : folds) mean += v / double(folds.size());
@@ -240,6 +243,35 @@ SamplerDrawing PlacedGlare::drawing() const {
     d.dots = {eye_};
     d.dotRadius = 4;
     d.labelAt = eye_;
+    return d;
+}
+
+void GlareSamplerType::addDetails(const SamplerResult& result, nlohmann::ordered_json& out) const {
+    if (!result.glare) return;
+    const GlareSurvey& g = *result.glare;
+    nlohmann::ordered_json sources = nlohmann::ordered_json::array();
+    for (const GlareSource& s : g.sources)
+        sources.push_back({{"kind", glareSourceKindName(s.kind)},
+                           {s.kind == GlareSource::Kind::Region ? "region" : "slot", s.index},
+                           {"direction", {s.direction.x, s.direction.y, s.direction.z}},
+                           {"luminance", s.luminance},
+                           {"solid_angle", s.solidAngle},
+                           {"position_index", s.positionIndex}});
+    out["glare"] = {{"vertical_illuminance", g.verticalIlluminance},
+                    {"direct_illuminance", g.directIlluminance},
+                    {"background_luminance", g.backgroundLuminance},
+                    {"sources", sources}};
+}
+
+std::string GlareSamplerType::detailsText(const SamplerResult& result) const {
+    if (!result.glare) return "";
+    const GlareSurvey& g = *result.glare;
+    std::string d = surveyHead(result.value, g) + ", " + std::to_string(g.sources.size()) +
+                    (g.sources.size() == 1 ? " source" : " sources");
+    for (const GlareSource& s : g.sources)
+        d += std::string("; ") + glareSourceKindName(s.kind) + " [" + fixedDigits(s.direction.x, 2) + " " +
+             fixedDigits(s.direction.y, 2) + " " + fixedDigits(s.direction.z, 2) + "] L " + fixedDigits(s.luminance, 0) +
+             " cd/m2, omega " + fixedDigits(s.solidAngle * 1e3, 3) + " msr, P " + fixedDigits(s.positionIndex, 2);
     return d;
 }
 

@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-#include <luxplan/lightsamplers/sampler_result.h>
+#include <luxplan/scene/sampler_result.h>
 #include <luxplan/lightsamplers/sampler_type.h>
 
 namespace luxplan {
@@ -83,7 +83,8 @@ public:
     std::vector<char> stillNeeded(const ItemEstimates& items, double z, double targetMin, double targetMax) const override;
     SamplerDrawing drawing() const override;
     // The survey from item means (points of a SamplerResult, in item order).
-    GlareSurvey survey(const std::vector<double>& itemMeans) const;
+    std::optional<GlareSurvey> survey(const std::vector<double>& itemMeans) const override { return surveyOf(itemMeans); }
+    GlareSurvey surveyOf(const std::vector<double>& itemMeans) const;
 
 private:
     void sampleSlot(const PathTracer& tracer, int item, PathSamples& samples, RayStats& stats, PathContributions& out) const;
@@ -97,6 +98,25 @@ private:
     double threshold_;
     std::shared_ptr<const DirectionGrid> grid_;  // DGP only
     int luminaires_ = 0, slots_ = 0;
+};
+
+// What the "ugr" and "dgp" types share: their eye surveys sources, their value is
+// its own unit, and their details are the survey (report.json's "glare").
+class GlareSamplerType : public SamplerType {
+public:
+    bool surveysSources() const override { return true; }
+    ResultGroup resultGroup() const override { return ResultGroup::Glare; }
+    // {"glare": {"vertical_illuminance", "direct_illuminance", "background_luminance",
+    // "sources": [{"kind", "slot" or "region", "direction", "luminance", "solid_angle",
+    // "position_index"}]}}, where the result has a survey.
+    void addDetails(const SamplerResult& result, nlohmann::ordered_json& out) const override;
+    // "UGR 13.2, Lb 31.0 cd/m2, 1 source; luminaire [0.00 0.71 0.71] L 5200 cd/m2,
+    // omega 1.234 msr, P 2.10" ("DGP 0.352, Ev 2100 lx, ..." for DGP); "" without a survey.
+    std::string detailsText(const SamplerResult& result) const override;
+
+protected:
+    // The text's head before the sources: "UGR 13.2, Lb 31.0 cd/m2".
+    virtual std::string surveyHead(double value, const GlareSurvey& survey) const = 0;
 };
 
 // Constructed in C++ (tests): a normalized direction, which must not be zero.

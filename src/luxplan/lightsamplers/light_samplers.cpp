@@ -11,7 +11,6 @@
 #include <luxplan/core/estimator.h>
 #include <luxplan/core/parallel.h>
 #include <luxplan/core/point_statistics.h>
-#include <luxplan/lightsamplers/glare_sources.h>
 
 namespace luxplan {
 namespace {
@@ -211,9 +210,9 @@ std::vector<double> lightSampleFloors(const PathTracer& tracer, double share, ui
     std::vector<double> floors(scene.samplers.size(), 0.0);
     if (!(share > 0)) return floors;
     for (size_t k = 0; k < scene.samplers.size(); ++k) {
+        // A survey's paths measure its sources, each on a scale of its own.
+        if (scene.samplers[k].type->surveysSources()) continue;
         const std::unique_ptr<PlacedSampler> placed = placeSampler(scene.samplers[k], tracer);
-        // A glare survey's paths measure its sources, each on a scale of its own.
-        if (dynamic_cast<const PlacedGlare*>(placed.get())) continue;
         const int items = placed->items();
         // Per item: the sum of its paths' values, of their squares (in the tracer's
         // unit: what a light sample's worth is compared with), and their count.
@@ -329,7 +328,7 @@ MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& op
     std::vector<const PathTracer*> tracerOf(samplers, &tracer);
     if (glareTracer)
         for (size_t k = 0; k < samplers; ++k)
-            if (dynamic_cast<const PlacedGlare*>(placed[k].get())) tracerOf[k] = glareTracer;
+            if (scene.samplers[k].type->surveysSources()) tracerOf[k] = glareTracer;
     if (!options.lightFloors.empty() && options.lightFloors.size() != samplers)
         throw std::logic_error("MeasureOptions::lightFloors: one per sampler of the scene");
     std::vector<double> lightFloorOf = options.lightFloors;
@@ -558,7 +557,7 @@ MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& op
         Estimate value = placed[k]->combine(e);
         r.value = value.value;
         r.standardError = options.choiceError ? placed[k]->reportedError(e, value) : value.standardError;
-        if (const auto* glare = dynamic_cast<const PlacedGlare*>(placed[k].get())) r.glare = glare->survey(r.points);
+        r.glare = placed[k]->survey(r.points);
     };
     parallelFor(samplers, [&](size_t k) {
         const int batch = std::max(1, options.batchPaths);

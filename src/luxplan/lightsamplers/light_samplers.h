@@ -11,7 +11,7 @@
 
 #include <luxplan/lightsamplers/cache_check.h>
 #include <luxplan/lightsamplers/path_cache.h>
-#include <luxplan/lightsamplers/sampler_result.h>
+#include <luxplan/scene/sampler_result.h>
 #include <luxplan/lightsamplers/sampler_type.h>
 #include <luxplan/pathtracer/path_tracer.h>
 

@@ -56,6 +56,10 @@ public:
 
     const char* name() const override { return "planar"; }
     const char* unit() const override { return "lx"; }
+    ResultGroup resultGroup() const override { return ResultGroup::TaskArea; }
+    std::string quantityHtml(bool maintained) const override {
+        return maintained ? "E<sub>m</sub> (maintained mean)" : "E<sub>m</sub> (mean)";
+    }
 
     std::unique_ptr<PlacedSampler> place(const Transform& world) const override {
         Vec3 n = normalize(normal);

@@ -1,8 +1,8 @@
 // The interface every light sampler type implements (the paper's Section 4): how it
 // is read from the scene file, placed in the world, measured by the path tracer,
-// combined into one value, described and drawn. Each type is one file of this folder
-// (planar.cpp, directional.cpp, volume.cpp, cylindrical.cpp) and one line of sampler_registry.cpp;
-// docs/architecture.md walks through adding one.
+// combined into one value, described, presented and drawn. Each type is one file of this
+// folder (planar.cpp, directional.cpp, volume.cpp, cylindrical.cpp, ugr.cpp, dgp.cpp) and
+// one line of sampler_registry.cpp; docs/architecture.md walks through adding one.
 #pragma once
 
 #include <algorithm>
@@ -18,9 +18,13 @@
 #include <string_view>
 #include <vector>
 
+#include <nlohmann/json_fwd.hpp>
+
 #include <luxplan/core/estimator.h>
+#include <luxplan/core/format.h>
 #include <luxplan/core/math.h>
 #include <luxplan/json/fields.h>
+#include <luxplan/scene/sampler_result.h>
 
 namespace luxplan {
 
@@ -190,6 +194,9 @@ public:
     // Default: no more than the value's interval says.
     virtual double lowerEnd(const ItemEstimates& /*items*/, double /*z*/) const { return -kInf; }
     virtual SamplerDrawing drawing() const = 0;
+    // What its value is made of, from its items' means (the points of a SamplerResult,
+    // in item order), where the type reports it: a glare eye's survey of its sources.
+    virtual std::optional<GlareSurvey> survey(const std::vector<double>& /*itemMeans*/) const { return std::nullopt; }
     // The points a layout's furniture covers (planar samplers: findCoveredPoints), one
     // flag per item; none are traced and the default combine() leaves them out.
     virtual std::vector<Vec3> coverageProbes(Vec3& normal) const {
@@ -203,6 +210,25 @@ public:
 private:
     std::vector<char> covered_;
 };
+
+// How a type's values read for people: measure's table, the reports, the plan.
+struct ValueFormat {
+    int digits = 1;         // decimals in measure's table and the detail lines
+    int summaryDigits = 0;  // decimals in report.html's results (lx and cd/m2 to the unit)
+    // Below it a value reads "<floor" (UGR: CIE 117's scale starts at 10); JSON keeps the number.
+    double floor = -kInf;
+    bool unitless = false;  // its unit names the quantity (UGR, DGP): no unit after a number
+    // `v` with `decimals` decimals, or "<floor".
+    std::string text(double v, int decimals) const {
+        if (!(v < floor)) return fixedDigits(v, decimals);
+        std::string below(1, '<');  // appended piecewise: GCC 12 warns falsely (-Wrestrict) on "<" + string
+        return below.append(formatNumber(floor));
+    }
+};
+
+// Where report.html's results list a sampler: a task area (its Em, Emin and U0), a
+// viewpoint's glare, or among the others.
+enum class ResultGroup { TaskArea, Glare, Other };
 
 // Where a sampler is in the scene: the inner boxes of the scene's rooms (world
 // frame) and whether an entity carries it.
@@ -240,6 +266,22 @@ public:
     // `sunDisks` (ugr: the luminaires; dgp: the sun disks too), for the limit on them
     // (limits::kMaxGlareSources); 0 for a kind that surveys none.
     virtual int64_t glareSources(int64_t /*luminaires*/, int64_t /*sunDisks*/) const { return 0; }
+    // What tracing its paths needs: true where they survey sources each on a scale of
+    // its own (a glare eye), so that no roulette floor from their spread fits their
+    // light samples (lightSampleFloors) and they go to the survey tracer where the
+    // caller gives one (measureSamplers' glareTracer: the search's, with the sunlit patches).
+    virtual bool surveysSources() const { return false; }
+    // How its values read (digits, a floor, a unit of its own).
+    virtual ValueFormat valueFormat() const { return {}; }
+    // report.html's results: which group lists it, and what its value is called there
+    // (HTML; `maintained`: a maintenance factor below 1 scales the luminaires' light).
+    virtual ResultGroup resultGroup() const { return ResultGroup::Other; }
+    virtual std::string quantityHtml(bool /*maintained*/) const { return name(); }
+    // Its measurement's details beyond the value and the point statistics: as report.json's
+    // and measure --json's keys, added to `out`, and as one line of text (measure's
+    // table; "" for none). A glare eye's sources.
+    virtual void addDetails(const SamplerResult& /*result*/, nlohmann::ordered_json& /*out*/) const {}
+    virtual std::string detailsText(const SamplerResult& /*result*/) const { return ""; }
     // Its points as an nx x ny grid (planar), for reports; none otherwise.
     virtual std::optional<std::array<int, 2>> pointGrid() const { return std::nullopt; }
     // The sampler fitted to where the loader found it, which its reader cannot see

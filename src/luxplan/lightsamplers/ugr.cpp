@@ -9,12 +9,15 @@
 namespace luxplan {
 namespace {
 
-class Ugr final : public SamplerType {
+class Ugr final : public GlareSamplerType {
 public:
     Vec3 origin, direction{0, -1, 0};
 
     const char* name() const override { return "ugr"; }
     const char* unit() const override { return "UGR"; }
+    // CIE 117's scale starts at 10: below it, "<10".
+    ValueFormat valueFormat() const override { return {.digits = 1, .summaryDigits = 1, .floor = 10, .unitless = true}; }
+    std::string quantityHtml(bool) const override { return "UGR (unified glare rating)"; }
     std::unique_ptr<PlacedSampler> place(const Transform& world) const override {
         return std::make_unique<PlacedGlare>(PlacedGlare::Metric::Ugr, world.applyPoint(origin),
                                              normalize(world.applyVector(direction)), 0.0);
@@ -28,6 +31,11 @@ public:
     }
     std::string describe() const override { return "unified glare rating of the luminaires in view (CIE 117)"; }
     int64_t glareSources(int64_t luminaires, int64_t) const override { return luminaires; }
+
+protected:
+    std::string surveyHead(double value, const GlareSurvey& g) const override {
+        return "UGR " + valueFormat().text(value, 1) + ", Lb " + fixedDigits(g.backgroundLuminance, 1) + " cd/m2";
+    }
 };
 
 }  // namespace

@@ -46,6 +46,7 @@ public:
 
     const char* name() const override { return "volume"; }
     const char* unit() const override { return "cd/m2"; }
+    std::string quantityHtml(bool) const override { return "mean luminance"; }
 
     std::unique_ptr<PlacedSampler> place(const Transform& world) const override {
         auto p = std::make_unique<PlacedVolume>();

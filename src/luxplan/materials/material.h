@@ -1,4 +1,4 @@
-// A surface material as the scene file describes it (SCENE-FORMAT.md, "materials").
+// A surface material as the scene file describes it (docs/scene-format.md, "materials").
 // Reflectances are linear RGB in [0,1]; photometric results use their luminance.
 #pragma once
 

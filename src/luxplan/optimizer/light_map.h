@@ -10,7 +10,7 @@
 #include <vector>
 
 #include <luxplan/core/rng.h>
-#include <luxplan/lightsamplers/sampler_result.h>
+#include <luxplan/scene/sampler_result.h>
 #include <luxplan/scene/layout.h>
 
 namespace luxplan {

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include <luxplan/lightsamplers/cache_check.h>
-#include <luxplan/lightsamplers/sampler_result.h>
+#include <luxplan/scene/sampler_result.h>
 #include <luxplan/scene/layout.h>
 
 namespace luxplan {

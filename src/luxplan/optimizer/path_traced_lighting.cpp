@@ -1,7 +1,6 @@
 #include <luxplan/optimizer/path_traced_lighting.h>
 
 #include <stdexcept>
-#include <string_view>
 
 #include <luxplan/constraints/penalty.h>
 #include <luxplan/core/rng.h>
@@ -17,10 +16,7 @@ PathTracedLighting::PathTracedLighting(const Scene& scene, const DaylightEnviron
                                        const PathTracerOptions& searchTracing, const PathTracerOptions& reportTracing)
     : scene_(scene), rt_(scene, initialLayout(scene)), tracer_(rt_, daylight, searchTracing),
       reportTracer_(rt_, daylight, reportTracing), options_(options), cache_(scene) {
-    for (const LightSamplerSpec& s : scene.samplers) {
-        const std::string_view type = s.type->name();
-        hasGlareSurveys_ = hasGlareSurveys_ || type == "ugr" || type == "dgp";
-    }
+    for (const LightSamplerSpec& s : scene.samplers) hasGlareSurveys_ = hasGlareSurveys_ || s.type->surveysSources();
 }
 
 PathTracedLighting::~PathTracedLighting() noexcept {

@@ -4,19 +4,15 @@
 #include <cmath>
 #include <cstdio>
 
+#include <luxplan/core/format.h>
+
 namespace luxplan {
 namespace {
-
-std::string withDigits(double v, int digits) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.*f", digits, v);
-    return buf;
-}
 
 // Enough digits to see a cost change near zero, few when it is large.
 std::string cost(double c) {
     if (!std::isfinite(c)) return "-";
-    return withDigits(c, std::abs(c) >= 10 ? 1 : std::abs(c) >= 1 ? 3 : 4);
+    return fixedDigits(c, std::abs(c) >= 10 ? 1 : std::abs(c) >= 1 ? 3 : 4);
 }
 
 std::string temperatureText(double t) {
@@ -38,11 +34,7 @@ std::string durationText(double seconds) {
 
 namespace {
 
-std::string progressPathCount(double paths) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.3g", paths);
-    return buf;
-}
+std::string progressPathCount(double paths) { return significantDigits(paths, 3); }
 
 }  // namespace
 
@@ -57,7 +49,7 @@ std::string largeMeasurementWarning(const std::string& what, long long points, i
 
 std::string measureProgressLine(unsigned long long done, unsigned long long total, double seconds, bool atMost) {
     const double share = total > 0 ? std::min(1.0, double(done) / double(total)) : 1.0;
-    std::string line = "measuring: " + withDigits(std::floor(100 * share), 0) + "% of " + (atMost ? "at most " : "") +
+    std::string line = "measuring: " + fixedDigits(std::floor(100 * share), 0) + "% of " + (atMost ? "at most " : "") +
                        progressPathCount(double(total)) + " paths (" + durationText(seconds);
     if (done > 0 && share < 1) line += ", about " + durationText(seconds * (1 - share) / share) + " left";
     return line + ")";
@@ -74,11 +66,11 @@ std::string progressLine(const Progress& p) {
     std::string moves;
     for (MoveType t : kMoveTypes) {
         if (p.proposed[int(t)] == 0) continue;  // a move the scene does not allow
-        moves += (moves.empty() ? "" : ", ") + std::string(moveName(t)) + " " + withDigits(100 * p.acceptance[int(t)], 0) + "%";
+        moves += (moves.empty() ? "" : ", ") + std::string(moveName(t)) + " " + fixedDigits(100 * p.acceptance[int(t)], 0) + "%";
     }
     if (!moves.empty()) line += " | accepted: " + moves;
-    if (p.polishing) line += " | polishing the best (zero temperature), " + withDigits(100 * p.recentAcceptance, 0) + "% kept lately";
-    else line += " | temperature " + temperatureText(p.temperature) + ", " + withDigits(100 * p.recentAcceptance, 0) + "% accepted lately";
+    if (p.polishing) line += " | polishing the best (zero temperature), " + fixedDigits(100 * p.recentAcceptance, 0) + "% kept lately";
+    else line += " | temperature " + temperatureText(p.temperature) + ", " + fixedDigits(100 * p.recentAcceptance, 0) + "% accepted lately";
     line += " | " + durationText(p.seconds);
     if (p.iteration < p.iterations) line += ", about " + durationText(p.etaSeconds) + " left";
     return line;

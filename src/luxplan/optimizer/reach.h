@@ -7,7 +7,7 @@
 #include <string>
 
 #include <luxplan/core/math.h>
-#include <luxplan/lightsamplers/sampler_result.h>
+#include <luxplan/scene/sampler_result.h>
 #include <luxplan/scene/scene.h>
 
 namespace luxplan {

@@ -165,9 +165,10 @@ std::string reportJson(const Scene& scene, const OptimizerResult& r) {
     for (size_t k = 0; k < best.samplers.samplers.size() && k < scene.samplers.size(); ++k) {
         const SamplerResult& m = best.samplers.samplers[k];
         const LightSamplerSpec& s = scene.samplers[k];
+        const SamplerRow row(s, m);
         Json e = {{"name", s.name}, {"type", s.type->name()}, {"description", s.type->describe()}, {"unit", s.type->unit()},
                   {"value", json::numberOrNull(m.value)}, {"std_error", json::numberOrNull(m.standardError)}, {"target", {json::numberOrNull(s.targetMin), json::numberOrNull(s.targetMax)}},
-                  {"tolerance", s.tolerance}, {"weight", s.weight}, {"penalty", json::numberOrNull(lightingPenalty(s, m.value))}};
+                  {"tolerance", s.tolerance}, {"weight", s.weight}, {"penalty", json::numberOrNull(row.penalty())}};
         if (!m.points.empty()) e["points"] = m.points;
         if (s.type->hasPointStatistics()) e["covered"] = m.covered;
         if (k < r.lightFloors.size()) e["search_light_floor"] = r.lightFloors[k];
@@ -180,7 +181,7 @@ std::string reportJson(const Scene& scene, const OptimizerResult& r) {
                           {"layouts_measured", range.layouts}};
             if (!verdict.reason.empty()) e["reach"]["reason"] = verdict.reason;
         }
-        e.update(samplerStatisticsJson(s, m));
+        e.update(row.detailsJson());
         samplers.push_back(e);
     }
     j["samplers"] = samplers;

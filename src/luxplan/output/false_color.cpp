@@ -2,7 +2,7 @@
 // legend bar with its tick labels.
 #include <luxplan/output/false_color.h>
 
-#include <cstdio>
+#include <luxplan/core/format.h>
 
 namespace luxplan {
 namespace {
@@ -111,16 +111,6 @@ std::vector<double> legendTicks(const FalseColor& scale, int ticks) {
     return out;
 }
 
-std::string formatValue(double v) {
-    char buffer[32];
-    double a = std::abs(v);
-    if (a == 0) return "0";
-    if (a >= 10000) std::snprintf(buffer, sizeof buffer, "%.3gk", v / 1000);
-    else if (a >= 100 || std::abs(v - std::round(v)) < 1e-9 * a) std::snprintf(buffer, sizeof buffer, "%.0f", v);
-    else std::snprintf(buffer, sizeof buffer, "%.3g", v);
-    return buffer;
-}
-
 int drawLegend(Image& image, const FalseColor& scale, int x, int y, int width, int height, const std::string& unit,
                int ticks) {
     height = std::max(height, 2);
@@ -133,7 +123,7 @@ int drawLegend(Image& image, const FalseColor& scale, int x, int y, int width, i
     for (double v : legendTicks(scale, ticks)) {
         double py = y + (1 - scale.fraction(v)) * height;
         image.drawLine({double(x + width), py}, {double(x + width + 4), py}, kBlack, 1);
-        std::string label = formatValue(v);
+        std::string label = compactNumber(v);
         image.drawText(x + width + 7, py - 3, label, kBlack, 1, TextAlign::Left);
         widest = std::max(widest, textWidth(label));
     }

@@ -59,7 +59,4 @@ std::vector<double> legendTicks(const FalseColor& scale, int ticks = 5);
 int drawLegend(Image& image, const FalseColor& scale, int x, int y, int width, int height,
                const std::string& unit = "lx", int ticks = 5);
 
-// A compact number label: "0", "12.5", "250", "2270", "25k" (no decimals from 100 up).
-std::string formatValue(double v);
-
 }  // namespace luxplan

@@ -229,16 +229,6 @@ void Image::drawText(double x, double y, std::string_view text, Rgb color, int s
     }
 }
 
-void Image::drawLabel(double x, double y, std::string_view text, Rgb color, Rgb background, int scale,
-                      TextAlign align, double backgroundAlpha) {
-    scale = std::max(1, scale);
-    int w = textWidth(text, scale), h = textHeight(text, scale), pad = 2 * scale;
-    double left = std::round(align == TextAlign::Left ? x : align == TextAlign::Center ? x - w / 2.0 : x - w);
-    y = std::round(y);
-    fillRect(left - pad, y - pad, left + w + pad, y + h + pad, background, backgroundAlpha);
-    drawText(left, y, text, color, scale, TextAlign::Left);
-}
-
 void Image::blit(const Image& source, int x, int y) {
     for (int sy = 0; sy < source.height(); ++sy) {
         int ty = y + sy;

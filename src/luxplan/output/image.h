@@ -59,10 +59,6 @@ public:
     // the left end, centre or right end by `align`. '\n' starts a new line.
     void drawText(double x, double y, std::string_view text, Rgb color, int scale = 1,
                   TextAlign align = TextAlign::Left, double alpha = 1);
-    // The text over a filled box of `background` (padding 2 * scale pixels), for labels
-    // that must stay legible over a false-colour map.
-    void drawLabel(double x, double y, std::string_view text, Rgb color, Rgb background, int scale = 1,
-                   TextAlign align = TextAlign::Left, double backgroundAlpha = 0.75);
     // Copies `source` with its top-left corner at (x, y), clipped.
     void blit(const Image& source, int x, int y);
 

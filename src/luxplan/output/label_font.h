@@ -19,8 +19,6 @@ public:
     // Text whose lines are `pixelHeight` pixels apart (ascent plus descent).
     explicit LabelFont(double pixelHeight = 14);
 
-    // Whether the TrueType font is drawn (false: the bitmap font's fallback).
-    bool trueType() const { return trueType_; }
     // Width (the widest line) and height (lines x line height) in pixels, rounded up.
     int width(std::string_view text) const;
     int height(std::string_view text) const;

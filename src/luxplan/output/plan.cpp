@@ -5,14 +5,15 @@
 #include <cstdio>
 
 #include <luxplan/core/estimator.h>
+#include <luxplan/core/format.h>
 #include <luxplan/core/parallel.h>
 #include <luxplan/core/rng.h>
 #include <luxplan/scene/room.h>
 #include <luxplan/emitters/emitter_shape.h>
-#include <luxplan/constraints/penalty.h>
 #include <luxplan/lightsamplers/sampler_type.h>
 #include <luxplan/output/contours.h>
 #include <luxplan/output/label_font.h>
+#include <luxplan/optimizer/sampler_report.h>
 
 namespace luxplan {
 namespace {
@@ -288,195 +289,192 @@ FalseColor planFalseColor(const Scene& scene, const std::vector<double>& values)
     return autoFalseColor(values, ColorScale::Log);
 }
 
-Image renderPlan(const Scene& scene, const Layout& layout, const PlanOptions& options, const PlanData& data,
-                 std::vector<PlanLabel>* placedLabels) {
-    const std::vector<Transform> world = worldTransforms(scene, layout);
-    const Bounds3 bounds = planBounds(scene, world);
-    const RoomShell* room = scene.room();
-    const double s = options.pixelsPerMetre > 0 ? options.pixelsPerMetre : 80;
-    const int margin = std::max(40, options.margin);
-    const int titleHeight = options.title.empty() ? 0 : 24;
-    const bool hasMap = data.workPlane && !data.workPlane->values.empty();
-    const int legendWidth = hasMap ? 150 : 0;
-    const Vec3 size = bounds.size();
-    const int planW = int(std::ceil(size.x * s)), planH = int(std::ceil(size.y * s));
+namespace {
 
-    // One row per work plane (an illuminance sampler with points) that has results.
-    struct TableRow {
+// The work planes' table under the plan: one row per illuminance sampler with points
+// that has results, green where it meets its goals.
+struct PlanTable {
+    struct Row {
         std::string text;
         bool met = false;
     };
-    std::vector<TableRow> tableRows;
+    std::string header;
+    std::vector<Row> rows;
+};
+
+PlanTable planTable(const Scene& scene, const PlanData& data) {
+    PlanTable table;
     size_t nameWidth = 10;
     for (const LightSamplerSpec& spec : scene.samplers) nameWidth = std::max(nameWidth, spec.name.size());
-    char tableHeader[200];
-    std::snprintf(tableHeader, sizeof tableHeader, "%-*s %8s %8s %8s %6s  target (lx)", int(nameWidth), "work plane", "Em",
-                  "Emin", "Emax", "U0");
-    if (data.samplers)
-        for (size_t k = 0; k < scene.samplers.size() && k < data.samplers->size(); ++k) {
-            const LightSamplerSpec& spec = scene.samplers[k];
-            if (!spec.type->hasPointStatistics() || std::string_view(spec.type->unit()) != "lx") continue;
-            const SamplerResult& r = (*data.samplers)[k];
-            const PointStatistics st = pointStatistics(r.points, r.pointErrors);
-            std::string target = formatValue(spec.targetMin);
-            if (std::isfinite(spec.targetMax)) {
-                target += '-';
-                target += formatValue(spec.targetMax);
-            } else {
-                target += '+';
-            }
-            char row[300];
-            std::snprintf(row, sizeof row, "%-*s %8s %8s %8s %6.2f  %s", int(nameWidth), spec.name.c_str(),
-                          formatValue(st.mean.value).c_str(), formatValue(st.min.value).c_str(),
-                          formatValue(st.max.value).c_str(), st.u0.value, target.c_str());
-            tableRows.push_back({row, allMet(lightingTerms(spec, r))});
+    char header[200];
+    std::snprintf(header, sizeof header, "%-*s %8s %8s %8s %6s  target (lx)", int(nameWidth), "work plane", "Em", "Emin",
+                  "Emax", "U0");
+    table.header = header;
+    if (!data.samplers) return table;
+    for (size_t k = 0; k < scene.samplers.size() && k < data.samplers->size(); ++k) {
+        const LightSamplerSpec& spec = scene.samplers[k];
+        if (!spec.type->hasPointStatistics() || std::string_view(spec.type->unit()) != "lx") continue;
+        const SamplerRow sampler(spec, (*data.samplers)[k]);
+        const PointStatistics& st = *sampler.statistics();
+        std::string target = compactNumber(spec.targetMin);
+        if (std::isfinite(spec.targetMax)) {
+            target += '-';
+            target += compactNumber(spec.targetMax);
+        } else {
+            target += '+';
         }
-    const int tableHeight = tableRows.empty() ? 0 : int(tableRows.size() + 1) * (kLineAdvance + 3) + 8;
-    const int tableWidth = tableRows.empty() ? 0 : textWidth(tableRows.front().text) + 2 * margin;
-
-    Image image(std::max(planW + 2 * margin + legendWidth, tableWidth), planH + 2 * margin + titleHeight + 10 + tableHeight,
-                kWhite);
-    const int planTop = titleHeight;
-    PlanMapping map{bounds.lo.x, bounds.hi.y, s, double(margin), double(margin + titleHeight)};
-    // The plan area's top-left and bottom-right corners in pixels.
-    const Vec2 roomLo = map(bounds.lo.x, bounds.hi.y), roomHi = map(bounds.hi.x, bounds.lo.y);
-    const double wall = std::max(4.0, 0.12 * s);
-
-    const LabelFont labelFont(options.labelHeight);
-    if (!options.title.empty()) LabelFont(20).draw(image, margin, 3, options.title, kBlack);
-
-    // Walls as a dark band around the floor, then the floor.
-    if (room) image.fillRect(roomLo.x - wall, roomLo.y - wall, roomHi.x + wall, roomHi.y + wall, kWallColor);
-    image.fillRect(roomLo.x, roomLo.y, roomHi.x, roomHi.y, kFloorColor);
-
-    // Work-plane illuminance, clipped to the plan area; cells inside furniture hatched.
-    FalseColor falseColor;
-    std::vector<char> free;
-    if (hasMap) {
-        const IlluminanceGrid& g = *data.workPlane;
-        falseColor = options.colors ? *options.colors : planFalseColor(scene, g.values);
-        free = freeCells(scene, layout, g);
-        for (int j = 0; j < g.ny; ++j)
-            for (int i = 0; i < g.nx; ++i) {
-                double x0 = std::max(bounds.lo.x, g.origin.x + i * g.cellSize);
-                double x1 = std::min(bounds.hi.x, g.origin.x + (i + 1) * g.cellSize);
-                double y0 = std::max(bounds.lo.y, g.origin.y + j * g.cellSize);
-                double y1 = std::min(bounds.hi.y, g.origin.y + (j + 1) * g.cellSize);
-                if (x1 <= x0 || y1 <= y0) continue;
-                Vec2 a = map(x0, y1), b = map(x1, y0);
-                if (free[size_t(j) * size_t(g.nx) + size_t(i)]) {
-                    image.fillRect(a.x, a.y, b.x, b.y, falseColor.color(g.at(i, j)));
-                    continue;
-                }
-                image.fillRect(a.x, a.y, b.x, b.y, kHatchColor);
-                for (int y = int(std::ceil(a.y - 0.5)); y < int(std::ceil(b.y - 0.5)); ++y)
-                    for (int x = int(std::ceil(a.x - 0.5)); x < int(std::ceil(b.x - 0.5)); ++x)
-                        if ((x + y) % 6 == 0 && x >= 0 && y >= 0 && x < image.width() && y < image.height())
-                            image.at(x, y) = kStaticColor;
-            }
+        char row[300];
+        std::snprintf(row, sizeof row, "%-*s %8s %8s %8s %6.2f  %s", int(nameWidth), spec.name.c_str(),
+                      compactNumber(st.mean.value).c_str(), compactNumber(st.min.value).c_str(),
+                      compactNumber(st.max.value).c_str(), st.u0.value, target.c_str());
+        table.rows.push_back({row, sampler.met()});
     }
+    return table;
+}
 
-    // Isolux contours at the legend's ticks (the target band's ends bolder), each
-    // labelled once where a label fits.
-    struct ContourLabel {
-        Vec2 at;
-        std::string text;
-    };
-    std::vector<ContourLabel> contourLabels;
-    if (hasMap && options.contours) {
-        const IlluminanceGrid& g = *data.workPlane;
-        auto toPixels = [&](Vec2 p) {
-            return map(g.origin.x + (p.x + 0.5) * g.cellSize, g.origin.y + (p.y + 0.5) * g.cellSize);
-        };
-        // Contours of the map smoothed by a 3 x 3 binomial filter over free cells, so that
-        // the lines follow the light and not the per-cell noise of a quick grid.
-        std::vector<double> smooth(g.values.size(), 0.0);
-        for (int j = 0; j < g.ny; ++j)
-            for (int i = 0; i < g.nx; ++i) {
-                double sum = 0, weight = 0;
-                for (int dj = -1; dj <= 1; ++dj)
-                    for (int di = -1; di <= 1; ++di) {
-                        int a = i + di, b = j + dj;
-                        if (a < 0 || b < 0 || a >= g.nx || b >= g.ny || !free[size_t(b) * size_t(g.nx) + size_t(a)]) continue;
-                        double w = (di ? 1 : 2) * (dj ? 1 : 2);
-                        sum += w * g.at(a, b), weight += w;
-                    }
-                smooth[size_t(j) * size_t(g.nx) + size_t(i)] = weight > 0 ? sum / weight : g.at(i, j);
-            }
-        std::vector<double> levels = legendTicks(falseColor);
-        if (falseColor.band) levels.insert(levels.end(), falseColor.band->begin(), falseColor.band->end());
-        std::sort(levels.begin(), levels.end());
-        levels.erase(std::unique(levels.begin(), levels.end(), [](double a, double b) { return std::abs(a - b) <= 1e-9 * b; }),
-                     levels.end());
-        for (double level : levels) {
-            if (!(level > falseColor.minValue()) || !(level < falseColor.maxValue)) continue;
-            std::vector<ContourSegment> segments = isolines(smooth, g.nx, g.ny, level, free);
-            if (segments.empty()) continue;
-            const bool bandEdge = falseColor.band && (std::abs(level - (*falseColor.band)[0]) <= 1e-9 * level ||
-                                                     std::abs(level - (*falseColor.band)[1]) <= 1e-9 * level);
-            for (const ContourSegment& seg : segments)
-                image.drawLine(toPixels(seg.a), toPixels(seg.b), kContourColor, bandEdge ? 2 : 1, bandEdge ? 0.9 : 0.6);
-            const ContourSegment& mid = segments[segments.size() / 2];
-            contourLabels.push_back({(toPixels(mid.a) + toPixels(mid.b)) * 0.5 - Vec2(0, options.labelHeight / 2), formatValue(level)});
-        }
-    }
+// The plan's frame: the picture's size and where the room lies in it.
+struct PlanFrame {
+    Bounds3 bounds;
+    PlanMapping map;
+    Vec2 roomLo, roomHi;  // the plan area's top-left and bottom-right corners, pixels
+    double wall = 0;      // the walls' band, pixels
+    int planTop = 0, planH = 0, margin = 0;
+};
 
-    // Openings: glazed ones light blue across the wall band, open ones a gap.
-    if (room) {
-        for (const Opening& o : room->openings) {
-            WallFrame f = wallFrame(room->box, o.wall);
-            auto r = openingRect(room->box, o);
-            if (o.wall == Wall::Ceiling) {
-                std::vector<Vec3> corners{f.origin + f.u * r[0] + f.v * r[1], f.origin + f.u * r[2] + f.v * r[1],
-                                          f.origin + f.u * r[2] + f.v * r[3], f.origin + f.u * r[0] + f.v * r[3]};
-                auto poly = footprint(corners, map);
-                image.fillPolygon(poly, kGlassColor, o.material ? 0.35 : 0.15);
-                image.drawPolygon(poly, darker(kGlassColor, 0.7), 2);
+// A label to place once everything is drawn.
+struct PendingLabel {
+    Vec2 at;
+    std::string text;
+    Rgb color;
+};
+
+// Work-plane illuminance, clipped to the plan area; cells inside furniture hatched.
+void drawWorkPlane(Image& image, const PlanFrame& f, const IlluminanceGrid& g, const FalseColor& falseColor,
+                   const std::vector<char>& free) {
+    for (int j = 0; j < g.ny; ++j)
+        for (int i = 0; i < g.nx; ++i) {
+            double x0 = std::max(f.bounds.lo.x, g.origin.x + i * g.cellSize);
+            double x1 = std::min(f.bounds.hi.x, g.origin.x + (i + 1) * g.cellSize);
+            double y0 = std::max(f.bounds.lo.y, g.origin.y + j * g.cellSize);
+            double y1 = std::min(f.bounds.hi.y, g.origin.y + (j + 1) * g.cellSize);
+            if (x1 <= x0 || y1 <= y0) continue;
+            Vec2 a = f.map(x0, y1), b = f.map(x1, y0);
+            if (free[size_t(j) * size_t(g.nx) + size_t(i)]) {
+                image.fillRect(a.x, a.y, b.x, b.y, falseColor.color(g.at(i, j)));
                 continue;
             }
-            Vec2 a = map(f.origin + f.u * r[0]), b = map(f.origin + f.u * r[2]);
-            Vec2 out{-f.inward.x, f.inward.y};  // pixel space (y flipped)
-            std::vector<Vec2> band{a - out * 0.5, b - out * 0.5, b + out * (wall + 0.5), a + out * (wall + 0.5)};
-            if (o.material) {
-                image.fillPolygon(band, kGlassColor);
-                image.drawLine(a + out * (wall / 2), b + out * (wall / 2), darker(kGlassColor, 0.6), 1.5);
-            } else {
-                image.fillPolygon(band, kWhite);
-                image.drawLine(a, a + out * wall, kWallColor, 1);
-                image.drawLine(b, b + out * wall, kWallColor, 1);
-            }
+            image.fillRect(a.x, a.y, b.x, b.y, kHatchColor);
+            for (int y = int(std::ceil(a.y - 0.5)); y < int(std::ceil(b.y - 0.5)); ++y)
+                for (int x = int(std::ceil(a.x - 0.5)); x < int(std::ceil(b.x - 0.5)); ++x)
+                    if ((x + y) % 6 == 0 && x >= 0 && y >= 0 && x < image.width() && y < image.height())
+                        image.at(x, y) = kStaticColor;
+        }
+}
+
+// The map smoothed by a 3 x 3 binomial filter over free cells, so that isolux lines
+// follow the light and not the per-cell noise of a quick grid.
+std::vector<double> smoothedWorkPlane(const IlluminanceGrid& g, const std::vector<char>& free) {
+    std::vector<double> smooth(g.values.size(), 0.0);
+    for (int j = 0; j < g.ny; ++j)
+        for (int i = 0; i < g.nx; ++i) {
+            double sum = 0, weight = 0;
+            for (int dj = -1; dj <= 1; ++dj)
+                for (int di = -1; di <= 1; ++di) {
+                    int a = i + di, b = j + dj;
+                    if (a < 0 || b < 0 || a >= g.nx || b >= g.ny || !free[size_t(b) * size_t(g.nx) + size_t(a)]) continue;
+                    double w = (di ? 1 : 2) * (dj ? 1 : 2);
+                    sum += w * g.at(a, b), weight += w;
+                }
+            smooth[size_t(j) * size_t(g.nx) + size_t(i)] = weight > 0 ? sum / weight : g.at(i, j);
+        }
+    return smooth;
+}
+
+// Isolux contours at the legend's ticks (the target band's ends bolder); returns a
+// label for each, to be placed where one fits.
+std::vector<PendingLabel> drawContours(Image& image, const PlanFrame& f, const IlluminanceGrid& g, const FalseColor& falseColor,
+                                       const std::vector<char>& free, double labelHeight) {
+    auto toPixels = [&](Vec2 p) { return f.map(g.origin.x + (p.x + 0.5) * g.cellSize, g.origin.y + (p.y + 0.5) * g.cellSize); };
+    const std::vector<double> smooth = smoothedWorkPlane(g, free);
+    std::vector<double> levels = legendTicks(falseColor);
+    if (falseColor.band) levels.insert(levels.end(), falseColor.band->begin(), falseColor.band->end());
+    std::sort(levels.begin(), levels.end());
+    levels.erase(std::unique(levels.begin(), levels.end(), [](double a, double b) { return std::abs(a - b) <= 1e-9 * b; }),
+                 levels.end());
+    std::vector<PendingLabel> labels;
+    for (double level : levels) {
+        if (!(level > falseColor.minValue()) || !(level < falseColor.maxValue)) continue;
+        std::vector<ContourSegment> segments = isolines(smooth, g.nx, g.ny, level, free);
+        if (segments.empty()) continue;
+        const bool bandEdge = falseColor.band && (std::abs(level - (*falseColor.band)[0]) <= 1e-9 * level ||
+                                                 std::abs(level - (*falseColor.band)[1]) <= 1e-9 * level);
+        for (const ContourSegment& seg : segments)
+            image.drawLine(toPixels(seg.a), toPixels(seg.b), kContourColor, bandEdge ? 2 : 1, bandEdge ? 0.9 : 0.6);
+        const ContourSegment& mid = segments[segments.size() / 2];
+        labels.push_back({(toPixels(mid.a) + toPixels(mid.b)) * 0.5 - Vec2(0, labelHeight / 2), compactNumber(level),
+                          kContourColor});
+    }
+    return labels;
+}
+
+// Openings: glazed ones light blue across the wall band, open ones a gap.
+void drawOpenings(Image& image, const PlanFrame& f, const RoomShell& room) {
+    for (const Opening& o : room.openings) {
+        WallFrame w = wallFrame(room.box, o.wall);
+        auto r = openingRect(room.box, o);
+        if (o.wall == Wall::Ceiling) {
+            std::vector<Vec3> corners{w.origin + w.u * r[0] + w.v * r[1], w.origin + w.u * r[2] + w.v * r[1],
+                                      w.origin + w.u * r[2] + w.v * r[3], w.origin + w.u * r[0] + w.v * r[3]};
+            auto poly = footprint(corners, f.map);
+            image.fillPolygon(poly, kGlassColor, o.material ? 0.35 : 0.15);
+            image.drawPolygon(poly, darker(kGlassColor, 0.7), 2);
+            continue;
+        }
+        Vec2 a = f.map(w.origin + w.u * r[0]), b = f.map(w.origin + w.u * r[2]);
+        Vec2 out{-w.inward.x, w.inward.y};  // pixel space (y flipped)
+        std::vector<Vec2> band{a - out * 0.5, b - out * 0.5, b + out * (f.wall + 0.5), a + out * (f.wall + 0.5)};
+        if (o.material) {
+            image.fillPolygon(band, kGlassColor);
+            image.drawLine(a + out * (f.wall / 2), b + out * (f.wall / 2), darker(kGlassColor, 0.6), 1.5);
+        } else {
+            image.fillPolygon(band, kWhite);
+            image.drawLine(a, a + out * f.wall, kWallColor, 1);
+            image.drawLine(b, b + out * f.wall, kWallColor, 1);
         }
     }
+}
 
-    struct Label {
-        Vec2 at;
-        std::string text;
-    };
-    std::vector<Label> staticLabels;
-
-    // Fixed objects (boxes, meshes, blockers).
+// Fixed objects (boxes, meshes, blockers); returns their name labels.
+std::vector<PendingLabel> drawStaticItems(Image& image, const PlanFrame& f, const Scene& scene, const PlanOptions& options) {
+    std::vector<PendingLabel> labels;
     for (const StaticItem& item : scene.geometry) {
         if (item.kind == StaticKind::Room || item.mesh.empty()) continue;
         Bounds3 b = item.mesh.bounds();
-        auto poly = footprint(boxCorners(b, Transform()), map);
+        auto poly = footprint(boxCorners(b, Transform()), f.map);
         if (item.invisible) {
             image.drawPolygon(poly, kStaticColor, 1);
         } else {
             image.fillPolygon(poly, kStaticColor, 0.45);
             image.drawPolygon(poly, darker(kStaticColor), 1.5);
         }
-        if (options.entityLabels) staticLabels.push_back({centroid(poly) - Vec2(0, options.labelHeight / 2), item.name});
+        if (options.entityLabels)
+            labels.push_back({centroid(poly) - Vec2(0, options.labelHeight / 2), item.name, darker(kStaticColor, 0.4)});
     }
+    return labels;
+}
 
-    // Furniture footprints: the union of the parts' projected boxes, filled once.
-    std::vector<Label> entityLabels;
+// Furniture footprints (the union of the parts' projected boxes, filled once) with
+// their fronts as arrows; returns their name labels.
+std::vector<PendingLabel> drawFurniture(Image& image, const PlanFrame& f, const Scene& scene,
+                                        const std::vector<Transform>& world, const PlanOptions& options) {
+    std::vector<PendingLabel> labels;
     for (size_t e = 0; e < scene.entities.size(); ++e) {
         const Entity& entity = scene.entities[e];
         if (entity.parts.empty()) continue;
         std::vector<std::vector<Vec2>> parts;
         std::vector<Vec2> all;
         for (const PartInfo& part : entity.parts) {
-            parts.push_back(footprint(boxCorners(part.bounds, world[e]), map));
+            parts.push_back(footprint(boxCorners(part.bounds, world[e]), f.map));
             all.insert(all.end(), parts.back().begin(), parts.back().end());
         }
         Rgb color = materialColor(scene.materials.at(entity.parts.front().material));
@@ -499,22 +497,27 @@ Image renderPlan(const Scene& scene, const Layout& layout, const PlanOptions& op
             Vec2 dir{d.x / len, -d.y / len};
             drawArrow(image, c, c + dir * reach, kFrontColor, 2);
         }
-        if (options.entityLabels) entityLabels.push_back({c - Vec2(0, options.labelHeight / 2), entity.name});
+        if (options.entityLabels) labels.push_back({c - Vec2(0, options.labelHeight / 2), entity.name, kBlack});
     }
+    return labels;
+}
 
-    // Luminaires.
+void drawLuminaires(Image& image, const PlanFrame& f, const Scene& scene, const std::vector<Transform>& world) {
     for (const Emitter& emitter : scene.emitters) {
         Transform t = emitter.entity >= 0 ? world[size_t(emitter.entity)] : Transform();
         std::vector<Vec3> outline = emitter.shape->outline();
         for (Vec3& p : outline) p = t.applyPoint(p);
-        auto poly = footprint(outline, map);
+        auto poly = footprint(outline, f.map);
         image.fillPolygon(poly, kLuminaireColor, 0.35);
         image.drawPolygon(poly, kLuminaireEdge, 2);
     }
+}
 
-    // Light samplers, green when they meet their targets (statistics goals too).
-    std::vector<Label> samplerLabels;
-    std::vector<Rgb> samplerColors;
+// Light samplers, green when they meet their targets (statistics goals too); returns
+// their labels (name, and value where measured).
+std::vector<PendingLabel> drawSamplers(Image& image, const PlanFrame& f, const Scene& scene,
+                                       const std::vector<Transform>& world, const PlanData& data, const PlanOptions& options) {
+    std::vector<PendingLabel> labels;
     for (size_t k = 0; k < scene.samplers.size(); ++k) {
         const LightSamplerSpec& spec = scene.samplers[k];
         Transform t = spec.entity >= 0 ? world[size_t(spec.entity)] : Transform();
@@ -522,55 +525,110 @@ Image renderPlan(const Scene& scene, const Layout& layout, const PlanOptions& op
         Rgb color = kUnknownColor;
         std::string text = spec.name;
         if (data.samplers && k < data.samplers->size()) {
-            double v = (*data.samplers)[k].value;
-            color = allMet(lightingTerms(spec, (*data.samplers)[k])) ? kPassColor : kFailColor;
-            text.append(" ").append(formatValue(std::round(v * 10) / 10)).append(" ").append(spec.type->unit());
+            const SamplerRow row(spec, (*data.samplers)[k]);
+            color = row.met() ? kPassColor : kFailColor;
+            text.append(" ").append(compactNumber(std::round(row.result().value * 10) / 10)).append(" ").append(spec.type->unit());
         }
-        auto poly = footprint(drawing.outline, map);
+        auto poly = footprint(drawing.outline, f.map);
         if (drawing.fillOpacity > 0) image.fillPolygon(poly, color, drawing.fillOpacity);
         image.drawPolygon(poly, color, drawing.lineWidth);
-        for (const Vec3& p : drawing.dots) image.fillCircle(map(p), drawing.dotRadius, color);
-        Vec2 c = drawing.labelAt ? map(*drawing.labelAt) : centroid(poly);
-        if (options.samplerLabels) samplerLabels.push_back({c + Vec2(0, 8), text}), samplerColors.push_back(color);
+        for (const Vec3& p : drawing.dots) image.fillCircle(f.map(p), drawing.dotRadius, color);
+        Vec2 c = drawing.labelAt ? f.map(*drawing.labelAt) : centroid(poly);
+        if (options.samplerLabels) labels.push_back({c + Vec2(0, 8), text, darker(color, 0.7)});
     }
+    return labels;
+}
 
-    // The legend right of the plan, the work plane's statistics under it.
-    LabelPlacer labels(image, labelFont);
+// The legend right of the plan and the work plane's statistics under it, an area no
+// label may cover.
+void drawWorkPlaneLegend(Image& image, const PlanFrame& f, const IlluminanceGrid& g, const FalseColor& falseColor,
+                         const std::vector<char>& free, LabelPlacer& labels) {
+    int lx = int(f.roomHi.x + f.wall + 62), ly = int(f.roomLo.y + 30);
+    int lh = std::min(300, std::max(60, int(f.roomHi.y - f.roomLo.y) - 110));
+    char text[160];
+    std::snprintf(text, sizeof text, "lx at %.2g m", g.height - f.bounds.lo.z);
+    drawLegend(image, falseColor, lx, ly, 16, lh, text);
+    const PointStatistics st = workPlaneStatistics(g, free);
+    std::snprintf(text, sizeof text, "work plane\nEm   %s lx\nEmin %s lx\nEmax %s lx\nU0   %.2f", compactNumber(st.mean.value).c_str(),
+                  compactNumber(st.min.value).c_str(), compactNumber(st.max.value).c_str(), st.u0.value);
+    const double sx = lx - 50, sy = ly + lh + 16;
+    image.drawText(sx, sy, text, kBlack, 1, TextAlign::Left);
+    labels.reserve(lx - 50, ly - 14, image.width(), sy + textHeight(text) + 2);
+}
+
+}  // namespace
+
+Image renderPlan(const Scene& scene, const Layout& layout, const PlanOptions& options, const PlanData& data,
+                 std::vector<PlanLabel>* placedLabels) {
+    const std::vector<Transform> world = worldTransforms(scene, layout);
+    PlanFrame f;
+    f.bounds = planBounds(scene, world);
+    const RoomShell* room = scene.room();
+    const double s = options.pixelsPerMetre > 0 ? options.pixelsPerMetre : 80;
+    f.margin = std::max(40, options.margin);
+    const int titleHeight = options.title.empty() ? 0 : 24;
+    const bool hasMap = data.workPlane && !data.workPlane->values.empty();
+    const int legendWidth = hasMap ? 150 : 0;
+    const Vec3 size = f.bounds.size();
+    const int planW = int(std::ceil(size.x * s));
+    f.planH = int(std::ceil(size.y * s));
+
+    const PlanTable table = planTable(scene, data);
+    const int tableHeight = table.rows.empty() ? 0 : int(table.rows.size() + 1) * (kLineAdvance + 3) + 8;
+    const int tableWidth = table.rows.empty() ? 0 : textWidth(table.rows.front().text) + 2 * f.margin;
+
+    Image image(std::max(planW + 2 * f.margin + legendWidth, tableWidth), f.planH + 2 * f.margin + titleHeight + 10 + tableHeight,
+                kWhite);
+    f.planTop = titleHeight;
+    f.map = PlanMapping{f.bounds.lo.x, f.bounds.hi.y, s, double(f.margin), double(f.margin + titleHeight)};
+    f.roomLo = f.map(f.bounds.lo.x, f.bounds.hi.y), f.roomHi = f.map(f.bounds.hi.x, f.bounds.lo.y);
+    f.wall = std::max(4.0, 0.12 * s);
+
+    const LabelFont labelFont(options.labelHeight);
+    if (!options.title.empty()) LabelFont(20).draw(image, f.margin, 3, options.title, kBlack);
+
+    // Walls as a dark band around the floor, then the floor.
+    if (room) image.fillRect(f.roomLo.x - f.wall, f.roomLo.y - f.wall, f.roomHi.x + f.wall, f.roomHi.y + f.wall, kWallColor);
+    image.fillRect(f.roomLo.x, f.roomLo.y, f.roomHi.x, f.roomHi.y, kFloorColor);
+
+    FalseColor falseColor;
+    std::vector<char> free;
+    std::vector<PendingLabel> contourLabels;
     if (hasMap) {
         const IlluminanceGrid& g = *data.workPlane;
-        int lx = int(roomHi.x + wall + 62), ly = int(roomLo.y + 30);
-        int lh = std::min(300, std::max(60, int(roomHi.y - roomLo.y) - 110));
-        char text[160];
-        std::snprintf(text, sizeof text, "lx at %.2g m", g.height - bounds.lo.z);
-        drawLegend(image, falseColor, lx, ly, 16, lh, text);
-        const PointStatistics st = workPlaneStatistics(g, free);
-        std::snprintf(text, sizeof text, "work plane\nEm   %s lx\nEmin %s lx\nEmax %s lx\nU0   %.2f", formatValue(st.mean.value).c_str(),
-                      formatValue(st.min.value).c_str(), formatValue(st.max.value).c_str(), st.u0.value);
-        const double sx = lx - 50, sy = ly + lh + 16;
-        image.drawText(sx, sy, text, kBlack, 1, TextAlign::Left);
-        labels.reserve(lx - 50, ly - 14, image.width(), sy + textHeight(text) + 2);
+        falseColor = options.colors ? *options.colors : planFalseColor(scene, g.values);
+        free = freeCells(scene, layout, g);
+        drawWorkPlane(image, f, g, falseColor, free);
+        if (options.contours) contourLabels = drawContours(image, f, g, falseColor, free, options.labelHeight);
     }
+    if (room) drawOpenings(image, f, *room);
+    const std::vector<PendingLabel> staticLabels = drawStaticItems(image, f, scene, options);
+    const std::vector<PendingLabel> entityLabels = drawFurniture(image, f, scene, world, options);
+    drawLuminaires(image, f, scene, world);
+    const std::vector<PendingLabel> samplerLabels = drawSamplers(image, f, scene, world, data, options);
+
+    LabelPlacer labels(image, labelFont);
+    if (hasMap) drawWorkPlaneLegend(image, f, *data.workPlane, falseColor, free, labels);
 
     // Labels last, so nothing covers them, and none over another: sampler results
     // first (they may go further from their samplers, with a leader), then names and
     // contour values near where they belong, or not at all.
-    for (size_t i = 0; i < samplerLabels.size(); ++i)
-        labels.place(samplerLabels[i].at, samplerLabels[i].text, darker(samplerColors[i], 0.7), 0.85, 8);
-    for (const Label& l : entityLabels) labels.place(l.at, l.text, kBlack, 0.7, 2);
-    for (const Label& l : staticLabels) labels.place(l.at, l.text, darker(kStaticColor, 0.4), 0.5, 2);
-    for (const ContourLabel& l : contourLabels) labels.place(l.at, l.text, kContourColor, 0.6, 1);
+    for (const PendingLabel& l : samplerLabels) labels.place(l.at, l.text, l.color, 0.85, 8);
+    for (const PendingLabel& l : entityLabels) labels.place(l.at, l.text, l.color, 0.7, 2);
+    for (const PendingLabel& l : staticLabels) labels.place(l.at, l.text, l.color, 0.5, 2);
+    for (const PendingLabel& l : contourLabels) labels.place(l.at, l.text, l.color, 0.6, 1);
     if (placedLabels) *placedLabels = labels.labels();
 
     // Scale bar under the plan, north arrow in the top-right margin.
-    drawScaleBar(image, map, {roomLo.x, roomHi.y + wall + 12}, size.x);
-    drawNorthArrow(image, {roomHi.x + margin / 2.0, roomLo.y - margin / 2.0 + 6}, scene.site.northDeg);
+    drawScaleBar(image, f.map, {f.roomLo.x, f.roomHi.y + f.wall + 12}, size.x);
+    drawNorthArrow(image, {f.roomHi.x + f.margin / 2.0, f.roomLo.y - f.margin / 2.0 + 6}, scene.site.northDeg);
 
     // The work planes' table under the plan.
-    double rowY = planTop + planH + 2 * margin + 4;
-    if (!tableRows.empty()) image.drawText(margin, rowY, tableHeader, kBlack, 1, TextAlign::Left);
-    for (const TableRow& row : tableRows) {
+    double rowY = f.planTop + f.planH + 2 * f.margin + 4;
+    if (!table.rows.empty()) image.drawText(f.margin, rowY, table.header, kBlack, 1, TextAlign::Left);
+    for (const PlanTable::Row& row : table.rows) {
         rowY += kLineAdvance + 3;
-        image.drawText(margin, rowY, row.text, row.met ? darker(kPassColor, 0.8) : darker(kFailColor, 0.8), 1, TextAlign::Left);
+        image.drawText(f.margin, rowY, row.text, row.met ? darker(kPassColor, 0.8) : darker(kFailColor, 0.8), 1, TextAlign::Left);
     }
     return image;
 }

@@ -2,9 +2,9 @@
 // best cost so far, on a linear or logarithmic y axis.
 #include <luxplan/output/plot.h>
 
-#include <cstdio>
 
 #include <luxplan/output/false_color.h>
+#include <luxplan/core/format.h>
 
 namespace luxplan {
 namespace {
@@ -59,7 +59,7 @@ Image plotConvergence(const std::vector<TracePoint>& trace, const PlotOptions& o
         double x = px(it);
         image.drawLine({x, y0}, {x, y1}, kGridColor, 1);
         image.drawLine({x, y1}, {x, y1 + 4}, kBlack, 1);
-        image.drawText(x, y1 + 8, formatValue(it), kBlack, 1, TextAlign::Center);
+        image.drawText(x, y1 + 8, compactNumber(it), kBlack, 1, TextAlign::Center);
     }
     std::vector<double> yTicks;
     if (logY) {
@@ -72,7 +72,7 @@ Image plotConvergence(const std::vector<TracePoint>& trace, const PlotOptions& o
         double y = py(v);
         image.drawLine({x0, y}, {x1, y}, kGridColor, 1);
         image.drawLine({x0 - 4, y}, {x0, y}, kBlack, 1);
-        image.drawText(x0 - 7, y - 3, formatValue(v), kBlack, 1, TextAlign::Right);
+        image.drawText(x0 - 7, y - 3, compactNumber(v), kBlack, 1, TextAlign::Right);
     }
     image.drawLine({x0, y0}, {x0, y1}, kBlack, 1);
     image.drawLine({x0, y1}, {x1, y1}, kBlack, 1);

@@ -16,8 +16,10 @@
 #include <luxplan/constraints/constraint_type.h>
 #include <luxplan/core/atomic_file.h>
 #include <luxplan/core/error.h>
+#include <luxplan/core/format.h>
 #include <luxplan/constraints/penalty.h>
 #include <luxplan/lightsamplers/sampler_type.h>
+#include <luxplan/optimizer/sampler_report.h>
 #include <luxplan/scene/layout.h>
 
 namespace luxplan {
@@ -78,16 +80,15 @@ static_assert(std::size(kImageCaptions) == std::size(kReportImages));
 
 // Notes on kReportFiles, in its order.
 constexpr const char* kFileNotes[] = {"the scene under the layout, binary glTF 2.0 (Blender: File > Import > glTF)",
-                                      "the layout (SCENE-FORMAT.md)", "costs, samplers, constraints and moves as JSON",
+                                      "the layout: where each movable entity stands (docs/scene-format.md, layout.json)", "costs, samplers, constraints and moves as JSON",
                                       "iteration, current and best cost"};
 static_assert(std::size(kFileNotes) == std::size(kReportFiles));
 
+// `digits` decimals; a dash for NaN, the infinity sign for an infinity.
 std::string number(double v, int digits) {
     if (std::isnan(v)) return "&ndash;";
     if (std::isinf(v)) return v > 0 ? "&infin;" : "&minus;&infin;";
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.*f", digits, v);
-    return buf;
+    return fixedDigits(v, digits);
 }
 
 std::string range(double lo, double hi, int digits) {
@@ -224,11 +225,7 @@ void pictures(std::ostringstream& out, const std::filesystem::path& folder) {
     if (!files.str().empty()) out << "<h2>Files</h2>\n<ul>\n" << files.str() << "</ul>\n";
 }
 
-std::string percent(double share) {
-    char text[16];
-    std::snprintf(text, sizeof text, "%.0f%%", 100 * share);
-    return text;
-}
+std::string percent(double share) { return fixedDigits(100 * share, 0) + "%"; }
 
 // A goal's status in words and its cell's class: met, at its bound within noise (past
 // it by less than a standard error: not called missed), or missed.
@@ -242,10 +239,11 @@ GoalStatus goalStatus(bool met, double value, double standardError, double lo, d
     if (standardError > 0 && past <= standardError) return {"at bound (within noise)", "warn"};
     return {"missed", "missed"};
 }
-GoalStatus samplerStatus(const LightSamplerSpec& s, const SamplerResult& r, const std::vector<LightingTerm>& terms) {
-    if (allMet(terms)) return {"met", "met"};
-    return reachVerdict(s, SamplerRange(), r).reach == Reach::WithinNoise ? GoalStatus{"at bound (within noise)", "warn"}
-                                                                         : GoalStatus{"missed", "missed"};
+GoalStatus samplerStatus(const SamplerRow& row) {
+    if (row.met()) return {"met", "met"};
+    return reachVerdict(row.sampler(), SamplerRange(), row.result()).reach == Reach::WithinNoise
+               ? GoalStatus{"at bound (within noise)", "warn"}
+               : GoalStatus{"missed", "missed"};
 }
 
 // Each scene sampler's measurement shown on the page (the data's, else the result's),
@@ -272,11 +270,19 @@ GoalStatus clientStatus(const LightingTerm& t) {
 }
 
 // A unit after a number ("" for the quantities that are their own unit: UGR, DGP).
-std::string unitAfter(const char* unit) {
-    const std::string u = unit;
-    if (u == "UGR" || u == "DGP") return "";
+std::string unitAfter(const LightSamplerSpec& s) {
+    const std::string u = s.type->unit();
+    if (s.type->valueFormat().unitless) return "";
     if (u == "cd/m2") return "&nbsp;cd/m&sup2;";
     return "&nbsp;" + escapeHtml(u);
+}
+
+// A sampler's value with `digits` decimals and `unit` after it; "&lt;10" below its
+// type's floor.
+std::string samplerValueHtml(const SamplerRow& row, int digits, const std::string& unit) {
+    const double v = row.result().value;
+    if (v < row.format().floor) return escapeHtml(row.valueText(digits));
+    return number(v, digits) + unit;
 }
 
 // A target band as a client reads it: "&ge; 300 lx", "&le; 19", "300 to 500 lx".
@@ -291,20 +297,7 @@ std::string targetWords(double lo, double hi, int digits, const std::string& uni
 // What a quantity is called in the results: by the sampler's type. A mean illuminance
 // is a maintained one (EN 12464-1) only where a maintenance factor below 1 made it so.
 std::string quantityName(const Scene& scene, const LightSamplerSpec& s) {
-    const std::string type = s.type->name();
-    if (type == "planar") return scene.maintenanceFactor < 1 ? "E<sub>m</sub> (maintained mean)" : "E<sub>m</sub> (mean)";
-    if (type == "ugr") return "UGR (unified glare rating)";
-    if (type == "dgp") return "DGP (daylight glare probability)";
-    if (type == "directional") return "luminance in view (brightest part)";
-    if (type == "cylindrical") return "E<sub>z</sub> (cylindrical illuminance)";
-    if (type == "volume") return "mean luminance";
-    return escapeHtml(type);
-}
-
-// The digits a sampler's values are shown with.
-int valueDigits(const LightSamplerSpec& s) {
-    const std::string type = s.type->name();
-    return type == "dgp" ? 2 : type == "ugr" ? 1 : 0;  // lx and cd/m2 to the unit
+    return s.type->quantityHtml(scene.maintenanceFactor < 1);
 }
 
 // The goals sentence for the page: the optimizer's count when the page shows its
@@ -378,29 +371,29 @@ void resultsSection(std::ostringstream& out, const Scene& scene, const Optimizer
     std::ostringstream areas, glare, other;
     for (size_t k = 0; k < rows.size(); ++k) {
         const LightSamplerSpec& s = scene.samplers[k];
-        const std::string type = s.type->name();
-        const std::string unit = unitAfter(s.type->unit());
-        const int digits = valueDigits(s);
-        std::ostringstream& table = type == "planar" ? areas : type == "ugr" || type == "dgp" || type == "directional" ? glare : other;
+        const ResultGroup group = s.type->resultGroup();
+        const std::string unit = unitAfter(s);
+        const int digits = s.type->valueFormat().summaryDigits;
+        std::ostringstream& table = group == ResultGroup::TaskArea ? areas : group == ResultGroup::Glare ? glare : other;
         if (!rows[k]) {
             table << "<tr>" << cell("<b>" + escapeHtml(s.name) + "</b>") << cell(quantityName(scene, s))
                   << "<td class=\"num\">&ndash;</td>" << cell(targetWords(s.targetMin, s.targetMax, digits, unit))
                   << "<td class=\"result muted\">not measured</td></tr>\n";
             continue;
         }
-        const std::vector<LightingTerm> terms = lightingTerms(s, *rows[k]);
+        const SamplerRow row(s, *rows[k]);
+        const std::vector<LightingTerm>& terms = row.terms();
         // The value against the sampler's target.
         const GoalStatus valueStatus = clientStatus(terms.front());
-        std::string value = number(rows[k]->value, digits) + unit;
-        if (type == "ugr" && rows[k]->value < 10) value = "&lt;10";
-        if (type != "planar") {
+        const std::string value = samplerValueHtml(row, digits, unit);
+        if (group != ResultGroup::TaskArea || !row.statistics()) {
             resultRow(table, cell("<b>" + escapeHtml(s.name) + "</b>"), quantityName(scene, s), value,
                       targetWords(s.targetMin, s.targetMax, digits, unit), &valueStatus);
             continue;
         }
         // A task area: Em, then Emin and U0 (and Emax where a goal is set on it), each
         // against its statistics goal if it has one.
-        const PointStatistics st = pointStatistics(rows[k]->points, rows[k]->pointErrors);
+        const PointStatistics& st = *row.statistics();
         auto goal = [&](Statistic statistic) -> const LightingTerm* {
             for (size_t i = 1; i < terms.size(); ++i)
                 if (terms[i].statistic == statistic) return &terms[i];
@@ -491,17 +484,17 @@ void samplerTable(std::ostringstream& out, const Scene& scene, const std::vector
                   const OptimizerResult* result, const std::vector<SamplerBudget>& budgets) {
     if (scene.samplers.empty()) return;
     const std::vector<const SamplerResult*> rows = shownSamplers(scene, measured, result);
-    // Its terms: the value's first, then its statistics goals'.
-    std::vector<std::vector<LightingTerm>> terms(rows.size());
+    // The measured samplers' rows (none where not measured).
+    std::vector<std::optional<SamplerRow>> presented(rows.size());
     int met = 0, known = 0;
     bool statistics = false, goals = false;
     for (size_t k = 0; k < rows.size(); ++k) {
         if (!rows[k]) continue;
-        terms[k] = lightingTerms(scene.samplers[k], *rows[k]);
+        const SamplerRow& row = presented[k].emplace(scene.samplers[k], *rows[k]);
         ++known;
-        met += allMet(terms[k]);
-        statistics = statistics || scene.samplers[k].type->hasPointStatistics();
-        goals = goals || terms[k].size() > 1;
+        met += row.met();
+        statistics = statistics || row.statistics();
+        goals = goals || row.terms().size() > 1;
     }
     out << "<h2>Light samplers</h2>\n";
     if (known) out << "<p>" << met << " of " << known << " samplers meet their targets.</p>\n";
@@ -517,11 +510,11 @@ void samplerTable(std::ostringstream& out, const Scene& scene, const std::vector
         out << "<tr>" << cell(escapeHtml(s.name)) << "<td title=\"" << escapeHtml(s.type->describe()) << "\">"
             << escapeHtml(s.type->name()) << "</td>"
             << cell(s.entity >= 0 ? escapeHtml(entityName(scene, s.entity)) : "<span class=\"muted\">fixed</span>");
-        if (rows[k]) {
-            const GoalStatus status = samplerStatus(s, *rows[k], terms[k]);
+        if (presented[k]) {
+            const GoalStatus status = samplerStatus(*presented[k]);
             out << "<td class=\"num\">" << number(rows[k]->value, 1) << "</td>" << cell(escapeHtml(s.type->unit()))
                 << cell(range(s.targetMin, s.targetMax, 0)) << "<td class=\"num\">" << number(s.tolerance, 1) << "</td>"
-                << "<td class=\"num\">" << number(terms[k][0].penalty, 3) << "</td>" << cell(status.words, status.cls);
+                << "<td class=\"num\">" << number(presented[k]->penalty(), 3) << "</td>" << cell(status.words, status.cls);
             if (withBudgets) out << cell(escapeHtml(describeBudget(scene, budgets[k])));
             if (withBudgets || withRanges) {
                 std::string why;
@@ -564,8 +557,8 @@ void samplerTable(std::ostringstream& out, const Scene& scene, const std::vector
                "<th>U<sub>0</sub> = min / mean</th><th>unit</th></tr>\n";
         for (size_t k = 0; k < rows.size(); ++k) {
             const LightSamplerSpec& s = scene.samplers[k];
-            if (!rows[k] || !s.type->hasPointStatistics()) continue;
-            const PointStatistics st = pointStatistics(rows[k]->points, rows[k]->pointErrors);
+            if (!presented[k] || !presented[k]->statistics()) continue;
+            const PointStatistics& st = *presented[k]->statistics();
             std::string grid = std::to_string(rows[k]->points.size());
             if (auto g = s.type->pointGrid()) grid = std::to_string((*g)[0]) + " &times; " + std::to_string((*g)[1]);
             out << "<tr>" << cell(escapeHtml(s.name)) << cell(grid) << "<td class=\"num\">" << number(st.mean.value, 1)
@@ -583,10 +576,10 @@ void samplerTable(std::ostringstream& out, const Scene& scene, const std::vector
                "<th>value</th><th>E<sub>v</sub> (lx)</th><th>L<sub>b</sub> (cd/m&sup2;)</th><th>source</th><th>direction</th>"
                "<th>L (cd/m&sup2;)</th><th>&omega; (sr)</th><th>P</th></tr>\n";
         for (size_t k = 0; k < rows.size(); ++k) {
-            if (!rows[k] || !rows[k]->glare) continue;
+            if (!presented[k] || !rows[k]->glare) continue;
             const GlareSurvey& g = *rows[k]->glare;
-            const bool ugr = std::string(scene.samplers[k].type->name()) == "ugr";
-            const std::string value = ugr && rows[k]->value < 10 ? "&lt;10" : number(rows[k]->value, ugr ? 1 : 3);
+            const SamplerRow& row = *presented[k];
+            const std::string value = samplerValueHtml(row, row.format().digits, "");
             const std::string head = "<tr>" + cell(escapeHtml(scene.samplers[k].name)) + "<td class=\"num\">" + value +
                                      "</td><td class=\"num\">" + number(g.verticalIlluminance, 0) + "</td><td class=\"num\">" +
                                      number(g.backgroundLuminance, 1) + "</td>";
@@ -603,8 +596,8 @@ void samplerTable(std::ostringstream& out, const Scene& scene, const std::vector
         out << "<h3>Statistics goals</h3>\n<table>\n<tr><th>name</th><th>statistic</th><th>value</th><th>target</th>"
                "<th>tolerance</th><th>penalty</th><th>status</th></tr>\n";
         for (size_t k = 0; k < rows.size(); ++k)
-            for (size_t i = 1; i < terms[k].size(); ++i) {
-                const LightingTerm& t = terms[k][i];
+            for (size_t i = 1; presented[k] && i < presented[k]->terms().size(); ++i) {
+                const LightingTerm& t = presented[k]->terms()[i];
                 const int digits = t.statistic == Statistic::U0 ? 2 : 1;
                 const GoalStatus status = goalStatus(t.penalty == 0, t.value, t.standardError, t.targetMin, t.targetMax);
                 out << "<tr>" << cell(escapeHtml(scene.samplers[k].name)) << cell(statisticNames().name(t.statistic))
@@ -633,9 +626,9 @@ void hourTable(std::ostringstream& out, const Scene& scene, const std::vector<Re
                 out << cell("&ndash;");
                 continue;
             }
-            const std::vector<LightingTerm> terms = lightingTerms(scene.samplers[k], h.samplers[k]);
-            const GoalStatus status = samplerStatus(scene.samplers[k], h.samplers[k], terms);
-            met += allMet(terms);
+            const SamplerRow row(scene.samplers[k], h.samplers[k]);
+            const GoalStatus status = samplerStatus(row);
+            met += row.met();
             out << "<td class=\"num " << status.cls << "\">" << number(h.samplers[k].value, 1) << "</td>";
         }
         out << "<td class=\"num\">" << met << " of " << scene.samplers.size() << "</td></tr>\n";

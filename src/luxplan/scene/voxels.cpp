@@ -18,15 +18,6 @@ bool VoxelGrid::contains(const Vec3& p) const {
     return occupied[index(i, j, k)] != 0;
 }
 
-std::vector<Vec3> VoxelGrid::occupiedCenters() const {
-    std::vector<Vec3> centers;
-    centers.reserve(count);
-    for (int k = 0; k < nz; ++k)
-        for (int j = 0; j < ny; ++j)
-            for (int i = 0; i < nx; ++i)
-                if (occupied[index(i, j, k)]) centers.push_back(cellCenter(i, j, k));
-    return centers;
-}
 
 VoxelGrid voxelizeSolid(const TriangleMesh& mesh, double cell, int maxCells) {
     VoxelGrid g;

@@ -26,8 +26,6 @@ struct VoxelGrid {
     Vec3 cellCenter(int i, int j, int k) const;
     // Whether the point lies in an occupied cell.
     bool contains(const Vec3& p) const;
-    // Centres of the occupied cells (used to count overlaps after transforming).
-    std::vector<Vec3> occupiedCenters() const;
 };
 
 // Voxelizes the solid enclosed by `mesh` (a union of closed parts; overlapping parts
