@@ -5,7 +5,8 @@ usage: tests/scripts/scene_keys_documented.py [SOURCE_DIR]
 
 The loader reads a scene only through json::Fields (src/luxplan/json/fields.h), in
 src/luxplan/io/scene_loader.cpp and in the readers of the kinds it hands objects to
-(light samplers, emitter shapes, constraint types). In each such file this finds the
+(light samplers, emitter shapes, constraint types), and the `optimizer` object
+through the settings' key table (src/luxplan/io/settings_table.cpp, its rows' keys). In each such file this finds the
 names that hold a Fields object (`Fields f(...)`, `const Fields& f`, `json::Fields& f`)
 and collects the string literals given as keys:
   - to an accessor: f.number("key" ...), f.has("key"), f.get("key"), f.at("key"),
@@ -68,6 +69,12 @@ def keys_in(path, text, is_loader):
     return [(k, path, line) for k, line in found]
 
 
+def table_keys(path, text):
+    """The settings' key table (io/settings_table.cpp): a row starts {"key", "type", ...}."""
+    return [(m.group(1), path, text.count("\n", 0, m.start()) + 1)
+            for m in re.finditer(r'\{\s*%s\s*,\s*"' % KEY, text)]
+
+
 def documented(doc):
     """The keys the document names in inline code: `key`, a path to it
     (`optimizer.seed`, `openings[].blind`), a JSON key (`{"eye": [x,y,z], ...}`) or a
@@ -94,7 +101,8 @@ def main():
     try:
         with open(doc_path, encoding="utf-8") as f:
             doc = f.read()
-        files = [loader]
+        settings = os.path.join(src, "io", "settings_table.cpp")
+        files = [loader, settings]
         # The kinds' readers: every file of the registries' modules that reads Fields.
         for module in ("lightsamplers", "emitters", "constraints", "json"):
             folder = os.path.join(src, module)
@@ -106,6 +114,8 @@ def main():
             with open(path, encoding="utf-8") as f:
                 text = strip_comments(f.read())
             reads += keys_in(os.path.relpath(path, root), text, path == loader)
+            if path == settings:
+                reads += table_keys(os.path.relpath(path, root), text)
     except OSError as e:
         print(f"scene_keys_documented: cannot read {e.filename}: {e.strerror}", file=sys.stderr)
         return 2
