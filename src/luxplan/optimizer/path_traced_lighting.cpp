@@ -55,7 +55,8 @@ double PathTracedLighting::evaluate(const Layout& /*layout*/, const std::vector<
         fresh.choiceError = true;  // the noise penalty reads the errors
         return measure(tracer_, world, fresh, nullptr, out, hasGlareSurveys_ ? &reportTracer_ : nullptr, margin_);
     }
-    return measure(tracer_, world, options_, incremental_ ? &cache_ : nullptr, out,
+    PathSource* source = !incremental_ ? nullptr : checkCache_ ? static_cast<PathSource*>(&checked_) : &cache_;
+    return measure(tracer_, world, options_, source, out,
                    hasGlareSurveys_ ? &reportTracer_ : nullptr, margin_);
 }
 
@@ -79,19 +80,22 @@ void PathTracedLighting::setLightRoulette(double share) {
 }
 
 double PathTracedLighting::measure(PathTracer& tracer, const std::vector<Transform>& world, const MeasureOptions& options,
-                                   PathCache* cache, LightingBreakdown* out, PathTracer* glareTracer, double margin) {
+                                   PathSource* source, LightingBreakdown* out, PathTracer* glareTracer, double margin) {
     // The moved entities' vertices are rewritten and the top level rebuilt (EmbreeScene).
     for (size_t i = 0; i < world.size(); ++i) rt_.setEntityTransform(int(i), world[i]);
     rt_.commit();
     settleCache();  // the cache reads the new layout (begin) and measureSamplers traces in it
     tracer.updateLayout();
     if (glareTracer) glareTracer->updateLayout();
-    last_ = measureSamplers(tracer, options, cache, glareTracer);
+    last_ = measureSamplers(tracer, options, source, glareTracer);
     ++evaluations_;
     rays_ += last_.rays;
     reusedPaths_ += last_.reusedPaths;
-    for (CacheDifference& d : last_.cacheCheck.first) d.evaluation = int64_t(evaluations_);
-    check_.add(last_.cacheCheck);
+    if (source == &checked_) {
+        CacheCheck found = checked_.found();
+        for (CacheDifference& d : found.first) d.evaluation = int64_t(evaluations_);
+        check_.add(found);
+    }
     tracedPaths_ += last_.paths - last_.reusedPaths;
     if (out) out->samplers = last_.samplers;
     return scene_.samplers.empty() ? 0.0 : lightingCostOfResults(scene_, last_.samplers, margin);
