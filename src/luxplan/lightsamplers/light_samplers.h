@@ -89,7 +89,7 @@ struct MeasureResult {
 // Measures every sampler of the scene for the path tracer's current layout. Each path is
 // seeded from (seed, sampler, point, path), so results do not depend on the thread count
 // (set once by the caller, see core/parallel.h). With a path source (the path cache,
-// path_cache.h), the paths it gives are read back instead of traced (the result is the
+// incremental/path_cache.h), the paths it gives are read back instead of traced (the result is the
 // same), and it is told of every path the measurement traced (path_source.h).
 // `glareTracer`, when given (on the same scene), traces the glare surveys (the "ugr" and
 // "dgp" samplers) instead of `tracer`: the search gives them the sunlit patches and the

@@ -1,8 +1,8 @@
 // The second part of a measurement (measureSamplers): where each path comes from.
 // Every path is traced afresh by FreshPaths (fresh_paths.h) unless a path source in
 // front of it gives the path from what an earlier measurement kept (the path cache,
-// lightsamplers/path_cache.h); a source may wrap another (the cache check,
-// lightsamplers/checked_paths.h). The numbers are the same whichever gives a path.
+// incremental/path_cache.h); a source may wrap another (the cache check,
+// incremental/checked_paths.h). The numbers are the same whichever gives a path.
 #pragma once
 
 #include <cstddef>

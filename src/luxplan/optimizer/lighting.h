@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <vector>
 
-#include <luxplan/lightsamplers/cache_check.h>
+#include <luxplan/incremental/cache_check.h>
 #include <luxplan/lightsamplers/sampler_result.h>
 #include <luxplan/scene/layout.h>
 

@@ -4,7 +4,7 @@
 
 #include <tbb/task_group.h>
 
-#include <luxplan/lightsamplers/checked_paths.h>
+#include <luxplan/incremental/checked_paths.h>
 #include <luxplan/lightsamplers/light_samplers.h>
 #include <luxplan/optimizer/lighting.h>
 
@@ -37,7 +37,7 @@ public:
     void commit() override;
     void revert() override;
     // Whether evaluations reuse the paths a move cannot change (on by default; the
-    // numbers are the same either way, lightsamplers/path_cache.h).
+    // numbers are the same either way, incremental/path_cache.h).
     void setIncremental(bool on) { incremental_ = on; }
     void setSearchMargin(double z) override { margin_ = z; }
     // Every path the cache reads back is traced again and compared (CheckedPaths): a

@@ -24,7 +24,7 @@ const LightStrategy* const kStrategies[] = {&kEmitterLight, &kSunLight, &kSkyLig
 // side the path came from the two normals agree but in the signs of their zeros, which
 // Frame::fromNormal reads (its basis turns half a turn). With +0 the path scatters the
 // same whichever face it hit, and so a path kept by the path cache matches the one
-// traced afresh after a move has rebuilt the BVH (lightsamplers/path_cache.h).
+// traced afresh after a move has rebuilt the BVH (incremental/path_cache.h).
 Vec3 positiveZeros(const Vec3& n) { return n + Vec3(0, 0, 0); }  // -0 + 0 = +0
 
 }  // namespace

@@ -30,6 +30,7 @@
 #include <span>
 #include <vector>
 
+#include <luxplan/incremental/footprint_geometry.h>
 #include <luxplan/lightsamplers/path_source.h>
 #include <luxplan/lightsamplers/sampler_type.h>
 #include <luxplan/pathtracer/path_footprint.h>

@@ -1,4 +1,4 @@
-#include <luxplan/lightsamplers/path_cache.h>
+#include <luxplan/incremental/path_cache.h>
 
 #include <algorithm>
 #include <bit>

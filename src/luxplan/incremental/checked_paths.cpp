@@ -1,4 +1,4 @@
-#include <luxplan/lightsamplers/checked_paths.h>
+#include <luxplan/incremental/checked_paths.h>
 
 #include <algorithm>
 #include <span>

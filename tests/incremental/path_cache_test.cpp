@@ -1,4 +1,4 @@
-// Exact incremental re-evaluation (lightsamplers/path_cache.h): after any sequence of
+// Exact incremental re-evaluation (incremental/path_cache.h): after any sequence of
 // moves, some accepted (committed) and some refused (discarded), measuring with the
 // cache gives the same numbers, bit for bit, as measuring the same layout from
 // scratch (a fresh Embree scene and path tracer) with the same seed and paths; and
@@ -10,8 +10,8 @@
 
 #include <luxplan/core/rng.h>
 #include <luxplan/emitters/emitter_shape.h>
-#include <luxplan/lightsamplers/checked_paths.h>
-#include <luxplan/lightsamplers/path_cache.h>
+#include <luxplan/incremental/checked_paths.h>
+#include <luxplan/incremental/path_cache.h>
 #include "support/scene_builder.h"
 #include "support/scene_lab.h"
 

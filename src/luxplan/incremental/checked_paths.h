@@ -8,8 +8,8 @@
 #include <mutex>
 #include <vector>
 
-#include <luxplan/lightsamplers/cache_check.h>
-#include <luxplan/lightsamplers/path_cache.h>
+#include <luxplan/incremental/cache_check.h>
+#include <luxplan/incremental/path_cache.h>
 
 namespace luxplan {
 
