@@ -767,7 +767,7 @@ OptimizerResult Optimizer::resultOf(StopReason stop, std::vector<Snapshot> snaps
     r.snapshots = std::move(snapshots);
     r.lightingEvaluations = lightingEvaluations_;
     r.polishFrom = polishFrom_;
-    if (lighting_) r.cacheCheck = lighting_->cacheCheck(), r.lightFloors = lighting_->lightFloors();
+    if (lighting_) r.lightingNotes = lighting_->notes();
     r.options = options_;
     return r;
 }

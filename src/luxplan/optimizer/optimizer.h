@@ -224,8 +224,7 @@ struct OptimizerResult {
     std::vector<TracePoint> trace;
     std::vector<Snapshot> snapshots;  // OptimizerOptions::snapshots
     int64_t lightingEvaluations = 0;  // by the chain (not the final measurements)
-    CacheCheck cacheCheck;  // the lighting evaluator's, when it checked its cache
-    std::vector<double> lightFloors;  // the search's light samples' roulette, per sampler (empty: off)
+    LightingNotes lightingNotes;  // the lighting evaluator's own report fields
     // OptimizerOptions::suggestions: distinct layouts, the result first, then the others
     // by their independent measurement (the report's seed), best first.
     std::vector<Candidate> suggestions;

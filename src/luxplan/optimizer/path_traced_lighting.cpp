@@ -5,6 +5,7 @@
 
 #include <luxplan/constraints/penalty.h>
 #include <luxplan/core/rng.h>
+#include <luxplan/json/fields.h>
 
 namespace luxplan {
 namespace {
@@ -99,6 +100,23 @@ double PathTracedLighting::measure(PathTracer& tracer, const std::vector<Transfo
     tracedPaths_ += last_.paths - last_.reusedPaths;
     if (out) out->samplers = last_.samplers;
     return scene_.samplers.empty() ? 0.0 : lightingCostOfResults(scene_, last_.samplers, margin);
+}
+
+LightingNotes PathTracedLighting::notes() const {
+    using Json = nlohmann::ordered_json;
+    LightingNotes notes;
+    for (double floor : options_.lightFloors) notes.samplers.push_back({{"search_light_floor", floor}});
+    if (check_.on) {  // optimize --set check_cache=true
+        Json first = Json::array();
+        for (const CacheDifference& d : check_.first)
+            first.push_back({{"evaluation", d.evaluation},
+                             {"sampler", d.sampler < int(scene_.samplers.size()) ? scene_.samplers[size_t(d.sampler)].name : ""},
+                             {"item", d.item}, {"path", d.path}, {"cached", json::numberOrNull(d.cached)},
+                             {"fresh", json::numberOrNull(d.fresh)},
+                             {"parts_at", d.where ? Json{d.where->x, d.where->y, d.where->z} : Json(nullptr)}});
+        notes.run["path_cache_check"] = {{"checked", check_.checked}, {"differing", check_.differing}, {"first", first}};
+    }
+    return notes;
 }
 
 }  // namespace luxplan

@@ -48,8 +48,11 @@ public:
     // scene's own layout (lightSampleFloors), fixed for the run; 0: every sample traced.
     // The independent measurements trace every sample. Before the first evaluation.
     void setLightRoulette(double share);
-    std::vector<double> lightFloors() const override { return options_.lightFloors; }
-    CacheCheck cacheCheck() const override { return check_; }
+    // What the cache check found so far (off: no check).
+    const CacheCheck& cacheCheck() const { return check_; }
+    // Each sampler's light floor in the search ("search_light_floor", when the roulette
+    // is on) and the cache check ("path_cache_check", when on).
+    LightingNotes notes() const override;
     // Fresh noise: every evaluation draws its own seed (from the seed and a count of
     // evaluations, so a run still repeats), without the path cache. The optimizer then
     // measures its current layout again before each test and uses the penalty method:
