@@ -52,14 +52,14 @@ const PathContributions& FreshPaths::trace(size_t work, int path, RayStats& stat
         return PathSamples(rng, s.sequences[folds ? size_t(path % kFolds) : 0], uint32_t(folds ? path / kFolds : path));
     };
     PathSamples samples = samplesOf();
-    samples.setLightFloor(plan_.lightFloorOf[size_t(w.sampler)]);
+    PathParams params;
+    params.lightFloor = plan_.lightFloorOf[size_t(w.sampler)];
     s.traced = PathContributions(w.item);
     if (recordFootprint) {
         s.footprint.clear();
-        stats.footprint = &s.footprint;
+        params.footprint = &s.footprint;
     }
-    sampler.sample(*plan_.tracerOf[size_t(w.sampler)], w.item, samples, stats, s.traced);
-    stats.footprint = nullptr;
+    sampler.sample(*plan_.tracerOf[size_t(w.sampler)], w.item, samples, stats, params, s.traced);
     return s.traced;
 }
 

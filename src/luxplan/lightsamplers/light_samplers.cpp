@@ -158,7 +158,7 @@ std::vector<double> lightSampleFloors(const PathTracer& tracer, double share, ui
                 Rng rng(hashValues({seed, kPilotTag, uint64_t(k), uint64_t(item), uint64_t(path)}));
                 PathSamples samples(rng);
                 PathContributions c(static_cast<int>(item));
-                placed->sample(tracer, int(item), samples, stats, c);
+                placed->sample(tracer, int(item), samples, stats, PathParams{}, c);
                 if (!c.finite()) continue;
                 double own = 0;
                 for (int j = 0; j < c.size(); ++j)

@@ -61,7 +61,7 @@ struct MeasureOptions {
     // up in path order: the same numbers as one thread in order (0: never split).
     int chunkPaths = 32;
     // Russian roulette on the light samples at surface vertices
-    // (PathSamples::setLightFloor): sampler k's paths take lightFloors[k] (in the
+    // (PathParams::lightFloor): sampler k's paths take lightFloors[k] (in the
     // tracer's unit for its paths; lightSampleFloors). Empty: every sample traced.
     std::vector<double> lightFloors;
     // Where a watcher reads the progress (measure's stderr line): the paths traced or
