@@ -14,7 +14,7 @@
 //   - it read the emitter choice and a luminaire moved (the choice weighs every
 //     luminaire by flux / distance^2, so every light sample's probability changes).
 // Every other path reads as it did, so measuring with the cache gives the same numbers,
-// bit for bit, as measuring the same layout from scratch (tests/lightsamplers/
+// bit for bit, as measuring the same layout from scratch (tests/incremental/
 // path_cache_test.cpp): where a ray meets coincident faces, which one it hits is the
 // first in a fixed order, not the BVH of the moment (EmbreeScene::intersect), but for
 // faces of two entities' different materials that overlap in one plane and that a path

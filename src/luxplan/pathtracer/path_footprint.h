@@ -1,7 +1,7 @@
 // What one path's rays met: the segments they covered (each ray from its origin to its
 // hit, or to its end), and whether the path read the emitter choice, whose
 // probabilities depend on every luminaire's position. The tracer records it where
-// RayStats::footprint asks; a path whose footprint misses everything a move changes
+// PathParams::footprint asks; a path whose footprint misses everything a move changes
 // traces the same as before it (incremental/path_cache.h, which tests footprints
 // against what moved with incremental/footprint_geometry.h).
 #pragma once
