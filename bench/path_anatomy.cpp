@@ -53,12 +53,12 @@ Row trace(const Scene& scene, const EmbreeScene& rt, const DaylightEnvironment* 
     for (int path = 0; path < paths; ++path) {
         Rng rng(hashValues({scene.optimizer.seed, uint64_t(item), uint64_t(path)}));
         PathSamples samples(rng);
-        samples.setLightFloor(lightFloor);
         PathContributions c(item);
         LightBudget budget;
-        stats.budget = parts ? &budget : nullptr;
-        sampler.sample(tracer, item, samples, stats, c);
-        stats.budget = nullptr;
+        PathParams params;
+        params.lightFloor = lightFloor;
+        params.budget = parts ? &budget : nullptr;
+        sampler.sample(tracer, item, samples, stats, params, c);
         double own = 0;  // what the path adds to its item's estimate
         for (int k = 0; k < c.size(); ++k)
             if (c.itemAt(k) == item) own += c.valueAt(k);

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include <luxplan/core/rng.h>
-#include <luxplan/pathtracer/path_footprint.h>
+#include <luxplan/incremental/footprint_geometry.h>
 
 namespace luxplan {
 namespace {

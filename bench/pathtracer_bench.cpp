@@ -5,6 +5,7 @@
 #include <tbb/global_control.h>
 
 #include <luxplan/daylight/daylight.h>
+#include <luxplan/incremental/path_cache.h>
 #include <luxplan/io/scene_loader.h>
 #include <luxplan/lightsamplers/light_samplers.h>
 
@@ -81,7 +82,7 @@ BENCHMARK(BM_ReplayOfficeRays)->Unit(benchmark::kMillisecond);
 // One workstation of the office moved by 20 cm, measured against the layout before
 // the move: from scratch (0) or with the path cache (1, exact incremental
 // re-evaluation: only the paths the move can change are traced). Both give the same
-// numbers (tests/lightsamplers/path_cache_test.cpp); the ratio of their times is
+// numbers (tests/incremental/path_cache_test.cpp); the ratio of their times is
 // what incremental re-evaluation saves on the paper's kind of move. The range's
 // second argument is the paths per point.
 void BM_OfficeWorkstationMove(benchmark::State& state) {

@@ -145,75 +145,39 @@ void printCacheCheck(const Scene& scene, const CacheCheck& check) {
     }
 }
 
-// Returns the signal that interrupted the run after its outputs were written, or 0.
-int runOptimize(const OptimizeArgs& args) {
-    // From the start, so that a signal during loading still ends in written outputs.
-    StopSignals stopSignals;
-    const Scene original = loadSceneWithSettings(args);
-    const TracingSettings& tracingSettings = original.optimizer;
-    printSceneWarnings(original);
-    checkOutputFolder(args.out);
-    {
-        // Before the daylight's bake: each layout's measurement and the report's.
-        const int searchPaths = args.paths > 0 ? args.paths : original.optimizer.searchPathsPerPoint;
-        warnLargeMeasurement(original, searchPaths, "the search measures each layout at");
-        warnLargeMeasurement(original, std::max(original.optimizer.reportPathsPerPoint, searchPaths),
-                             "the report measures the final layout at");
-    }
-    std::optional<DaylightEnvironment> daylight;
-    if (original.daylight) daylight = bakeDaylight(*original.daylight, original.site, args.quiet);
-
+// The search's options: the scene's settings, then the command line's.
+OptimizerOptions searchOptions(const OptimizeArgs& args, const Scene& original) {
     OptimizerOptions options = optimizerOptions(original);
     if (args.iterations >= 0) options.iterations = args.iterations;
     if (args.seed) options.seed = *args.seed;
     if (args.suggestions > 0) options.suggestions = args.suggestions;
-    // Flat: the same furniture without groups, kept together by cohesion constraints.
-    std::optional<FlatScene> flattened;
-    if (options.hierarchy == Hierarchy::Flat) {
-        flattened = flattenScene(original);
-        if (!args.quiet)
-            std::cerr << "flat: " << flattened->scene.entities.size() << " objects without groups, "
-                      << flattened->cohesionConstraints << " cohesion constraints\n";
-    }
-    const Scene& scene = flattened ? flattened->scene : original;
-    if (!args.start.empty()) {
-        // The designer's own layout (readLayout names the file and entry of any error:
-        // an unknown or fixed entity, a pose outside its regions).
-        const Layout given = io::readLayout(args.start, original);
-        options.start = StartFrom::Given;
-        options.startLayout = flattened ? flatLayoutOf(original, *flattened, given) : given;
-    }
+    return options;
+}
 
-    MeasureOptions measure;
-    measure.pathsPerPoint = args.paths > 0 ? args.paths : scene.optimizer.searchPathsPerPoint;
-    warnFewPaths(original, measure.pathsPerPoint, args.paths > 0);
-    measure.seed = options.seed;
-    measure.adaptive = !tracingSettings.fixedPaths;
-    measure.lowDiscrepancy = tracingSettings.lowDiscrepancy;
-    measure.choiceError = false;  // the search's stops do not read it; its report's measurements do
-    std::unique_ptr<PathTracedLighting> lighting;
-    // The report's count for the result (measure's default: report.json and `measure
-    // --layout --seed` give one number); the selection's, far fewer, for the confirmations
-    // and the candidates' re-measures (issue 58). Neither below the search's.
-    const int reportPaths = std::max(scene.optimizer.reportPathsPerPoint, measure.pathsPerPoint);
-    const int selectionPaths = std::max(scene.optimizer.selectionPathsPerPoint, measure.pathsPerPoint);
-    if (!scene.samplers.empty()) {
-        PathTracerOptions search, report;
-        search.sunPatches = tracingSettings.samplesSunPatches(SunPatchUse::Report, true);
-        report.sunPatches = tracingSettings.samplesSunPatches(SunPatchUse::Report, false);
-        search.exteriorSun = report.exteriorSun = tracingSettings.exteriorSun;
-        lighting = std::make_unique<PathTracedLighting>(scene, daylight ? &*daylight : nullptr, measure, search, report);
-        lighting->setReportPaths(reportPaths);        // the result's report and the suggestions'
-        lighting->setSelectionPaths(selectionPaths);  // confirmations and the candidates' re-measures
-        lighting->setIncremental(!tracingSettings.fullEvaluation);
-        lighting->setCheckCache(tracingSettings.checkCache);
-        lighting->setFreshNoise(tracingSettings.freshNoise);
-        lighting->setLightRoulette(tracingSettings.lightRoulette.value_or(kSearchLightRoulette));
-    }
+// The path-traced lighting term (null without samplers): the search's measurements
+// at `measure`'s paths, the report's and the selection's at theirs.
+std::unique_ptr<PathTracedLighting> makeLighting(const Scene& scene, const DaylightEnvironment* daylight,
+                                                 const TracingSettings& tracingSettings, const MeasureOptions& measure,
+                                                 int reportPaths, int selectionPaths) {
+    if (scene.samplers.empty()) return nullptr;
+    PathTracerOptions search, report;
+    search.sunPatches = tracingSettings.samplesSunPatches(SunPatchUse::Report, true);
+    report.sunPatches = tracingSettings.samplesSunPatches(SunPatchUse::Report, false);
+    search.exteriorSun = report.exteriorSun = tracingSettings.exteriorSun;
+    auto lighting = std::make_unique<PathTracedLighting>(scene, daylight, measure, search, report);
+    lighting->setReportPaths(reportPaths);        // the result's report and the suggestions'
+    lighting->setSelectionPaths(selectionPaths);  // confirmations and the candidates' re-measures
+    lighting->setIncremental(!tracingSettings.fullEvaluation);
+    lighting->setCheckCache(tracingSettings.checkCache);
+    lighting->setFreshNoise(tracingSettings.freshNoise);
+    lighting->setLightRoulette(tracingSettings.lightRoulette.value_or(kSearchLightRoulette));
+    return lighting;
+}
 
-    // With lighting weight 0 the chain never calls it, but the result's report does.
-    Optimizer optimizer(scene, options, lighting.get());
-    bool tty = !args.quiet && isatty(STDERR_FILENO);
+// The start (its draws said on stderr while none passes the rules) and the run, its
+// progress on stderr unless quiet; `start` receives the start layout.
+OptimizerResult search(Optimizer& optimizer, bool quiet, Layout& start) {
+    bool tty = !quiet && isatty(STDERR_FILENO);
     bool drew = false;
     auto lastLine = std::chrono::steady_clock::now();
     auto drawing = [&](int drawn, int most) {
@@ -225,36 +189,41 @@ int runOptimize(const OptimizeArgs& args) {
         std::cerr << (tty ? "\r" : "") << "drawing a start layout: " << drawn << " of at most " << most
                   << " draws, none within the geometric rules' hard limits yet" << (tty ? "\033[K" : "\n") << std::flush;
     };
-    optimizer.initialize(args.quiet ? std::function<void(int, int)>() : drawing);
+    optimizer.initialize(quiet ? std::function<void(int, int)>() : drawing);
     if (drew && tty) std::cerr << "\n";
-    Layout start = optimizer.current();  // the comparison picture's left side
+    start = optimizer.current();  // the comparison picture's left side
     ProgressCallback progress;
     // The start within every rule's limit: no "by iteration N: a layout keeps every rule" line.
     bool feasibleSeen = !optimizer.currentEvaluation().rejected;
-    if (!args.quiet) progress = [tty, &feasibleSeen](const Progress& p) { showProgress(p, tty, feasibleSeen); };
+    if (!quiet) progress = [tty, &feasibleSeen](const Progress& p) { showProgress(p, tty, feasibleSeen); };
     OptimizerResult result = optimizer.run(progress, &interrupted);
     if (tty) std::cerr << "\n";
     if (result.stop == StopReason::Cancelled) std::cerr << "interrupted: writing the best layout found so far\n";
+    return result;
+}
 
-    writeOptimizerOutputs(args.out, scene, result);
-    if (!result.snapshots.empty()) writeSnapshots(std::filesystem::path(args.out) / "snapshots.json", scene, result);
+// layout.json (and the suggestions) in the scene file's hierarchy, so that --layout
+// reads them back; in a flat run layout_flat.json keeps every object's own placement
+// (measure --set flat=true).
+void writeLayouts(const std::filesystem::path& out, const Scene& original, const Scene& scene,
+                  const std::optional<FlatScene>& flattened, const OptimizerResult& result) {
     if (flattened) {
-        // layout.json in the scene file's hierarchy, so that --layout reads it back;
-        // layout_flat.json keeps every object's own placement (measure --set flat=true).
-        io::writeLayout(std::filesystem::path(args.out) / "layout_flat.json", scene, result.best);
-        io::writeLayout(std::filesystem::path(args.out) / "layout.json", original,
-                        hierarchicalLayoutOf(original, *flattened, result.best));
+        io::writeLayout(out / "layout_flat.json", scene, result.best);
+        io::writeLayout(out / "layout.json", original, hierarchicalLayoutOf(original, *flattened, result.best));
     } else {
-        io::writeLayout(std::filesystem::path(args.out) / "layout.json", scene, result.best);
+        io::writeLayout(out / "layout.json", scene, result.best);
     }
-    // The suggestions, in the scene file's hierarchy like layout.json.
-    if (!result.suggestions.empty()) std::filesystem::create_directories(std::filesystem::path(args.out) / "suggestions");
+    if (!result.suggestions.empty()) std::filesystem::create_directories(out / "suggestions");
     for (size_t i = 0; i < result.suggestions.size(); ++i) {
         const Layout& layout = result.suggestions[i].layout;
-        const std::filesystem::path file = std::filesystem::path(args.out) / suggestionFile(i);
+        const std::filesystem::path file = out / suggestionFile(i);
         if (flattened) io::writeLayout(file, original, hierarchicalLayoutOf(original, *flattened, layout));
         else io::writeLayout(file, scene, layout);
     }
+}
+
+// The run in words on stdout: its cost, the goals and rules held, each target missed.
+void printSummary(const Scene& scene, const OptimizerResult& result, int reportPaths) {
     std::cout << "optimize: " << result.iterations << " iterations in " << durationText(result.seconds) << " ("
               << stopReasonName(result.stop) << ")";
     if (result.feasible) {
@@ -297,33 +266,99 @@ int runOptimize(const OptimizeArgs& args) {
                                                                : reachName(verdict.reach)) << "): "
                       << verdict.reason;
         }
-    std::cout << "\n  wrote " << args.out << "/layout.json, report.json, trace.csv\n";
-    if (!args.noPictures) {
-        OutputOptions pictures;
-        pictures.seed = options.seed;
-        pictures.samplerPaths = scene.optimizer.reportPathsPerPoint;  // the start's too, as the result's
-        pictures.tracing.sunPatches = tracingSettings.samplesSunPatches(SunPatchUse::Report, false);
-        pictures.tracing.exteriorSun = tracingSettings.exteriorSun;
-        pictures.initialLabel = "start";
-        // A (second) stop signal from now on skips the pictures still to make.
-        interrupted.store(false);
-        pictures.cancel = &interrupted;
-        if (args.spp > 0) pictures.renderSamplesPerPixel = args.spp;
-        pictures.pdf = !args.noPdf;
-        RunOutputs outputs;
-        {
-            std::cout.flush();  // the summary before the pictures' progress on stderr, also in a log
-            PictureProgress progress(pictures);
-            outputs = writeRunOutputs(args.out, scene, start, result.best, &result, daylight ? &*daylight : nullptr, pictures);
-        }
-        if (outputs.files.empty() && outputs.cancelled) {
-            std::cout << "  pictures: stopped before the first was written\n";
-        } else {
-            std::cout << "  wrote";
-            for (const auto& f : outputs.files) std::cout << " " << f.filename().string();
-            std::cout << " in " << durationText(outputs.seconds) << (outputs.cancelled ? " (stopped: the rest skipped)" : "") << "\n";
-        }
+}
+
+// The pictures, scene.glb, report.html and report.pdf, said on stdout.
+void writePictures(const OptimizeArgs& args, const Scene& scene, const TracingSettings& tracingSettings, const Layout& start,
+                   const OptimizerResult& result, const DaylightEnvironment* daylight) {
+    OutputOptions pictures;
+    pictures.seed = result.options.seed;
+    pictures.samplerPaths = scene.optimizer.reportPathsPerPoint;  // the start's too, as the result's
+    pictures.tracing.sunPatches = tracingSettings.samplesSunPatches(SunPatchUse::Report, false);
+    pictures.tracing.exteriorSun = tracingSettings.exteriorSun;
+    pictures.initialLabel = "start";
+    // A (second) stop signal from now on skips the pictures still to make.
+    interrupted.store(false);
+    pictures.cancel = &interrupted;
+    if (args.spp > 0) pictures.renderSamplesPerPixel = args.spp;
+    pictures.pdf = !args.noPdf;
+    RunOutputs outputs;
+    {
+        std::cout.flush();  // the summary before the pictures' progress on stderr, also in a log
+        PictureProgress progress(pictures);
+        outputs = writeRunOutputs(args.out, scene, start, result.best, &result, daylight, pictures);
     }
+    if (outputs.files.empty() && outputs.cancelled) {
+        std::cout << "  pictures: stopped before the first was written\n";
+    } else {
+        std::cout << "  wrote";
+        for (const auto& f : outputs.files) std::cout << " " << f.filename().string();
+        std::cout << " in " << durationText(outputs.seconds) << (outputs.cancelled ? " (stopped: the rest skipped)" : "") << "\n";
+    }
+}
+
+// Returns the signal that interrupted the run after its outputs were written, or 0.
+int runOptimize(const OptimizeArgs& args) {
+    // From the start, so that a signal during loading still ends in written outputs.
+    StopSignals stopSignals;
+    const Scene original = loadSceneWithSettings(args);
+    const TracingSettings& tracingSettings = original.optimizer;
+    printSceneWarnings(original);
+    checkOutputFolder(args.out);
+    {
+        // Before the daylight's bake: each layout's measurement and the report's.
+        const int searchPaths = args.paths > 0 ? args.paths : original.optimizer.searchPathsPerPoint;
+        warnLargeMeasurement(original, searchPaths, "the search measures each layout at");
+        warnLargeMeasurement(original, std::max(original.optimizer.reportPathsPerPoint, searchPaths),
+                             "the report measures the final layout at");
+    }
+    std::optional<DaylightEnvironment> daylight;
+    if (original.daylight) daylight = bakeDaylight(*original.daylight, original.site, args.quiet);
+
+    OptimizerOptions options = searchOptions(args, original);
+    // Flat: the same furniture without groups, kept together by cohesion constraints.
+    std::optional<FlatScene> flattened;
+    if (options.hierarchy == Hierarchy::Flat) {
+        flattened = flattenScene(original);
+        if (!args.quiet)
+            std::cerr << "flat: " << flattened->scene.entities.size() << " objects without groups, "
+                      << flattened->cohesionConstraints << " cohesion constraints\n";
+    }
+    const Scene& scene = flattened ? flattened->scene : original;
+    if (!args.start.empty()) {
+        // The designer's own layout (readLayout names the file and entry of any error:
+        // an unknown or fixed entity, a pose outside its regions).
+        const Layout given = io::readLayout(args.start, original);
+        options.start = StartFrom::Given;
+        options.startLayout = flattened ? flatLayoutOf(original, *flattened, given) : given;
+    }
+
+    MeasureOptions measure;
+    measure.pathsPerPoint = args.paths > 0 ? args.paths : scene.optimizer.searchPathsPerPoint;
+    warnFewPaths(original, measure.pathsPerPoint, args.paths > 0);
+    measure.seed = options.seed;
+    measure.adaptive = !tracingSettings.fixedPaths;
+    measure.lowDiscrepancy = tracingSettings.lowDiscrepancy;
+    measure.choiceError = false;  // the search's stops do not read it; its report's measurements do
+    // The report's count for the result (measure's default: report.json and `measure
+    // --layout --seed` give one number); the selection's, far fewer, for the confirmations
+    // and the candidates' re-measures (issue 58). Neither below the search's.
+    const int reportPaths = std::max(scene.optimizer.reportPathsPerPoint, measure.pathsPerPoint);
+    const int selectionPaths = std::max(scene.optimizer.selectionPathsPerPoint, measure.pathsPerPoint);
+    std::unique_ptr<PathTracedLighting> lighting =
+        makeLighting(scene, daylight ? &*daylight : nullptr, tracingSettings, measure, reportPaths, selectionPaths);
+
+    // With lighting weight 0 the chain never calls it, but the result's report does.
+    Optimizer optimizer(scene, options, lighting.get());
+    Layout start;
+    OptimizerResult result = search(optimizer, args.quiet, start);
+
+    writeOptimizerOutputs(args.out, scene, result);
+    if (!result.snapshots.empty()) writeSnapshots(std::filesystem::path(args.out) / "snapshots.json", scene, result);
+    writeLayouts(args.out, original, scene, flattened, result);
+    printSummary(scene, result, reportPaths);
+    std::cout << "\n  wrote " << args.out << "/layout.json, report.json, trace.csv\n";
+    if (!args.noPictures) writePictures(args, scene, tracingSettings, start, result, daylight ? &*daylight : nullptr);
     if (lighting)
         std::cout << "  lighting: " << lighting->evaluations() << " evaluations, "
                   << lighting->rays().closest + lighting->rays().shadow << " rays, " << lighting->tracedPaths()

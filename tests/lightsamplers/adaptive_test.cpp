@@ -236,7 +236,9 @@ TEST(AdaptivePaths, AboveTheTopOnlyTheBestStratumIsTracedOn) {
 class PausingSampler final : public PlacedSampler {
 public:
     int items() const override { return 2; }
-    void sample(const PathTracer&, int, PathSamples&, RayStats&, PathContributions& out) const override { out.add(1.0); }
+    void sample(const PathTracer&, int, PathSamples&, RayStats&, const PathParams&, PathContributions& out) const override {
+        out.add(1.0);
+    }
     Estimate combine(const ItemEstimates& e) const override {
         double n = 0;
         for (int g = 0; g < ItemEstimates::kFolds; ++g) n += double(e.pathsInFold(0, g));
@@ -278,7 +280,9 @@ TEST(AdaptivePaths, APausedItemCatchesUpBeforeTheValueSettlesAtOrBelowTheTop) {
 class ItemAboveValueInsideSampler final : public PlacedSampler {
 public:
     int items() const override { return 1; }
-    void sample(const PathTracer&, int, PathSamples&, RayStats&, PathContributions& out) const override { out.add(1.0); }
+    void sample(const PathTracer&, int, PathSamples&, RayStats&, const PathParams&, PathContributions& out) const override {
+        out.add(1.0);
+    }
     Estimate combine(const ItemEstimates& e) const override {
         double n = 0;
         for (int g = 0; g < ItemEstimates::kFolds; ++g) n += double(e.pathsInFold(0, g));

@@ -118,9 +118,10 @@ TEST(LightBudget, EachBounceIsWhatOneMoreSurfaceVertexAdds) {
             Rng rng(hashValues({7, uint64_t(path)}));
             PathSamples samples(rng);
             RayStats stats;
-            stats.budget = budget;
+            PathParams params;
+            params.budget = budget;
             PathContributions c(0);
-            placed->sample(tracer, 0, samples, stats, c);
+            placed->sample(tracer, 0, samples, stats, params, c);
             return c.size() > 0 ? c.valueAt(0) : 0.0;
         };
         LightBudget budget;

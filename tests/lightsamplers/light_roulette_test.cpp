@@ -1,4 +1,4 @@
-// The light samples' roulette (MeasureOptions::lightFloors, PathSamples::setLightFloor,
+// The light samples' roulette (MeasureOptions::lightFloors, PathParams::lightFloor,
 // lightSampleFloors): at a surface vertex, a light sample worth c < F before its shadow
 // ray is traced with probability c / F and counts F / c times. Every estimate stays where
 // it was; with F = share x (a path's variance / its mean), the samples it skips add at

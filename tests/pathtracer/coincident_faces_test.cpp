@@ -3,7 +3,7 @@
 // other, as the order of the BVH decides, and a move anywhere in the room rebuilds
 // the BVH. Of one material, both faces are the same surface for the path, so the light
 // must not depend on which one it met: otherwise a path that the path cache keeps
-// would differ from the one traced afresh after the move (lightsamplers/path_cache.h).
+// would differ from the one traced afresh after the move (incremental/path_cache.h).
 // Without +0 in the vertex's normals (path_tracer.cpp) 49 of these 5000 paths differ.
 // Of two materials (a glass slab resting on a wooden block), the faces are different
 // surfaces, and the tie goes to the first in a fixed order (EmbreeScene::intersect).

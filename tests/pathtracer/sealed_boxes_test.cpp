@@ -54,8 +54,12 @@ TEST(SealedBoxes, APointInAClosedOpaqueBoxReadsZeroWithoutARay) {
     Rng rng(1);
     RayStats stats;
     PathFootprint footprint;
-    stats.footprint = &footprint;
-    for (int k = 0; k < 100; ++k) EXPECT_EQ(lab.tracer->sample(CosineSensor(p, kUp), rng, stats), 0.0);
+    PathParams params;
+    params.footprint = &footprint;
+    for (int k = 0; k < 100; ++k) {
+        PathSamples samples(rng);
+        EXPECT_EQ(lab.tracer->sample(CosineSensor(p, kUp), samples, stats, params), 0.0);
+    }
     EXPECT_EQ(stats.closest + stats.shadow, 0u);
     // The way out reaches the plinth's nearest face (its top, 0.2 m up), so a move
     // of the box meets the path; and any luminaire's move does.

@@ -33,8 +33,9 @@ class PlacedCylindrical final : public PlacedSampler {
 public:
     explicit PlacedCylindrical(const Vec3& p) : p_(p) {}
     int items() const override { return 1; }
-    void sample(const PathTracer& tracer, int, PathSamples& samples, RayStats& stats, PathContributions& out) const override {
-        out.add(tracer.sample(CylindricalSensor(p_), samples, stats));
+    void sample(const PathTracer& tracer, int, PathSamples& samples, RayStats& stats, const PathParams& params,
+                PathContributions& out) const override {
+        out.add(tracer.sample(CylindricalSensor(p_), samples, stats, params));
     }
     // A 15 cm circle around the point, as plans mark a cylindrical measurement.
     SamplerDrawing drawing() const override {

@@ -126,9 +126,10 @@ public:
     bool independentFolds() const override { return true; }  // the cross-fitted choice
 
     // The strata are row-major, right fastest, bottom row first.
-    void sample(const PathTracer& tracer, int item, PathSamples& samples, RayStats& stats, PathContributions& out) const override {
+    void sample(const PathTracer& tracer, int item, PathSamples& samples, RayStats& stats, const PathParams& params,
+                PathContributions& out) const override {
         SensorLight light;
-        out.add(item, items() * tracer.sample(FrustumSensor(frustum, item), samples, stats, nullptr, &light));
+        out.add(item, items() * tracer.sample(FrustumSensor(frustum, item), samples, stats, params, nullptr, &light));
         for (int k = 0; k < light.count; ++k) {
             int cell = frustum.cellOf(light.wi[k]);
             if (cell >= 0) out.add(cell, light.value[k]);

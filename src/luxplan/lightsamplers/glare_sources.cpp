@@ -81,27 +81,28 @@ Vec3 DirectionGrid::direction(int cell, Vec2 u) const {
     return equalAreaHemisphere({((cell % n_) + u.x) / n_, ((cell / n_) + u.y) / n_});
 }
 
-void PlacedGlare::sample(const PathTracer& tracer, int item, PathSamples& samples, RayStats& stats, PathContributions& out) const {
+void PlacedGlare::sample(const PathTracer& tracer, int item, PathSamples& samples, RayStats& stats, const PathParams& params,
+                         PathContributions& out) const {
     if (item == 0) {
-        out.add(tracer.sample(CosineSensor(eye_, forward_), samples, stats));
+        out.add(tracer.sample(CosineSensor(eye_, forward_), samples, stats, params));
     } else if (item >= firstCell()) {
         // The sky, the ground outside and surfaces through a cell; the luminaires and
         // sun disks a ray meets first are their slots' sources.
         const Vec3 w = frame_.toWorld(grid_->direction(item - firstCell(), samples.get2D(PathSamples::Direction)));
-        out.add(tracer.sample(RaySensor(Ray{eye_, w}, true), samples, stats));
+        out.add(tracer.sample(RaySensor(Ray{eye_, w}, true), samples, stats, params));
     } else {
-        sampleSlot(tracer, item, samples, stats, out);
+        sampleSlot(tracer, item, samples, stats, params, out);
     }
 }
 
 void PlacedGlare::sampleSlot(const PathTracer& tracer, int item, PathSamples& samples, RayStats& stats,
-                             PathContributions& out) const {
+                             const PathParams& params, PathContributions& out) const {
     const int slot = (item - 1) / kQuantities, q = (item - 1) % kQuantities;
     const EmitterSet& emitters = tracer.emitters();
     Vec3 w;
     double pdf = 0, Le = 0, T = 0;
     if (slot < int(emitters.size())) {
-        if (stats.footprint) stats.footprint->usedEmitterChoice = true;  // where the luminaires are
+        if (params.footprint) params.footprint->usedEmitterChoice = true;  // where the luminaires are
         const WorldEmitter& e = emitters[size_t(slot)];
         auto p = e.shape->sample(eye_, samples.get2D(PathSamples::EmitterPoint));
         if (!p || !(p->pdf > 0)) return;
@@ -112,7 +113,7 @@ void PlacedGlare::sampleSlot(const PathTracer& tracer, int item, PathSamples& sa
         if (dot(w, forward_) <= 0 || (metric_ == Metric::Ugr && w.z <= 0)) return;
         Le = emitters.emitted(size_t(slot), w);
         if (!(Le > 0)) return;
-        T = tracer.transmittance(eye_ + w * 1e-4, w, dist - 1e-4, slot, stats);
+        T = tracer.transmittance(eye_ + w * 1e-4, w, dist - 1e-4, slot, stats, params.footprint);
     } else {
         const DaylightEnvironment* daylight = tracer.daylight();
         const int sun = slot - int(emitters.size());
@@ -122,7 +123,7 @@ void PlacedGlare::sampleSlot(const PathTracer& tracer, int item, PathSamples& sa
         w = Frame::fromNormal(disk.direction).toWorld(sampleUniformCone(samples.get2D(PathSamples::SunPoint), cosMax));
         pdf = uniformConePdf(cosMax), Le = disk.luminance;
         if (dot(w, forward_) <= 0 || !(Le > 0)) return;
-        T = tracer.transmittance(eye_, w, kInf, -1, stats);
+        T = tracer.transmittance(eye_, w, kInf, -1, stats, params.footprint);
     }
     if (!(T > 0)) return;
     const double omega = T / pdf;  // a pane in the way dims the source, as if smaller

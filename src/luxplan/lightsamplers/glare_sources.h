@@ -75,7 +75,8 @@ public:
     // The first direction cell's item.
     int firstCell() const { return 1 + slots_ * kQuantities; }
     int items() const override { return firstCell() + (grid_ ? grid_->cells() : 0); }
-    void sample(const PathTracer& tracer, int item, PathSamples& samples, RayStats& stats, PathContributions& out) const override;
+    void sample(const PathTracer& tracer, int item, PathSamples& samples, RayStats& stats, const PathParams& params,
+                PathContributions& out) const override;
     // The metric from all folds; its error by the jackknife over the folds.
     Estimate combine(const ItemEstimates& items) const override;
     // Adaptive measurement stops the cells that are surely below the threshold (their
@@ -87,7 +88,8 @@ public:
     GlareSurvey surveyOf(const std::vector<double>& itemMeans) const;
 
 private:
-    void sampleSlot(const PathTracer& tracer, int item, PathSamples& samples, RayStats& stats, PathContributions& out) const;
+    void sampleSlot(const PathTracer& tracer, int item, PathSamples& samples, RayStats& stats, const PathParams& params,
+                    PathContributions& out) const;
     // The connected regions of cells brighter than the threshold, as sources; adds
     // their direct vertical illuminance to `direct`.
     void addRegions(const std::vector<double>& itemMeans, std::vector<GlareSource>& sources, double& direct) const;

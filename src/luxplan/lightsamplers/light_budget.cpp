@@ -34,13 +34,14 @@ std::vector<SamplerBudget> measureLightBudgets(const PathTracer& tracer, int pat
         const Work& job = work[w];
         RayStats stats;
         LightBudget path;
+        PathParams params;
+        params.budget = &path;
         for (int p = 0; p < pathsPerItem; ++p) {
             path = LightBudget();
-            stats.budget = &path;
             Rng rng(hashValues({seed, kBudgetTag, uint64_t(job.sampler), uint64_t(job.item), uint64_t(p)}));
             PathSamples samples(rng);
             PathContributions out(job.item);
-            placed[job.sampler]->sample(tracer, job.item, samples, stats, out);
+            placed[job.sampler]->sample(tracer, job.item, samples, stats, params, out);
             if (!out.finite() || !std::isfinite(path.total())) continue;  // dropped, as the estimator drops it
             LightBudget& sum = sums[w];
             sum.sun += path.sun, sum.sky += path.sky, sum.interreflected += path.interreflected;

@@ -1,6 +1,7 @@
 // Measuring the scene's light samplers with the path tracer. Each sampler type
 // (sampler_type.h: planar, directional, volume) says where it measures and what one
-// path contributes; this runs the paths in parallel and combines them. Samplers on
+// path contributes; this runs the paths in parallel and combines them (measurement.cpp:
+// the work plan, the path source, the adaptive rounds and the reducer). Samplers on
 // entities follow the layout.
 #pragma once
 
@@ -9,8 +10,7 @@
 #include <memory>
 #include <vector>
 
-#include <luxplan/lightsamplers/cache_check.h>
-#include <luxplan/lightsamplers/path_cache.h>
+#include <luxplan/lightsamplers/path_source.h>
 #include <luxplan/scene/sampler_result.h>
 #include <luxplan/lightsamplers/sampler_type.h>
 #include <luxplan/pathtracer/path_tracer.h>
@@ -50,11 +50,6 @@ struct MeasureOptions {
     // scrambled sequence (one per fold for types that compare folds,
     // PlacedSampler::independentFolds). Off: PCG only.
     bool lowDiscrepancy = true;
-    // With a cache: every path read from it is traced again from scratch as well and
-    // compared with it bit for bit (MeasureResult::cacheCheck). A diagnostic of the
-    // cache's exactness: the numbers stay the cache's, and a measurement costs what one
-    // without the cache does, and more.
-    bool checkCache = false;
     // A value that chooses among its items (the directional sampler's brightest stratum)
     // reports an error that includes how the choice varies (PlacedSampler::reportedError:
     // a bootstrap of the estimate, about 0.25 ms a sampler of 16 strata). The search's own
@@ -66,7 +61,7 @@ struct MeasureOptions {
     // up in path order: the same numbers as one thread in order (0: never split).
     int chunkPaths = 32;
     // Russian roulette on the light samples at surface vertices
-    // (PathSamples::setLightFloor): sampler k's paths take lightFloors[k] (in the
+    // (PathParams::lightFloor): sampler k's paths take lightFloors[k] (in the
     // tracer's unit for its paths; lightSampleFloors). Empty: every sample traced.
     std::vector<double> lightFloors;
     // Where a watcher reads the progress (measure's stderr line): the paths traced or
@@ -88,20 +83,19 @@ struct MeasureResult {
     RayStats rays;
     uint64_t paths = 0;             // traced, over all samplers
     uint64_t droppedNonFinite = 0;  // over all samplers
-    uint64_t reusedPaths = 0;       // read from the path cache instead of traced (in `paths`)
-    CacheCheck cacheCheck;          // MeasureOptions::checkCache (differences in work order: sampler, item, path)
+    uint64_t reusedPaths = 0;       // read back from the path source instead of traced (in `paths`)
 };
 
 // Measures every sampler of the scene for the path tracer's current layout. Each path is
 // seeded from (seed, sampler, point, path), so results do not depend on the thread count
-// (set once by the caller, see core/parallel.h). With a cache, paths no move since its
-// committed layout can have changed are read from it (the result is the same), and
-// the paths traced go to its pending delta (commit or discard it after).
+// (set once by the caller, see core/parallel.h). With a path source (the path cache,
+// incremental/path_cache.h), the paths it gives are read back instead of traced (the result is the
+// same), and it is told of every path the measurement traced (path_source.h).
 // `glareTracer`, when given (on the same scene), traces the glare surveys (the "ugr" and
 // "dgp" samplers) instead of `tracer`: the search gives them the sunlit patches and the
 // others not (a survey's vertical illuminance misses the light off sunlit surfaces in
 // a third of its first looks, with an error that does not show it: docs/light-transport.md).
-MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& options, PathCache* cache = nullptr,
+MeasureResult measureSamplers(const PathTracer& tracer, const MeasureOptions& options, PathSource* source = nullptr,
                               const PathTracer* glareTracer = nullptr);
 
 }  // namespace luxplan

@@ -25,8 +25,9 @@ public:
     PlacedPlanar(std::vector<Vec3> points, Vec3 normal, std::vector<Vec3> corners)
         : points_(std::move(points)), normal_(normal), corners_(std::move(corners)) {}
     int items() const override { return int(points_.size()); }
-    void sample(const PathTracer& tracer, int item, PathSamples& samples, RayStats& stats, PathContributions& out) const override {
-        out.add(tracer.sample(CosineSensor(points_[size_t(item)], normal_), samples, stats));
+    void sample(const PathTracer& tracer, int item, PathSamples& samples, RayStats& stats, const PathParams& params,
+                PathContributions& out) const override {
+        out.add(tracer.sample(CosineSensor(points_[size_t(item)], normal_), samples, stats, params));
     }
     std::vector<Vec3> coverageProbes(Vec3& normal) const override {
         normal = normal_;

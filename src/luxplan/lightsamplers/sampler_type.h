@@ -31,6 +31,7 @@ namespace luxplan {
 class PathTracer;
 class PathSamples;
 struct RayStats;
+struct PathParams;
 
 // A value and its standard error. An error estimated from the spread of a few values
 // (folds) has that many less one degrees of freedom; 0 means many (from the paths).
@@ -161,8 +162,10 @@ public:
     virtual void setSources(int /*luminaires*/, int /*sunDisks*/) {}
     // How many estimates it is made of: its points, or its strata.
     virtual int items() const = 0;
-    // Traces one path for `item` and adds what it contributes, in the type's unit.
-    virtual void sample(const PathTracer& tracer, int item, PathSamples& samples, RayStats& stats, PathContributions& out) const = 0;
+    // Traces one path for `item` with `params` (its roulette floor and recorders:
+    // PathParams) and adds what it contributes, in the type's unit.
+    virtual void sample(const PathTracer& tracer, int item, PathSamples& samples, RayStats& stats, const PathParams& params,
+                        PathContributions& out) const = 0;
     // Whether a path traced for one item may add to others. If so, every item's
     // estimate is the mean over all the sampler's paths (each path then adds its
     // contribution times items(), so that an item's own paths keep their weight).

@@ -27,8 +27,9 @@ public:
     std::vector<Vec3> points, corners;
 
     int items() const override { return int(points.size()); }
-    void sample(const PathTracer& tracer, int item, PathSamples& samples, RayStats& stats, PathContributions& out) const override {
-        out.add(tracer.sample(SphereSensor(points[size_t(item)]), samples, stats));
+    void sample(const PathTracer& tracer, int item, PathSamples& samples, RayStats& stats, const PathParams& params,
+                PathContributions& out) const override {
+        out.add(tracer.sample(SphereSensor(points[size_t(item)]), samples, stats, params));
     }
     SamplerDrawing drawing() const override {
         SamplerDrawing d;

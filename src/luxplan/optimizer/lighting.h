@@ -1,12 +1,14 @@
 // The optimizer's lighting hook: L(x) of the paper's Eq. 3 for a layout that
-// passed the geometric test. The path-traced implementation lives with the light
-// samplers; tests plug in analytic ones.
+// passed the geometric test. The optimizer sees an evaluator of the light, not how it
+// measures: the path-traced one (path_traced_lighting.h) keeps its path cache to itself;
+// tests plug in analytic ones.
 #pragma once
 
 #include <cstdint>
 #include <vector>
 
-#include <luxplan/lightsamplers/cache_check.h>
+#include <nlohmann/json.hpp>
+
 #include <luxplan/scene/sampler_result.h>
 #include <luxplan/scene/layout.h>
 
@@ -16,6 +18,14 @@ namespace luxplan {
 // and errors when the evaluator keeps them).
 struct LightingBreakdown {
     std::vector<SamplerResult> samplers;
+};
+
+// What an evaluator says of its own in report.json (its settings and checks), as
+// fields in the order written: each sampler's after its measurement, and the run's
+// after the search's statistics.
+struct LightingNotes {
+    std::vector<nlohmann::ordered_json> samplers;  // per sampler (Scene::samplers order), an object each; empty: none
+    nlohmann::ordered_json run = nlohmann::ordered_json::object();
 };
 
 // What an independent measurement (LightingEvaluator::measureIndependently) is for: it
@@ -54,11 +64,8 @@ public:
     // Paths traced so far over every evaluation and measurement (not those a cache
     // reused); 0 for an evaluator that traces none.
     virtual uint64_t tracedPaths() const { return 0; }
-    // What checking the evaluator's cache against fresh traces found (off: no check).
-    virtual CacheCheck cacheCheck() const { return {}; }
-    // The floors of the light samples' roulette its evaluations took, one per sampler
-    // (empty: every light sample traced; MeasureOptions::lightFloors).
-    virtual std::vector<double> lightFloors() const { return {}; }
+    // Its own fields of report.json, for the run so far (LightingNotes).
+    virtual LightingNotes notes() const { return {}; }
     // The search's margin (OptimizerOptions::marginZ): evaluate() narrows every band by
     // this many standard errors of the term at each end (constraints/penalty.h,
     // marginPenalty); measureIndependently() never does. An evaluator without errors

@@ -593,6 +593,98 @@ void Optimizer::step() {
     settle(p.valid, accept, stats, std::move(proposed), std::move(e));
 }
 
+Progress Optimizer::progressNow(double seconds, int first) {
+    Progress pr;
+    pr.iteration = iteration_;
+    pr.iterations = options_.iterations;
+    pr.current = currentEval_.cost;
+    pr.best = feasible_ ? bestEval_.cost : kInf;
+    pr.feasible = !currentEval_.rejected;
+    pr.lightingMeasured = currentEval_.lightingEvaluated;
+    pr.temperature = temperature();
+    pr.polishing = polishing_;
+    pr.recentAcceptance = progressProposed_ > 0 ? double(progressAccepted_) / double(progressProposed_) : 0.0;
+    progressProposed_ = progressAccepted_ = 0;
+    for (MoveType t : kMoveTypes) {
+        MoveStats total;
+        for (const auto& level : stats_) {
+            total.proposed += level.moves[int(t)].proposed;
+            total.accepted += level.moves[int(t)].accepted;
+        }
+        pr.acceptance[int(t)] = total.acceptance();
+        pr.proposed[int(t)] = uint64_t(total.proposed);
+    }
+    pr.seconds = seconds;
+    int done = iteration_ - first;
+    pr.etaSeconds = done > 0 ? pr.seconds / done * std::max(0, options_.iterations - iteration_) : 0.0;
+    return pr;
+}
+
+// With suggestions asked for, the run goes on past a confirmed 0 until it holds as
+// many distinct layouts the search estimated at 0 (or runs out of iterations).
+bool Optimizer::enoughSuggestions() const {
+    if (options_.suggestions <= 1) return true;
+    int zeros = 0;
+    for (const Candidate& c : suggestions_.all()) zeros += c.search.cost == 0;
+    return zeros >= options_.suggestions;
+}
+
+Evaluation Optimizer::confirmBest() {
+    // A noisy estimate of L reaches 0 before the layout does: measure it again,
+    // independently of the search's random numbers.
+    ++confirmations_;
+    ++independentMeasurements_;
+    const Evaluation bestSearch = bestEval_;
+    Evaluation confirmed = bestEval_;
+    confirmed.lighting = lighting_->measureIndependently(best_, worldTransforms(*scene_, best_), &confirmed.samplers,
+                                                         independentSeed(kSelectionStream), IndependentUse::Selection);
+    confirmed.costError = costError(confirmed);
+    confirmed.cost = scene_->objective.cost(confirmed.lighting, confirmed.geometry);
+    // Kept among the candidates with its measurement, even past their capacity: the
+    // run may stop on it, and the result must be chosen among what it stopped on.
+    candidates_.keep(Candidate{best_, bestEval_, confirmed, bestIteration_});
+    // The best's cost from here: the confirmation's, with the search's margin (a
+    // layout at a band's edge is met in one measurement in two: not a zero to stop on).
+    // The margin's error is the larger of the confirmation's own and what the two
+    // independent estimates of the layout, the search's and the confirmation's, say
+    // by their difference (|a - b| / sqrt 2): a glare sampler's brightest stratum
+    // differs between seeds by more than its error says.
+    Evaluation asBest = confirmed;
+    if (confirmed.samplers.samplers.size() == scene_->samplers.size()) {
+        std::vector<SamplerResult> spread = confirmed.samplers.samplers;
+        const auto& search = bestSearch.samplers.samplers;
+        for (size_t k = 0; k < spread.size() && search.size() == spread.size(); ++k)
+            spread[k].standardError =
+                std::max(spread[k].standardError, std::abs(spread[k].value - search[k].value) / std::sqrt(2.0));
+        asBest.lighting = lightingCostOfResults(*scene_, spread, options_.marginZ);
+        asBest.cost = scene_->objective.cost(asBest.lighting, asBest.geometry);
+    }
+    return asBest;
+}
+
+bool Optimizer::solved(int& confirmedZeroAt) {
+    if (!options_.stopAtZeroCost || !feasible_ || bestEval_.cost != 0) return false;
+    if (confirmedZeroAt == bestIteration_) return enoughSuggestions();
+    if (bestIteration_ == iteration_ && iteration_ > 0) {
+        // The best is the current layout: square it with the room before confirming.
+        snapCurrent();
+        if (currentEval_.cost <= bestEval_.cost) {
+            best_ = current_;
+            bestEval_ = currentEval_;
+            candidates_.offer(current_, currentEval_, iteration_);
+        }
+    }
+    if (!bestEval_.lightingEvaluated) {
+        confirmedZeroAt = bestIteration_;
+        return enoughSuggestions();
+    }
+    const Evaluation asBest = confirmBest();
+    if (bestIteration_ == iteration_) currentEval_ = asBest;  // the current layout is the best one
+    bestEval_ = asBest;
+    if (asBest.cost == 0) confirmedZeroAt = bestIteration_;
+    return asBest.cost == 0 && enoughSuggestions();
+}
+
 OptimizerResult Optimizer::run(const ProgressCallback& progress, const std::atomic<bool>* cancel) {
     using Clock = std::chrono::steady_clock;
     if (!initialized_) initialize();
@@ -605,90 +697,9 @@ OptimizerResult Optimizer::run(const ProgressCallback& progress, const std::atom
     auto report = [&] {
         if (!progress || reported == iteration_) return;
         reported = iteration_;
-        Progress pr;
-        pr.iteration = iteration_;
-        pr.iterations = options_.iterations;
-        pr.current = currentEval_.cost;
-        pr.best = feasible_ ? bestEval_.cost : kInf;
-        pr.feasible = !currentEval_.rejected;
-        pr.lightingMeasured = currentEval_.lightingEvaluated;
-        pr.temperature = temperature();
-        pr.polishing = polishing_;
-        pr.recentAcceptance = progressProposed_ > 0 ? double(progressAccepted_) / double(progressProposed_) : 0.0;
-        progressProposed_ = progressAccepted_ = 0;
-        for (MoveType t : kMoveTypes) {
-            MoveStats total;
-            for (const auto& level : stats_) {
-                total.proposed += level.moves[int(t)].proposed;
-                total.accepted += level.moves[int(t)].accepted;
-            }
-            pr.acceptance[int(t)] = total.acceptance();
-            pr.proposed[int(t)] = uint64_t(total.proposed);
-        }
-        pr.seconds = seconds();
-        int done = iteration_ - first;
-        pr.etaSeconds = done > 0 ? pr.seconds / done * std::max(0, options_.iterations - iteration_) : 0.0;
-        progress(pr);
+        progress(progressNow(seconds(), first));
     };
-    // With suggestions asked for, the run goes on past a confirmed 0 until it holds as
-    // many distinct layouts the search estimated at 0 (or runs out of iterations).
-    int confirmedZeroAt = -1;
-    auto enoughSuggestions = [&] {
-        if (options_.suggestions <= 1) return true;
-        int zeros = 0;
-        for (const Candidate& c : suggestions_.all()) zeros += c.search.cost == 0;
-        return zeros >= options_.suggestions;
-    };
-    auto solved = [&] {
-        if (!options_.stopAtZeroCost || !feasible_ || bestEval_.cost != 0) return false;
-        if (confirmedZeroAt == bestIteration_) return enoughSuggestions();
-        if (bestIteration_ == iteration_ && iteration_ > 0) {
-            // The best is the current layout: square it with the room before confirming.
-            snapCurrent();
-            if (currentEval_.cost <= bestEval_.cost) {
-                best_ = current_;
-                bestEval_ = currentEval_;
-                candidates_.offer(current_, currentEval_, iteration_);
-            }
-        }
-        if (!bestEval_.lightingEvaluated) {
-            confirmedZeroAt = bestIteration_;
-            return enoughSuggestions();
-        }
-        // A noisy estimate of L reaches 0 before the layout does: measure it again,
-        // independently of the search's random numbers.
-        ++confirmations_;
-        ++independentMeasurements_;
-        const Evaluation bestSearch = bestEval_;
-        Evaluation confirmed = bestEval_;
-        confirmed.lighting = lighting_->measureIndependently(best_, worldTransforms(*scene_, best_), &confirmed.samplers,
-                                                             independentSeed(kSelectionStream), IndependentUse::Selection);
-        confirmed.costError = costError(confirmed);
-        confirmed.cost = scene_->objective.cost(confirmed.lighting, confirmed.geometry);
-        // Kept among the candidates with its measurement, even past their capacity: the
-        // run may stop on it, and the result must be chosen among what it stopped on.
-        candidates_.keep(Candidate{best_, bestEval_, confirmed, bestIteration_});
-        // The best's cost from here: the confirmation's, with the search's margin (a
-        // layout at a band's edge is met in one measurement in two: not a zero to stop on).
-        // The margin's error is the larger of the confirmation's own and what the two
-        // independent estimates of the layout, the search's and the confirmation's, say
-        // by their difference (|a - b| / sqrt 2): a glare sampler's brightest stratum
-        // differs between seeds by more than its error says.
-        Evaluation asBest = confirmed;
-        if (confirmed.samplers.samplers.size() == scene_->samplers.size()) {
-            std::vector<SamplerResult> spread = confirmed.samplers.samplers;
-            const auto& search = bestSearch.samplers.samplers;
-            for (size_t k = 0; k < spread.size() && search.size() == spread.size(); ++k)
-                spread[k].standardError =
-                    std::max(spread[k].standardError, std::abs(spread[k].value - search[k].value) / std::sqrt(2.0));
-            asBest.lighting = lightingCostOfResults(*scene_, spread, options_.marginZ);
-            asBest.cost = scene_->objective.cost(asBest.lighting, asBest.geometry);
-        }
-        if (bestIteration_ == iteration_) currentEval_ = asBest;  // the current layout is the best one
-        bestEval_ = asBest;
-        if (asBest.cost == 0) confirmedZeroAt = bestIteration_;
-        return asBest.cost == 0 && enoughSuggestions();
-    };
+    int confirmedZeroAt = -1;  // the best iteration whose zero cost a confirmation held
 
     // Best-so-far snapshots at the checkpoints still ahead, and where the run stops.
     std::vector<Snapshot> snapshots;
@@ -711,7 +722,7 @@ OptimizerResult Optimizer::run(const ProgressCallback& progress, const std::atom
 
     StopReason stop = StopReason::Iterations;
     if (levels_.empty()) stop = StopReason::NothingToMove;
-    else if (solved()) stop = StopReason::ZeroCost;
+    else if (solved(confirmedZeroAt)) stop = StopReason::ZeroCost;
     else
         while (iteration_ < options_.iterations) {
             if (cancel && cancel->load(std::memory_order_relaxed)) {
@@ -720,7 +731,7 @@ OptimizerResult Optimizer::run(const ProgressCallback& progress, const std::atom
             }
             step();
             if (iteration_ % options_.progressEvery == 0) report();
-            const bool zero = solved();  // a confirmation may replace the best estimate
+            const bool zero = solved(confirmedZeroAt);  // a confirmation may replace the best estimate
             atCheckpoint();
             if (zero) {
                 stop = StopReason::ZeroCost;
@@ -730,7 +741,12 @@ OptimizerResult Optimizer::run(const ProgressCallback& progress, const std::atom
     snapshot();
     if (trace_.empty() || trace_.back().iteration != iteration_) record();
     report();
+    OptimizerResult r = resultOf(stop, std::move(snapshots));
+    r.seconds = seconds();
+    return r;
+}
 
+OptimizerResult Optimizer::resultOf(StopReason stop, std::vector<Snapshot> snapshots) {
     OptimizerResult r;
     chooseResult(r);
     chooseSuggestions(r);
@@ -743,7 +759,6 @@ OptimizerResult Optimizer::run(const ProgressCallback& progress, const std::atom
     r.independentMeasurements = independentMeasurements_;
     r.samplerRanges = samplerRanges_;
     r.samplerRanges.resize(scene_->samplers.size());
-    r.seconds = seconds();
     r.stop = stop;
     r.feasible = feasible_;
     r.startFeasible = !startEval_.rejected;
@@ -752,7 +767,7 @@ OptimizerResult Optimizer::run(const ProgressCallback& progress, const std::atom
     r.snapshots = std::move(snapshots);
     r.lightingEvaluations = lightingEvaluations_;
     r.polishFrom = polishFrom_;
-    if (lighting_) r.cacheCheck = lighting_->cacheCheck(), r.lightFloors = lighting_->lightFloors();
+    if (lighting_) r.lightingNotes = lighting_->notes();
     r.options = options_;
     return r;
 }

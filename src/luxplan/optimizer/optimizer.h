@@ -224,8 +224,7 @@ struct OptimizerResult {
     std::vector<TracePoint> trace;
     std::vector<Snapshot> snapshots;  // OptimizerOptions::snapshots
     int64_t lightingEvaluations = 0;  // by the chain (not the final measurements)
-    CacheCheck cacheCheck;  // the lighting evaluator's, when it checked its cache
-    std::vector<double> lightFloors;  // the search's light samples' roulette, per sampler (empty: off)
+    LightingNotes lightingNotes;  // the lighting evaluator's own report fields
     // OptimizerOptions::suggestions: distinct layouts, the result first, then the others
     // by their independent measurement (the report's seed), best first.
     std::vector<Candidate> suggestions;
@@ -305,6 +304,19 @@ private:
     double costError(const Evaluation& e) const;
     // The seed of independent measurement stream `stream`: not the search's.
     uint64_t independentSeed(uint64_t stream) const;
+    // The progress callback's report of the run begun at iteration `first`; starts the
+    // next window of the recent acceptance.
+    Progress progressNow(double seconds, int first);
+    // Whether the run may stop at a zero cost: the best layout's zero confirmed by an
+    // independent measurement (`confirmedZeroAt`: the best iteration already confirmed)
+    // and as many suggestions at zero as asked for.
+    bool solved(int& confirmedZeroAt);
+    bool enoughSuggestions() const;
+    // The best layout measured again independently, kept among the candidates: its cost
+    // from here, with the search's margin.
+    Evaluation confirmBest();
+    // The run's result once it stopped (all but its seconds).
+    OptimizerResult resultOf(StopReason stop, std::vector<Snapshot> snapshots);
     // The result: the candidates measured independently, the best of them measured again.
     void chooseResult(OptimizerResult& r);
     // `layout` as layout.json writes it (OptimizerOptions::roundResult) and `e` with the

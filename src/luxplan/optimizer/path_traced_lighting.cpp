@@ -4,6 +4,7 @@
 
 #include <luxplan/constraints/penalty.h>
 #include <luxplan/core/rng.h>
+#include <luxplan/json/fields.h>
 
 namespace luxplan {
 namespace {
@@ -51,7 +52,8 @@ double PathTracedLighting::evaluate(const Layout& /*layout*/, const std::vector<
         fresh.choiceError = true;  // the noise penalty reads the errors
         return measure(tracer_, world, fresh, nullptr, out, hasGlareSurveys_ ? &reportTracer_ : nullptr, margin_);
     }
-    return measure(tracer_, world, options_, incremental_ ? &cache_ : nullptr, out,
+    PathSource* source = !incremental_ ? nullptr : checkCache_ ? static_cast<PathSource*>(&checked_) : &cache_;
+    return measure(tracer_, world, options_, source, out,
                    hasGlareSurveys_ ? &reportTracer_ : nullptr, margin_);
 }
 
@@ -75,22 +77,42 @@ void PathTracedLighting::setLightRoulette(double share) {
 }
 
 double PathTracedLighting::measure(PathTracer& tracer, const std::vector<Transform>& world, const MeasureOptions& options,
-                                   PathCache* cache, LightingBreakdown* out, PathTracer* glareTracer, double margin) {
+                                   PathSource* source, LightingBreakdown* out, PathTracer* glareTracer, double margin) {
     // The moved entities' vertices are rewritten and the top level rebuilt (EmbreeScene).
     for (size_t i = 0; i < world.size(); ++i) rt_.setEntityTransform(int(i), world[i]);
     rt_.commit();
     settleCache();  // the cache reads the new layout (begin) and measureSamplers traces in it
     tracer.updateLayout();
     if (glareTracer) glareTracer->updateLayout();
-    last_ = measureSamplers(tracer, options, cache, glareTracer);
+    last_ = measureSamplers(tracer, options, source, glareTracer);
     ++evaluations_;
     rays_ += last_.rays;
     reusedPaths_ += last_.reusedPaths;
-    for (CacheDifference& d : last_.cacheCheck.first) d.evaluation = int64_t(evaluations_);
-    check_.add(last_.cacheCheck);
+    if (source == &checked_) {
+        CacheCheck found = checked_.found();
+        for (CacheDifference& d : found.first) d.evaluation = int64_t(evaluations_);
+        check_.add(found);
+    }
     tracedPaths_ += last_.paths - last_.reusedPaths;
     if (out) out->samplers = last_.samplers;
     return scene_.samplers.empty() ? 0.0 : lightingCostOfResults(scene_, last_.samplers, margin);
+}
+
+LightingNotes PathTracedLighting::notes() const {
+    using Json = nlohmann::ordered_json;
+    LightingNotes notes;
+    for (double floor : options_.lightFloors) notes.samplers.push_back({{"search_light_floor", floor}});
+    if (check_.on) {  // optimize --set check_cache=true
+        Json first = Json::array();
+        for (const CacheDifference& d : check_.first)
+            first.push_back({{"evaluation", d.evaluation},
+                             {"sampler", d.sampler < int(scene_.samplers.size()) ? scene_.samplers[size_t(d.sampler)].name : ""},
+                             {"item", d.item}, {"path", d.path}, {"cached", json::numberOrNull(d.cached)},
+                             {"fresh", json::numberOrNull(d.fresh)},
+                             {"parts_at", d.where ? Json{d.where->x, d.where->y, d.where->z} : Json(nullptr)}});
+        notes.run["path_cache_check"] = {{"checked", check_.checked}, {"differing", check_.differing}, {"first", first}};
+    }
+    return notes;
 }
 
 }  // namespace luxplan

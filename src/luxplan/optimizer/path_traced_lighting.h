@@ -4,6 +4,7 @@
 
 #include <tbb/task_group.h>
 
+#include <luxplan/incremental/checked_paths.h>
 #include <luxplan/lightsamplers/light_samplers.h>
 #include <luxplan/optimizer/lighting.h>
 
@@ -36,19 +37,22 @@ public:
     void commit() override;
     void revert() override;
     // Whether evaluations reuse the paths a move cannot change (on by default; the
-    // numbers are the same either way, lightsamplers/path_cache.h).
+    // numbers are the same either way, incremental/path_cache.h).
     void setIncremental(bool on) { incremental_ = on; }
     void setSearchMargin(double z) override { margin_ = z; }
-    // Every path the cache reads back is traced again and compared (MeasureOptions::
-    // checkCache): a diagnostic, at the cost of a full evaluation and more.
-    void setCheckCache(bool on) { options_.checkCache = on; }
+    // Every path the cache reads back is traced again and compared (CheckedPaths): a
+    // diagnostic, at the cost of a full evaluation and more.
+    void setCheckCache(bool on) { checkCache_ = on; }
     // The search's light samples' roulette (MeasureOptions::lightFloors): floors at
     // `share` times each sampler's variance per path over its mean, from a pilot at the
     // scene's own layout (lightSampleFloors), fixed for the run; 0: every sample traced.
     // The independent measurements trace every sample. Before the first evaluation.
     void setLightRoulette(double share);
-    std::vector<double> lightFloors() const override { return options_.lightFloors; }
-    CacheCheck cacheCheck() const override { return check_; }
+    // What the cache check found so far (off: no check).
+    const CacheCheck& cacheCheck() const { return check_; }
+    // Each sampler's light floor in the search ("search_light_floor", when the roulette
+    // is on) and the cache check ("path_cache_check", when on).
+    LightingNotes notes() const override;
     // Fresh noise: every evaluation draws its own seed (from the seed and a count of
     // evaluations, so a run still repeats), without the path cache. The optimizer then
     // measures its current layout again before each test and uses the penalty method:
@@ -67,7 +71,7 @@ public:
 private:
     // L of the measurement, its bands narrowed by `margin` standard errors (the search's).
     double measure(PathTracer& tracer, const std::vector<Transform>& world, const MeasureOptions& options,
-                   PathCache* cache, LightingBreakdown* out, PathTracer* glareTracer = nullptr, double margin = 0);
+                   PathSource* source, LightingBreakdown* out, PathTracer* glareTracer = nullptr, double margin = 0);
     void settleCache();  // waits for the cache's commit() or revert() under way
 
     const Scene& scene_;
@@ -77,6 +81,8 @@ private:
     MeasureOptions options_;
     int reportPaths_ = 0, selectionPaths_ = 0;  // 0: options_.pathsPerPoint
     PathCache cache_;
+    CheckedPaths checked_{cache_};
+    bool checkCache_ = false;
     tbb::task_group cacheUpdate_;  // commit() or revert() under way
     bool cacheUpdating_ = false;
     bool incremental_ = true;

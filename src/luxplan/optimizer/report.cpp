@@ -171,7 +171,7 @@ std::string reportJson(const Scene& scene, const OptimizerResult& r) {
                   {"tolerance", s.tolerance}, {"weight", s.weight}, {"penalty", json::numberOrNull(row.penalty())}};
         if (!m.points.empty()) e["points"] = m.points;
         if (s.type->hasPointStatistics()) e["covered"] = m.covered;
-        if (k < r.lightFloors.size()) e["search_light_floor"] = r.lightFloors[k];
+        if (k < r.lightingNotes.samplers.size()) e.update(r.lightingNotes.samplers[k]);
         if (k < r.samplerRanges.size()) {
             const SamplerRange& range = r.samplerRanges[k];
             const ReachVerdict verdict = reachVerdict(s, range, m);
@@ -214,15 +214,7 @@ std::string reportJson(const Scene& scene, const OptimizerResult& r) {
         j["suggestions"] = list;
     }
     j["levels"] = levels;
-    if (r.cacheCheck.on) {  // optimize --set check_cache=true
-        Json first = Json::array();
-        for (const CacheDifference& d : r.cacheCheck.first)
-            first.push_back({{"evaluation", d.evaluation},
-                             {"sampler", d.sampler < int(scene.samplers.size()) ? scene.samplers[size_t(d.sampler)].name : ""},
-                             {"item", d.item}, {"path", d.path}, {"cached", json::numberOrNull(d.cached)}, {"fresh", json::numberOrNull(d.fresh)},
-                             {"parts_at", d.where ? Json{d.where->x, d.where->y, d.where->z} : Json(nullptr)}});
-        j["path_cache_check"] = {{"checked", r.cacheCheck.checked}, {"differing", r.cacheCheck.differing}, {"first", first}};
-    }
+    j.update(r.lightingNotes.run);
 
     const OptimizerOptions& o = r.options;
     j["settings"] = {

@@ -7,7 +7,7 @@ void EmitterStrategy::sample(Path& path) const {
     if (emitters.empty()) return;
     // The choice reads every luminaire, and so does a sensor's test of them: a moved one
     // changes the path either way.
-    if (path.stats.footprint) path.stats.footprint->usedEmitterChoice = true;
+    if (path.params.footprint) path.params.footprint->usedEmitterChoice = true;
     const Vertex& v = path.v;
     if (!v.isSurface() && !path.sensorSeesEmitters) return;
     const double uChoice = path.samples.get1D(PathSamples::EmitterChoice);

@@ -104,14 +104,16 @@ struct LightSample {
 
 // One path's state, as the integrator and the strategies share it.
 struct Path {
-    Path(const PathTracer& tracer, const Sensor& sensor, PathSamples& samples, RayStats& stats, SensorLight* sensorLight)
-        : tracer(tracer), sensor(sensor), samples(samples), stats(stats), sensorLight(sensorLight),
-          lightFloor(samples.lightFloor()) {}
+    Path(const PathTracer& tracer, const Sensor& sensor, PathSamples& samples, RayStats& stats, const PathParams& params,
+         SensorLight* sensorLight)
+        : tracer(tracer), sensor(sensor), samples(samples), stats(stats), params(params), sensorLight(sensorLight),
+          lightFloor(params.lightFloor) {}
 
     const PathTracer& tracer;
     const Sensor& sensor;
     PathSamples& samples;
     RayStats& stats;
+    const PathParams& params;
     SensorLight* sensorLight;
     const double lightFloor;
 
@@ -204,7 +206,7 @@ struct Path {
     // A light sample's contribution, credited to `source` at `creditDepth` bounces:
     // at the sensor (depth 0) into sensorLight when given, else into L.
     void add(const Vec3& wi, const Vec3& contribution, int source, int creditDepth) {
-        if (stats.budget) stats.budget->credit(source, creditDepth, luminance(contribution));
+        if (params.budget) params.budget->credit(source, creditDepth, luminance(contribution));
         if (depth == 0 && sensorLight) {
             sensorLight->wi[sensorLight->count] = wi;
             sensorLight->value[sensorLight->count++] = luminance(contribution);

@@ -53,14 +53,6 @@ public:
     // For numbers outside the layout (glass coins, the light samples' roulette).
     Rng& rng() { return rng_; }
 
-    // Russian roulette on the light samples at surface vertices: a sample whose
-    // contribution before its shadow ray (throughput x BSDF x Le / pdf, luminance in the
-    // sensor's unit) is c < floor is traced with probability c / floor and counts
-    // floor / c times, so that a path spends its shadow rays where its light is. Unbiased;
-    // each such sample adds at most c x floor to the variance. 0: every sample traced.
-    void setLightFloor(double floor) { lightFloor_ = floor; }
-    double lightFloor() const { return lightFloor_; }
-
 private:
     bool fromSequence() const { return sequence_ && depth_ < kDepths; }
     uint32_t pair(Slot slot) const { return uint32_t(depth_) * kSlots + slot; }
@@ -69,7 +61,6 @@ private:
     const Sequence* sequence_ = nullptr;
     uint32_t reversedIndex_ = 0;  // the point's index, bits reversed (low_discrepancy.h)
     int depth_ = 0;
-    double lightFloor_ = 0;
 };
 
 }  // namespace luxplan

@@ -24,7 +24,7 @@ const LightStrategy* const kStrategies[] = {&kEmitterLight, &kSunLight, &kSkyLig
 // side the path came from the two normals agree but in the signs of their zeros, which
 // Frame::fromNormal reads (its basis turns half a turn). With +0 the path scatters the
 // same whichever face it hit, and so a path kept by the path cache matches the one
-// traced afresh after a move has rebuilt the BVH (lightsamplers/path_cache.h).
+// traced afresh after a move has rebuilt the BVH (incremental/path_cache.h).
 Vec3 positiveZeros(const Vec3& n) { return n + Vec3(0, 0, 0); }  // -0 + 0 = +0
 
 }  // namespace
@@ -75,7 +75,8 @@ bool PathTracer::sealedAt(const Vec3& p, Vec3* exit) const {
     return answer;
 }
 
-double PathTracer::transmittance(const Vec3& origin, const Vec3& w, double tMax, int target, RayStats& stats) const {
+double PathTracer::transmittance(const Vec3& origin, const Vec3& w, double tMax, int target, RayStats& stats,
+                                 PathFootprint* footprint) const {
     // Opaque surfaces first, by an any-hit query. Luminaires block as a path sees
     // them (they absorb what reaches them): towards the sky and sun all of them do,
     // towards an emitter every other one. A ray to a flat emitter crosses its plane
@@ -97,7 +98,7 @@ double PathTracer::transmittance(const Vec3& origin, const Vec3& w, double tMax,
     double opaqueEnd = target < 0 ? tMax : tMax * (1 - 1e-4);
     // The emitter steps below run along this segment; the pane crossings add their own.
     const bool blocked = rt_.occluded({origin, w, 0, opaqueEnd, blockers});
-    if (stats.footprint) stats.footprint->addOcclusion(origin, w, 0, opaqueEnd, blockers, blocked);
+    if (footprint) footprint->addOcclusion(origin, w, 0, opaqueEnd, blockers, blocked);
     if (blocked) return 0;
     if (stepPastTarget) {
         double tStart = 0;
@@ -120,7 +121,7 @@ double PathTracer::transmittance(const Vec3& origin, const Vec3& w, double tMax,
         const double left = opaqueEnd - dot(p - origin, w);
         if (left <= 0) return T;
         auto hit = rt_.intersect({p, w, 0, left, kGlassMask, crossings > 0});
-        if (stats.footprint) stats.footprint->add(p, w, 0, hit ? hit->t : left);
+        if (footprint) footprint->add(p, w, 0, hit ? hit->t : left);
         if (!hit) return T;
         T *= bsdfs_[hit->material].straightTransmittance(std::abs(dot(w, hit->geometricNormal)));
         if (T <= 0) return 0;
@@ -141,7 +142,7 @@ void PathTracer::connect(Path& path, const LightSample& s) const {
     const Vec3 f = path.evalCos(v, s.wi);
     if (maxComponent(f) <= 0) return;
     if (s.throughShell && patches_.shadedByShell(path.spawn(v, s.wi), s.wi)) return;
-    // The light samples' roulette (PathSamples::setLightFloor), at surface vertices: a
+    // The light samples' roulette (PathParams::lightFloor), at surface vertices: a
     // sensor's own samples count in its cells, on another scale.
     Vec3 Le = s.Le;
     double survival = 1;
@@ -153,7 +154,8 @@ void PathTracer::connect(Path& path, const LightSample& s) const {
             if (!(path.samples.rng().uniform() < survival)) return;
         }
     }
-    double T = transmittance(path.spawn(v, s.wi), s.wi, v.isSurface() ? s.maxT : s.maxT - kRayEpsilon, s.target, path.stats);
+    double T = transmittance(path.spawn(v, s.wi), s.wi, v.isSurface() ? s.maxT : s.maxT - kRayEpsilon, s.target, path.stats,
+                             path.params.footprint);
     if (T <= 0) return;
     T /= survival;
     if (skyLater) Le = daylight_->Le(s.wi);
@@ -257,14 +259,14 @@ void PathTracer::addEscaped(Path& path, const Vec3& d) const {
         wSun = misWeight(Strategy::Bsdf, s);
     }
     path.L += path.throughput * (sky * wSky + sun * wSun);
-    if (path.stats.budget) {
-        path.stats.budget->credit(LightBudget::kSky, path.depth, luminance(path.throughput * sky * wSky));
-        path.stats.budget->credit(LightBudget::kSun, path.depth, luminance(path.throughput * sun * wSun));
+    if (path.params.budget) {
+        path.params.budget->credit(LightBudget::kSky, path.depth, luminance(path.throughput * sky * wSky));
+        path.params.budget->credit(LightBudget::kSun, path.depth, luminance(path.throughput * sun * wSun));
     }
 }
 
 void PathTracer::addEmitterHit(Path& path, const Hit& hit, const Vec3& d) const {
-    if (path.stats.footprint) path.stats.footprint->usedEmitterChoice = true;  // the MIS weight reads it
+    if (path.params.footprint) path.params.footprint->usedEmitterChoice = true;  // the MIS weight reads it
     const double Le = path.depth == 0 && path.sensor.hidesSources() ? 0.0 : emitters_.emitted(size_t(hit.index), d);
     if (!(Le > 0)) return;
     double w = 1;
@@ -274,7 +276,7 @@ void PathTracer::addEmitterHit(Path& path, const Hit& hit, const Vec3& d) const 
         w = misWeight(Strategy::Bsdf, s);
     }
     path.L += path.throughput * Vec3(Le, Le, Le) * w;
-    if (path.stats.budget) path.stats.budget->credit(hit.index, path.depth, luminance(path.throughput * Vec3(Le, Le, Le) * w));
+    if (path.params.budget) path.params.budget->credit(hit.index, path.depth, luminance(path.throughput * Vec3(Le, Le, Le) * w));
 }
 
 bool PathTracer::follow(Path& path, Vec3 d, bool* hitEmitterFirst) const {
@@ -284,7 +286,7 @@ bool PathTracer::follow(Path& path, Vec3 d, bool* hitEmitterFirst) const {
     for (int crossings = 0; crossings < 32; ++crossings) {
         ++path.stats.closest;
         auto hit = rt_.intersect({o, d, 0, kInf, kAllMask, path.seeThrough});
-        if (path.stats.footprint) path.stats.footprint->add(o, d, 0, hit ? hit->t : kInf);
+        if (path.params.footprint) path.params.footprint->add(o, d, 0, hit ? hit->t : kInf);
         if (!hit) {
             addEscaped(path, d);
             return false;
@@ -331,22 +333,22 @@ bool PathTracer::follow(Path& path, Vec3 d, bool* hitEmitterFirst) const {
     return false;
 }
 
-double PathTracer::sample(const Sensor& sensor, PathSamples& samples, RayStats& stats, bool* hitEmitterFirst,
-                          SensorLight* sensorLight) const {
+double PathTracer::sample(const Sensor& sensor, PathSamples& samples, RayStats& stats, const PathParams& params,
+                          bool* hitEmitterFirst, SensorLight* sensorLight) const {
     if (sensorLight) sensorLight->count = 0;
     const Vec3 origin = sensor.position();
     if (Vec3 exit; sealedAt(origin, &exit)) {
         // Its value depends on the box around it and on the luminaires (one might move
         // into the box): the way out to the box's face meets the box's triangles, so
         // the path cache traces it again when the box moves, and when a luminaire does.
-        if (stats.footprint) {
-            stats.footprint->add(origin, exit - origin, 0, 1);
-            stats.footprint->usedEmitterChoice = !emitters_.empty();
+        if (params.footprint) {
+            params.footprint->add(origin, exit - origin, 0, 1);
+            params.footprint->usedEmitterChoice = !emitters_.empty();
         }
         return 0;
     }
     thread_local SkyLight::View scratch[2];
-    Path path(*this, sensor, samples, stats, sensorLight);
+    Path path(*this, sensor, samples, stats, params, sensorLight);
     path.v.p = path.lastPoint = origin;
     path.views[0] = path.views[1] = &kNoView;
     path.scratch = scratch;

@@ -55,8 +55,6 @@ struct PathTracerOptions {
     int maxDepth = 256;        // a safety net only: roulette ends paths long before
 };
 
-// Rays traced, for throughput figures; and, when `footprint` is set, where they went
-// (every ray of the path is added to it: incremental re-evaluation, path_footprint.h).
 // Where the light of the paths came from (a sampler's light budget, for reports):
 // every contribution's luminance, summed by its source. Light that reaches the
 // sensor straight from a source (the sensor's own light samples and the rays it
@@ -90,11 +88,26 @@ struct LightBudget {
     }
 };
 
+// Rays traced, for throughput figures.
 struct RayStats {
     uint64_t closest = 0, shadow = 0;
+    RayStats& operator+=(const RayStats& o) { closest += o.closest, shadow += o.shadow; return *this; }
+};
+
+// What one path is traced with besides its random numbers, and where it records what
+// it did (PathTracer::sample).
+struct PathParams {
+    // Russian roulette on the light samples at surface vertices: a sample whose
+    // contribution before its shadow ray (throughput x BSDF x Le / pdf, luminance in the
+    // sensor's unit) is c < lightFloor is traced with probability c / lightFloor and
+    // counts lightFloor / c times, so that a path spends its shadow rays where its light
+    // is. Unbiased; each such sample adds at most c x lightFloor to the variance. 0:
+    // every sample traced.
+    double lightFloor = 0;
+    // Where its rays went, if set: every ray of the path is added to it (incremental
+    // re-evaluation, incremental/path_cache.h).
     PathFootprint* footprint = nullptr;
     LightBudget* budget = nullptr;  // credited with every contribution, if set
-    RayStats& operator+=(const RayStats& o) { closest += o.closest, shadow += o.shadow; return *this; }
 };
 
 // The light a path's next-event estimation found at the sensor itself, reported apart
@@ -121,8 +134,14 @@ public:
     // hit a luminaire (the value is then its luminance alone: emitters end paths).
     // `sensorLight`, when given, receives the light sampled at the sensor instead of
     // the returned value (which then holds the rest of the path's).
+    // `params`: the path's roulette floor and recorders (PathParams).
+    double sample(const Sensor& sensor, PathSamples& samples, RayStats& stats, const PathParams& params,
+                  bool* hitEmitterFirst = nullptr, SensorLight* sensorLight = nullptr) const;
+    // The same with every light sample traced and nothing recorded.
     double sample(const Sensor& sensor, PathSamples& samples, RayStats& stats, bool* hitEmitterFirst = nullptr,
-                  SensorLight* sensorLight = nullptr) const;
+                  SensorLight* sensorLight = nullptr) const {
+        return sample(sensor, samples, stats, PathParams{}, hitEmitterFirst, sensorLight);
+    }
     // The same with pseudo-random numbers only.
     double sample(const Sensor& sensor, Rng& rng, RayStats& stats, bool* hitEmitterFirst = nullptr,
                   SensorLight* sensorLight = nullptr) const {
@@ -157,7 +176,8 @@ public:
     // emitter `target`, or infinity for sun and sky): products of pane transmittances, 0
     // when anything opaque or another luminaire is in the way (the target itself never
     // shadows itself). Public for the glare samplers' direct views of their sources.
-    double transmittance(const Vec3& p, const Vec3& w, double tMax, int target, RayStats& stats) const;
+    double transmittance(const Vec3& p, const Vec3& w, double tMax, int target, RayStats& stats,
+                         PathFootprint* footprint = nullptr) const;
 
 private:
     // The lights are strategies (light_strategy.h) that read the tracer's parts.

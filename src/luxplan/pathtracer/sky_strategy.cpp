@@ -35,6 +35,7 @@ void SkyStrategy::sampleOutside(Path& path, const EnvironmentSample& s) const {
     const PathTracer& tracer = path.tracer;
     const Vertex& v = path.v;
     RayStats& stats = path.stats;
+    PathFootprint* footprint = path.params.footprint;
     const Vec3 f = path.evalCos(v, s.wi);
     if (maxComponent(f) <= 0) return;
     const Vec3 from = path.spawn(v, s.wi);
@@ -46,13 +47,13 @@ void SkyStrategy::sampleOutside(Path& path, const EnvironmentSample& s) const {
     const double inside = tracer.sky_.inRoomUntil(from, s.wi);
     ++stats.shadow;
     const bool blocked = tracer.rt_.occluded({from, s.wi, 0, inside, blockers});
-    if (stats.footprint) stats.footprint->addOcclusion(from, s.wi, 0, inside, blockers, blocked);
+    if (footprint) footprint->addOcclusion(from, s.wi, 0, inside, blockers, blocked);
     if (blocked) return;
     ++stats.closest;
     const std::optional<Hit> z = tracer.rt_.intersect({from, s.wi, inside, kInf, blockers, path.seeThrough});
-    if (stats.footprint) {
-        if (z) stats.footprint->add(from, s.wi, inside, z->t);
-        else stats.footprint->addOcclusion(from, s.wi, inside, kInf, blockers, false);
+    if (footprint) {
+        if (z) footprint->add(from, s.wi, inside, z->t);
+        else footprint->addOcclusion(from, s.wi, inside, kInf, blockers, false);
     }
     if (!z) {
         if (maxComponent(s.Le) <= 0) return;
@@ -75,7 +76,7 @@ void SkyStrategy::sampleOutside(Path& path, const EnvironmentSample& s) const {
         if (!(pl > 0) || maxComponent(Le) <= 0) return;
         const Vec3 fz = path.evalCos(outside, wl);
         if (maxComponent(fz) <= 0) return;
-        const double V = tracer.transmittance(path.spawn(outside, wl), wl, kInf, -1, stats);
+        const double V = tracer.transmittance(path.spawn(outside, wl), wl, kInf, -1, stats, footprint);
         if (V <= 0) return;
         // z lies outside the room: every disk is open from it.
         StrategyDensities d;

@@ -15,6 +15,7 @@ void SunPatchStrategy::sample(Path& path) const {
     const SunPatches& patches = tracer.patches_;
     Path::PatchLight& patch = path.patch;
     RayStats& stats = path.stats;
+    PathFootprint* footprint = path.params.footprint;
     const Vertex& v = path.v;
     if (!patch.drawn) {
         patch.drawn = true;
@@ -32,7 +33,7 @@ void SunPatchStrategy::sample(Path& path) const {
         patch.traced = true;
         ++stats.closest;
         patch.hit = tracer.rt_.intersect({patch.entry, -ws, 0, kInf, kOpaqueMask | kEmitterMask});
-        if (stats.footprint) stats.footprint->add(patch.entry, -ws, 0, patch.hit ? patch.hit->t : kInf);
+        if (footprint) footprint->add(patch.entry, -ws, 0, patch.hit ? patch.hit->t : kInf);
         const Hit* h = patch.hit ? &*patch.hit : nullptr;
         patch.lit = h && h->kind != HitKind::Emitter && patches.inRoom(h->point);
         // Zero when the beam grazed an opening's edge.
@@ -63,7 +64,7 @@ void SunPatchStrategy::sample(Path& path) const {
     const double w = misWeight(Strategy::TwoBounce, d);
     if (!(w > 0)) return;
     if (patch.toSun < 0) {
-        patch.toSun = tracer.transmittance(path.spawn(y, ws), ws, kInf, -1, stats);
+        patch.toSun = tracer.transmittance(path.spawn(y, ws), ws, kInf, -1, stats, footprint);
         patch.lit = patch.toSun > 0;
         if (!patch.lit) return;
     }
@@ -73,7 +74,7 @@ void SunPatchStrategy::sample(Path& path) const {
     const Vec3 span = to - from;
     const double gap = std::sqrt(dot(span, span));
     if (!(gap > 0) || dot(span, wi) <= 0) return;
-    const double connection = tracer.transmittance(from, span / gap, gap, -1, stats);
+    const double connection = tracer.transmittance(from, span / gap, gap, -1, stats, footprint);
     if (connection <= 0) return;
     path.add(wi, path.throughput * fx * fy * patch.sun.Le * (cosY / d2 * connection * patch.toSun * w / (pSun * b)),
              LightBudget::kSun, path.depth);

@@ -2,7 +2,7 @@
 // plane hits one or the other as the order of the BVH decides, and a move anywhere
 // rebuilds the BVH of the flat geometry. EmbreeScene breaks ties at such faces by a
 // fixed order, so that a path traced after a move is the one the path cache kept
-// (lightsamplers/path_cache.h). A partition's glass running into its wooden base,
+// (incremental/path_cache.h). A partition's glass running into its wooden base,
 // flush at the ends, is one; a glass top resting on a leg is another, which only a ray
 // inside the glass reaches (the path tracer asks for the fixed order there itself).
 #pragma once

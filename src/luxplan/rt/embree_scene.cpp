@@ -216,7 +216,7 @@ void commitOnOneThread(RTCScene scene) {
 // Robust traversal: a box test that rounds the wrong way can skip the triangle a few
 // ulps nearer than the one found, and whether it does depends on the BVH of the
 // moment; the path cache needs a ray that missed every move to meet what it met
-// before (lightsamplers/path_cache.h). About 2% of the search's time.
+// before (incremental/path_cache.h). About 2% of the search's time.
 // The context filter function: the second query that breaks ties (below).
 const RTCSceneFlags kTraversal = RTC_SCENE_FLAG_ROBUST | RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION;
 

@@ -56,7 +56,7 @@ struct Ray {
     // (instance, geometry, triangle) instead of the one the BVH of the moment visits
     // first (a second query, about 40% of a ray's cost). For rays that may run inside a
     // see-through part, where its faces can coincide with another material's: a glass
-    // top resting on a wooden leg (lightsamplers/path_cache.h needs the same hit after
+    // top resting on a wooden leg (incremental/path_cache.h needs the same hit after
     // any move).
     bool breakTies = false;
 };

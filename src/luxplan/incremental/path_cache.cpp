@@ -1,4 +1,4 @@
-#include <luxplan/lightsamplers/path_cache.h>
+#include <luxplan/incremental/path_cache.h>
 
 #include <algorithm>
 #include <bit>
@@ -7,6 +7,7 @@
 
 #include <luxplan/core/parallel.h>
 #include <luxplan/emitters/emitter_shape.h>
+#include <luxplan/lightsamplers/fresh_paths.h>
 #include <luxplan/scene/layout.h>
 
 namespace luxplan {
@@ -268,6 +269,17 @@ void PathCache::prefetchAfter(const Paths& paths, size_t path) {
         const size_t bytes = std::min(size_t(n.segmentCount) * sizeof(Segment), kPrefetchBytes);
         for (size_t b = 0; b < bytes; b += 64) __builtin_prefetch(from + b);
     }
+}
+
+PathSource::Path PathCache::get(size_t work, int path, RayStats& stats, FreshPaths& fresh) {
+    bool askedAgain = false;
+    if (const PathContributions* kept = holds(work, path, askedAgain)) return {kept, true, askedAgain};
+    return {&fresh.trace(work, path, stats, true), false, false};
+}
+
+void PathCache::used(size_t work, int path, const Path& p, const FootprintView& footprint) {
+    visit(work, path, p.reused, p.askedAgain);
+    if (!p.reused) keep(work, path, *p.contributions, footprint);
 }
 
 const PathContributions* PathCache::holds(size_t work, int path, bool& askedAgain) const {

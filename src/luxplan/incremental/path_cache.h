@@ -14,7 +14,7 @@
 //   - it read the emitter choice and a luminaire moved (the choice weighs every
 //     luminaire by flux / distance^2, so every light sample's probability changes).
 // Every other path reads as it did, so measuring with the cache gives the same numbers,
-// bit for bit, as measuring the same layout from scratch (tests/lightsamplers/
+// bit for bit, as measuring the same layout from scratch (tests/incremental/
 // path_cache_test.cpp): where a ray meets coincident faces, which one it hits is the
 // first in a fixed order, not the BVH of the moment (EmbreeScene::intersect), but for
 // faces of two entities' different materials that overlap in one plane and that a path
@@ -30,13 +30,17 @@
 #include <span>
 #include <vector>
 
+#include <luxplan/incremental/footprint_geometry.h>
+#include <luxplan/lightsamplers/path_source.h>
 #include <luxplan/lightsamplers/sampler_type.h>
 #include <luxplan/pathtracer/path_footprint.h>
 #include <luxplan/rt/embree_scene.h>
 
 namespace luxplan {
 
-class PathCache {
+// As a path source (path_source.h) it gives the paths that hold and has the others
+// traced afresh with their footprints, which it keeps.
+class PathCache : public PathSource {
 public:
     // `maxSegments` bounds the memory (24 bytes a segment, and 44 more for a shadow
     // query's, which keeps its rays and answer; the arrays may hold as many again of
@@ -48,7 +52,11 @@ public:
     // sampler item) whose samplers are `workSampler`: what moved since the committed
     // layout. `streams` keys what a path's numbers are (the seed and the sampling
     // options): a different key clears the cache.
-    void begin(const EmbreeScene& rt, const std::vector<int>& workSampler, uint64_t streams);
+    void begin(const EmbreeScene& rt, const std::vector<int>& workSampler, uint64_t streams) override;
+    // holds(), or else traced afresh.
+    Path get(size_t work, int path, RayStats& stats, FreshPaths& fresh) override;
+    // visit(), and keep() for a path traced afresh.
+    void used(size_t work, int path, const Path& p, const FootprintView& footprint) override;
     // What the committed path `path` of work item `work` contributed, if that still
     // holds for the new layout, else null. Only reads: threads may ask about paths of
     // one work item at once. `askedAgain`: it holds because its shadow queries, asked
@@ -74,7 +82,7 @@ public:
     std::span<const Segment> segmentsOf(size_t work, int path) const;
 
     // Paths the measurement in progress, or else the last one, reused.
-    uint64_t reused() const;
+    uint64_t reused() const override;
     // ... of which met the move only along shadow queries that answered as before.
     uint64_t askedAgain() const;
     size_t segments() const { return committedSegments_; }

@@ -1,4 +1,4 @@
-// Checking the path cache against fresh traces (MeasureOptions::checkCache): every path
+// Checking the path cache against fresh traces (checked_paths.h): every path
 // the cache reads back is traced again from scratch for the same layout and the two are
 // compared bit for bit. They agree but where a path meets two entities' faces of
 // different materials flush in one plane before any see-through surface (path_cache.h);

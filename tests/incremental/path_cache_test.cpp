@@ -1,4 +1,4 @@
-// Exact incremental re-evaluation (lightsamplers/path_cache.h): after any sequence of
+// Exact incremental re-evaluation (incremental/path_cache.h): after any sequence of
 // moves, some accepted (committed) and some refused (discarded), measuring with the
 // cache gives the same numbers, bit for bit, as measuring the same layout from
 // scratch (a fresh Embree scene and path tracer) with the same seed and paths; and
@@ -10,7 +10,8 @@
 
 #include <luxplan/core/rng.h>
 #include <luxplan/emitters/emitter_shape.h>
-#include <luxplan/lightsamplers/path_cache.h>
+#include <luxplan/incremental/checked_paths.h>
+#include <luxplan/incremental/path_cache.h>
 #include "support/scene_builder.h"
 #include "support/scene_lab.h"
 
@@ -237,15 +238,15 @@ TEST(PathCache, MovesEqualFromScratchWithAFootOverATaskPoint) {
     EXPECT_GE(openLayouts, 5);
 }
 
-// MeasureOptions::checkCache traces every reused path again: through moves, all agree
+// CheckedPaths traces every path the cache gives again: through moves, all agree
 // and the numbers are the check-free ones.
 TEST(PathCache, TheCheckTracesEveryReusedPathAgain) {
     SceneLab lab(studio());
-    MeasureOptions o = sequenceOptions(true, 32);
+    const MeasureOptions o = sequenceOptions(true, 32);
     PathCache cache(lab.scene);
+    CheckedPaths checkedCache(cache);
     Layout committed = initialLayout(lab.scene);
     commitFirst(lab, o, cache, committed);
-    o.checkCache = true;
     Rng rng(31);
     uint64_t checked = 0;
     for (int m = 0; m < 8; ++m) {
@@ -253,21 +254,18 @@ TEST(PathCache, TheCheckTracesEveryReusedPathAgain) {
         randomMove(lab.scene, proposed, rng);
         lab.rt->setLayout(proposed);
         lab.tracer->updateLayout();
-        const MeasureResult r = measureSamplers(*lab.tracer, o, &cache);
-        EXPECT_TRUE(r.cacheCheck.on);
-        EXPECT_EQ(r.cacheCheck.checked, r.reusedPaths);
-        EXPECT_EQ(r.cacheCheck.differing, 0u);
+        const MeasureResult r = measureSamplers(*lab.tracer, o, &checkedCache);
+        const CacheCheck found = checkedCache.found();
+        EXPECT_TRUE(found.on);
+        EXPECT_EQ(found.checked, r.reusedPaths);
+        EXPECT_EQ(found.differing, 0u);
         FromScratch fresh(lab.scene, proposed, &*lab.daylight);
-        MeasureOptions plain = o;
-        plain.checkCache = false;
-        expectSame(r, measureSamplers(*fresh.tracer, plain), "checked, move " + std::to_string(m));
-        checked += r.cacheCheck.checked;
+        expectSame(r, measureSamplers(*fresh.tracer, o), "checked, move " + std::to_string(m));
+        checked += found.checked;
         cache.commit();
         committed = proposed;
     }
     EXPECT_GT(checked, 0u);
-    // Without a cache there is nothing to check.
-    EXPECT_FALSE(measureSamplers(*lab.tracer, o).cacheCheck.on);
 }
 
 // A cache whose paths are not what a fresh trace gives (here: kept by a tracer with
@@ -281,15 +279,16 @@ TEST(PathCache, TheCheckFindsPathsThatAFreshTraceGivesOtherwise) {
     const MeasureResult kept = measureSamplers(*lab.tracer, o, &cache);
     cache.commit();
     PathTracer other(*lab.rt, nullptr);
-    o.checkCache = true;
-    const MeasureResult r = measureSamplers(other, o, &cache);
+    CheckedPaths checkedCache(cache);
+    const MeasureResult r = measureSamplers(other, o, &checkedCache);
+    const CacheCheck found = checkedCache.found();
     EXPECT_EQ(r.reusedPaths, r.paths);
-    EXPECT_EQ(r.cacheCheck.checked, r.paths);
-    EXPECT_GT(r.cacheCheck.differing, 0u);
-    EXPECT_LE(r.cacheCheck.differing, r.cacheCheck.checked);  // every path here meets daylight (the covered points are not traced)
-    ASSERT_EQ(r.cacheCheck.first.size(), std::min<size_t>(CacheCheck::kKept, r.cacheCheck.differing));
+    EXPECT_EQ(found.checked, r.paths);
+    EXPECT_GT(found.differing, 0u);
+    EXPECT_LE(found.differing, found.checked);  // every path here meets daylight (the covered points are not traced)
+    ASSERT_EQ(found.first.size(), std::min<size_t>(CacheCheck::kKept, found.differing));
     const Bounds3 room({-0.01, -0.01, -0.01}, {6.01, 4.01, 3.01});
-    for (const CacheDifference& d : r.cacheCheck.first) {
+    for (const CacheDifference& d : found.first) {
         ASSERT_TRUE(d.where.has_value());  // no shadow rays towards the sun and sky
         EXPECT_TRUE(room.contains(*d.where)) << d.where->x << " " << d.where->y << " " << d.where->z;
         EXPECT_GE(d.sampler, 0);
