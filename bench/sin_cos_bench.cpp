@@ -1,6 +1,6 @@
 // core/sin_cos.h against libm's sine and cosine, on the same random angles of a few
 // turns (the samplers' range): the figure behind its use in the warps
-// (docs/performance.md, "Exterior sky samples, and sine and cosine without libm").
+// (docs/performance.md, "Sine and cosine without libm").
 #include <benchmark/benchmark.h>
 
 #include <cmath>
