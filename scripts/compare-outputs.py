@@ -13,7 +13,7 @@ bit, times aside (keys that hold wall-clock seconds, and trace.csv's time column
 it has one). Exit status 0 when every file agrees, 1 with the first difference of
 each file that does not.
 
-    python3 scripts/compare-outputs.py BEFORE_BINARY AFTER_BINARY [--scenes GLOB ...]
+    python3 scripts/compare-outputs.py BEFORE_BINARY AFTER_BINARY [--scenes GLOB ...] [--ignore KEY ...]
 
 Build BEFORE_BINARY from the commit before the change (a git worktree and its own
 build folder) and AFTER_BINARY from the change.
@@ -106,7 +106,7 @@ def outputs(binary, scene, work, args):
         return got
     for name in ("layout.json", "report.json"):
         with open(os.path.join(out, name)) as f:
-            got[name] = strip_times(json.load(f))
+            got[name] = {k: v for k, v in strip_times(json.load(f)).items() if k not in args.ignore}
     got["trace.csv"] = read_csv_without_times(os.path.join(out, "trace.csv"))
     return got
 
@@ -131,6 +131,8 @@ def main():
     parser.add_argument("before", help="luxplan binary of the commit before the change")
     parser.add_argument("after", help="luxplan binary of the change")
     parser.add_argument("--scenes", nargs="*", help="scene files (default: every bundled scene)")
+    parser.add_argument("--ignore", action="append", default=[], metavar="KEY",
+                        help="a top-level key of report.json the change means to alter (repeatable)")
     parser.add_argument("--seed", type=int, default=7)
     parser.add_argument("--threads", type=int, default=2)
     parser.add_argument("--paths", type=int, default=64, help="measure's paths per point")

@@ -145,13 +145,20 @@ void printCacheCheck(const Scene& scene, const CacheCheck& check) {
     }
 }
 
-// The search's options: the scene's settings, then the command line's.
-OptimizerOptions searchOptions(const OptimizeArgs& args, const Scene& original) {
-    OptimizerOptions options = optimizerOptions(original);
-    if (args.iterations >= 0) options.iterations = args.iterations;
-    if (args.seed) options.seed = *args.seed;
-    if (args.suggestions > 0) options.suggestions = args.suggestions;
-    return options;
+// The settings the run uses: the scene's (--set over them), then the command line's,
+// the report's and the selection's counts not below the search's, and the optional ones
+// at optimize's defaults (report.json's "settings").
+OptimizerSettings runSettings(const OptimizeArgs& args, const OptimizerSettings& scene) {
+    OptimizerSettings s = scene;
+    if (args.iterations >= 0) s.iterations = args.iterations;
+    if (args.seed) s.seed = *args.seed;
+    if (args.suggestions > 0) s.suggestions = args.suggestions;
+    if (args.paths > 0) s.pathsPerPoint = s.searchPathsPerPoint = args.paths;
+    s.reportPathsPerPoint = std::max(s.reportPathsPerPoint, s.searchPathsPerPoint);
+    s.selectionPathsPerPoint = std::max(s.selectionPathsPerPoint, s.searchPathsPerPoint);
+    s.sunPatches = s.sunPatches.value_or(SunPatchUse::Report);
+    s.lightRoulette = s.lightRoulette.value_or(kSearchLightRoulette);
+    return s;
 }
 
 // The path-traced lighting term (null without samplers): the search's measurements
@@ -170,7 +177,7 @@ std::unique_ptr<PathTracedLighting> makeLighting(const Scene& scene, const Dayli
     lighting->setIncremental(!tracingSettings.fullEvaluation);
     lighting->setCheckCache(tracingSettings.checkCache);
     lighting->setFreshNoise(tracingSettings.freshNoise);
-    lighting->setLightRoulette(tracingSettings.lightRoulette.value_or(kSearchLightRoulette));
+    lighting->setLightRoulette(*tracingSettings.lightRoulette);
     return lighting;
 }
 
@@ -269,13 +276,13 @@ void printSummary(const Scene& scene, const OptimizerResult& result, int reportP
 }
 
 // The pictures, scene.glb, report.html and report.pdf, said on stdout.
-void writePictures(const OptimizeArgs& args, const Scene& scene, const TracingSettings& tracingSettings, const Layout& start,
+void writePictures(const OptimizeArgs& args, const Scene& scene, const OptimizerSettings& settings, const Layout& start,
                    const OptimizerResult& result, const DaylightEnvironment* daylight) {
     OutputOptions pictures;
     pictures.seed = result.options.seed;
-    pictures.samplerPaths = scene.optimizer.reportPathsPerPoint;  // the start's too, as the result's
-    pictures.tracing.sunPatches = tracingSettings.samplesSunPatches(SunPatchUse::Report, false);
-    pictures.tracing.exteriorSun = tracingSettings.exteriorSun;
+    pictures.samplerPaths = settings.reportPathsPerPoint;  // the start's too, as the result's
+    pictures.tracing.sunPatches = settings.samplesSunPatches(SunPatchUse::Report, false);
+    pictures.tracing.exteriorSun = settings.exteriorSun;
     pictures.initialLabel = "start";
     // A (second) stop signal from now on skips the pictures still to make.
     interrupted.store(false);
@@ -302,20 +309,17 @@ int runOptimize(const OptimizeArgs& args) {
     // From the start, so that a signal during loading still ends in written outputs.
     StopSignals stopSignals;
     const Scene original = loadSceneWithSettings(args);
-    const TracingSettings& tracingSettings = original.optimizer;
+    const OptimizerSettings settings = runSettings(args, original.optimizer);
+    const TracingSettings& tracingSettings = settings;
     printSceneWarnings(original);
     checkOutputFolder(args.out);
-    {
-        // Before the daylight's bake: each layout's measurement and the report's.
-        const int searchPaths = args.paths > 0 ? args.paths : original.optimizer.searchPathsPerPoint;
-        warnLargeMeasurement(original, searchPaths, "the search measures each layout at");
-        warnLargeMeasurement(original, std::max(original.optimizer.reportPathsPerPoint, searchPaths),
-                             "the report measures the final layout at");
-    }
+    // Before the daylight's bake: each layout's measurement and the report's.
+    warnLargeMeasurement(original, settings.searchPathsPerPoint, "the search measures each layout at");
+    warnLargeMeasurement(original, settings.reportPathsPerPoint, "the report measures the final layout at");
     std::optional<DaylightEnvironment> daylight;
     if (original.daylight) daylight = bakeDaylight(*original.daylight, original.site, args.quiet);
 
-    OptimizerOptions options = searchOptions(args, original);
+    OptimizerOptions options = optimizerOptions(settings);
     // Flat: the same furniture without groups, kept together by cohesion constraints.
     std::optional<FlatScene> flattened;
     if (options.hierarchy == Hierarchy::Flat) {
@@ -334,7 +338,7 @@ int runOptimize(const OptimizeArgs& args) {
     }
 
     MeasureOptions measure;
-    measure.pathsPerPoint = args.paths > 0 ? args.paths : scene.optimizer.searchPathsPerPoint;
+    measure.pathsPerPoint = settings.searchPathsPerPoint;
     warnFewPaths(original, measure.pathsPerPoint, args.paths > 0);
     measure.seed = options.seed;
     measure.adaptive = !tracingSettings.fixedPaths;
@@ -343,8 +347,8 @@ int runOptimize(const OptimizeArgs& args) {
     // The report's count for the result (measure's default: report.json and `measure
     // --layout --seed` give one number); the selection's, far fewer, for the confirmations
     // and the candidates' re-measures (issue 58). Neither below the search's.
-    const int reportPaths = std::max(scene.optimizer.reportPathsPerPoint, measure.pathsPerPoint);
-    const int selectionPaths = std::max(scene.optimizer.selectionPathsPerPoint, measure.pathsPerPoint);
+    const int reportPaths = settings.reportPathsPerPoint;
+    const int selectionPaths = settings.selectionPathsPerPoint;
     std::unique_ptr<PathTracedLighting> lighting =
         makeLighting(scene, daylight ? &*daylight : nullptr, tracingSettings, measure, reportPaths, selectionPaths);
 
@@ -353,12 +357,12 @@ int runOptimize(const OptimizeArgs& args) {
     Layout start;
     OptimizerResult result = search(optimizer, args.quiet, start);
 
-    writeOptimizerOutputs(args.out, scene, result);
+    writeOptimizerOutputs(args.out, scene, result, io::settingsJson(settings));
     if (!result.snapshots.empty()) writeSnapshots(std::filesystem::path(args.out) / "snapshots.json", scene, result);
     writeLayouts(args.out, original, scene, flattened, result);
     printSummary(scene, result, reportPaths);
     std::cout << "\n  wrote " << args.out << "/layout.json, report.json, trace.csv\n";
-    if (!args.noPictures) writePictures(args, scene, tracingSettings, start, result, daylight ? &*daylight : nullptr);
+    if (!args.noPictures) writePictures(args, scene, settings, start, result, daylight ? &*daylight : nullptr);
     if (lighting)
         std::cout << "  lighting: " << lighting->evaluations() << " evaluations, "
                   << lighting->rays().closest + lighting->rays().shadow << " rays, " << lighting->tracedPaths()

@@ -273,7 +273,18 @@ TEST(Cli, OptimizeFlatRunsTheGrouplessBaselineAndItsLayoutsReadBack) {
     EXPECT_NE(r.output.find("flat: 3 objects without groups, 4 cohesion constraints"), std::string::npos) << r.output;
     auto report = nlohmann::json::parse(std::ifstream(out / "report.json"));
     ASSERT_TRUE(report["feasible"].get<bool>()) << report.dump(1);
-    EXPECT_EQ(report["settings"]["hierarchy"], "flat") << report.dump(1);
+    // The settings as the run used them: the file's, --set's, and optimize's defaults
+    // for the optional ones.
+    const nlohmann::json& settings = report["settings"];
+    EXPECT_EQ(settings["flat"], true) << settings.dump(1);
+    EXPECT_EQ(settings["hierarchy"], "hierarchical");
+    EXPECT_EQ(settings["seed"], 4);
+    EXPECT_EQ(settings["iterations"], 300);
+    EXPECT_EQ(settings["paths_per_point"], 8);
+    EXPECT_EQ(settings["report_paths_per_point"], 64);
+    EXPECT_EQ(settings["selection_paths_per_point"], 64);  // 1000, at most the report's
+    EXPECT_EQ(settings["sun_patches"], "report");
+    EXPECT_EQ(settings["light_roulette"], 0.2);
     int cohesion = 0;
     for (const auto& c : report["constraints"])
         cohesion += c["json_path"].get<std::string>().find("(cohesion with set.table)") != std::string::npos;

@@ -123,6 +123,33 @@ TEST(SettingsTable, EveryKeyHasARowAndTheTestSetsEveryOne) {
     EXPECT_EQ(tested, keys);
 }
 
+// report.json's "settings": every key written back as the file holds it, so that the
+// object read again gives the same settings.
+TEST(SettingsTable, WritesEveryKeyBackAsTheFileHoldsIt) {
+    json scene = minimalScene();
+    scene["optimizer"] = everyKey();
+    const OptimizerSettings s = load(scene).optimizer;
+    EXPECT_EQ(io::settingsJson(s), everyKey());
+
+    scene["optimizer"] = {{"temperature", 0.05}};  // a constant temperature: a number
+    const OptimizerSettings constant = load(scene).optimizer;
+    EXPECT_EQ(io::settingsJson(constant)["temperature"], 0.05);
+    scene["optimizer"] = io::settingsJson(constant);
+    EXPECT_EQ(io::settingsJson(load(scene).optimizer), io::settingsJson(constant));
+}
+
+TEST(SettingsTable, WritesTheDefaultsWithOptionalsLeftToTheCommand) {
+    const json defaults = io::settingsJson(OptimizerSettings{});
+    EXPECT_EQ(defaults["iterations"], 10000);
+    EXPECT_EQ(defaults["paths_per_point"], 64);
+    EXPECT_EQ(defaults["report_paths_per_point"], kDefaultReportPaths);
+    EXPECT_EQ(defaults["temperature"], json({{"start", 0.1}, {"end", 0.001}}));
+    EXPECT_EQ(defaults["hierarchy"], "hierarchical");
+    EXPECT_FALSE(defaults.contains("sun_patches"));  // each command's own default
+    EXPECT_FALSE(defaults.contains("light_roulette"));
+    EXPECT_EQ(defaults.size(), io::settingKeys().size() - 2);
+}
+
 TEST(SettingsTable, EveryKeyThroughTheSceneFile) {
     json scene = minimalScene();
     scene["optimizer"] = everyKey();

@@ -38,7 +38,7 @@ TEST_F(OptimizerTest, FindsAFeasibleLayoutAndReportsConsistentCosts) {
     ASSERT_TRUE(r.feasible);
     EXPECT_FALSE(r.bestEvaluation.rejected);
     EXPECT_LE(r.bestEvaluation.cost, r.startEvaluation.cost);
-    EXPECT_LT(r.bestEvaluation.cost, 0.1) << reportJson(scene, r);
+    EXPECT_LT(r.bestEvaluation.cost, 0.1) << reportJson(scene, r, RunSettings::object());
     // The best layout's costs are what a fresh evaluation gives.
     auto world = worldTransforms(scene, r.best);
     GeometryResult g = GeometryEvaluator(scene).evaluate(world);
@@ -95,7 +95,7 @@ TEST_F(OptimizerTest, NoLightingHookMeansLZero) {
     EXPECT_FALSE(r.bestEvaluation.lightingEvaluated);
     EXPECT_DOUBLE_EQ(r.bestEvaluation.cost, 0.5 * r.bestEvaluation.geometry);
     // report.json's report_measurement is there for scripts, null: no light was measured.
-    const nlohmann::json j = nlohmann::json::parse(reportJson(scene, r));
+    const nlohmann::json j = nlohmann::json::parse(reportJson(scene, r, RunSettings::object()));
     EXPECT_TRUE(j["report_measurement"]["seed"].is_null()) << j["report_measurement"];
     EXPECT_TRUE(j["report_measurement"]["paths_per_point"].is_null());
     EXPECT_TRUE(j["L"].is_null());  // the scene has samplers, but nothing measured them
@@ -346,7 +346,7 @@ TEST(OptimizerStart, AnInfeasibleResultHasNoCostButItsLight) {
     o.startAttempts = 3;
     OptimizerResult r = Optimizer(s, o, &light).run();
     ASSERT_FALSE(r.feasible);
-    const nlohmann::json j = nlohmann::json::parse(reportJson(s, r));
+    const nlohmann::json j = nlohmann::json::parse(reportJson(s, r, RunSettings::object()));
     EXPECT_TRUE(j["C"].is_null()) << j["C"];
     EXPECT_TRUE(j["G"].is_null()) << j["G"];
     EXPECT_TRUE(j["C_std_error"].is_null());
@@ -366,7 +366,8 @@ TEST_F(OptimizerTest, WritesReportAndTrace) {
     o.iterations = 500;
     OptimizerResult r = Optimizer(scene, o, &light).run();
     auto out = dir.path() / "out";
-    writeOptimizerOutputs(out, scene, r);
+    const RunSettings settings = {{"seed", 3}, {"polish_share", 0.2}};  // as the command passes them
+    writeOptimizerOutputs(out, scene, r, settings);
 
     auto report = nlohmann::json::parse(std::ifstream(out / "report.json"));
     EXPECT_EQ(report["scene"], "office");
@@ -407,7 +408,8 @@ TEST_F(OptimizerTest, WritesReportAndTrace) {
     } else {
         EXPECT_EQ(report["levels"].size(), 2u);
     }
-    EXPECT_EQ(report["settings"]["seed"], 3);
+    EXPECT_EQ(report["settings"], settings);
+    EXPECT_EQ(report["polish_from"], r.polishFrom);
 
     std::ifstream trace(out / "trace.csv");
     std::string header, line;

@@ -16,7 +16,7 @@ namespace {
 using json::Fields;
 using json::Range;
 using S = OptimizerSettings;
-using Read = std::function<void(const Fields&, S&)>;
+using json::Json;
 
 const EnumNames<bool>& onOffNames() {
     static const EnumNames<bool> names{{{true, "on"}, {false, "off"}}};
@@ -39,30 +39,46 @@ const EnumNames<bool>& startNames() {
     return names;
 }
 
-// The rows' readers by type: each sets its field only when the key is present and valid.
-Read readBool(const char* key, bool S::*field) {
-    return [key, field](const Fields& f, S& s) {
-        if (auto v = f.boolean(key)) s.*field = *v;
-    };
+// The rows' access by type: each reads its field only when the key is present and
+// valid, and writes it as the file holds it.
+SettingAccess boolKey(const char* key, bool S::*field) {
+    return {[key, field](const Fields& f, S& s) {
+                if (auto v = f.boolean(key)) s.*field = *v;
+            },
+            [field](const S& s) { return Json(s.*field); }};
 }
-Read readInt(const char* key, int S::*field, Range range) {
-    return [key, field, range](const Fields& f, S& s) {
-        if (auto v = f.integer(key, range)) s.*field = *v;
-    };
+SettingAccess intKey(const char* key, int S::*field, Range range) {
+    return {[key, field, range](const Fields& f, S& s) {
+                if (auto v = f.integer(key, range)) s.*field = *v;
+            },
+            [field](const S& s) { return Json(s.*field); }};
 }
-Read readNumber(const char* key, double S::*field, Range range) {
-    return [key, field, range](const Fields& f, S& s) {
-        if (auto v = f.number(key, range)) s.*field = *v;
-    };
+SettingAccess numberKey(const char* key, double S::*field, Range range) {
+    return {[key, field, range](const Fields& f, S& s) {
+                if (auto v = f.number(key, range)) s.*field = *v;
+            },
+            [field](const S& s) { return Json(s.*field); }};
 }
-template <class T, class Field>  // both given: the field may be a base's member
-Read readChoice(const char* key, Field S::*field, const EnumNames<T>& (*names)()) {
-    return [key, field, names](const Fields& f, S& s) {
-        auto text = f.string(key);
-        if (!text) return;
-        if (auto v = names().parse(*text)) s.*field = *v;
-        else f.error(key, names().unknown(key, *text));
-    };
+template <class T>
+SettingAccess choiceKey(const char* key, T S::*field, const EnumNames<T>& (*names)()) {
+    return {[key, field, names](const Fields& f, S& s) {
+                auto text = f.string(key);
+                if (!text) return;
+                if (auto v = names().parse(*text)) s.*field = *v;
+                else f.error(key, names().unknown(key, *text));
+            },
+            [field, names](const S& s) { return Json(names().name(s.*field)); }};
+}
+// An optional choice: unset, the command's default (written as null).
+template <class T>
+SettingAccess optionalChoiceKey(const char* key, std::optional<T> S::*field, const EnumNames<T>& (*names)()) {
+    return {[key, field, names](const Fields& f, S& s) {
+                auto text = f.string(key);
+                if (!text) return;
+                if (auto v = names().parse(*text)) s.*field = *v;
+                else f.error(key, names().unknown(key, *text));
+            },
+            [field, names](const S& s) { return (s.*field) ? Json(names().name(*(s.*field))) : Json(nullptr); }};
 }
 
 // paths_per_point sets the search's count, and the report's and the selection's
@@ -97,6 +113,11 @@ void readTemperature(const Fields& f, S& s) {
     }
 }
 
+Json writeTemperature(const S& s) {
+    if (s.constantTemperature) return s.temperatureStart;
+    return Json{{"start", s.temperatureStart}, {"end", s.temperatureEnd}};
+}
+
 // Settings that cannot hold together, each pair named by its keys.
 struct Exclusion {
     const char *a, *b;
@@ -118,109 +139,118 @@ const std::vector<SettingKey>& settingKeys() {
     static const std::vector<SettingKey> table = {
         // The search.
         {"iterations", "whole number", rangeText(Range::atLeast(0)), "10000", "optimize",
-         "proposals, both levels together (optimize --iterations)", readInt("iterations", &S::iterations, Range::atLeast(0))},
+         "proposals, both levels together (optimize --iterations)", intKey("iterations", &S::iterations, Range::atLeast(0))},
         {"seed", "whole number", "[0, 2^64 - 1]", "1", "measure, optimize, render, report",
          "the random seed (--seed); the same scene, seed and thread count give the same result",
-         [](const Fields& f, S& s) {
-             if (auto v = f.unsignedInteger("seed")) s.seed = *v;
-         }},
+         {[](const Fields& f, S& s) {
+              if (auto v = f.unsignedInteger("seed")) s.seed = *v;
+          },
+          [](const S& s) { return Json(s.seed); }}},
         {"paths_per_point", "whole number", rangeText(Range::atLeast(1)), "64",
          "optimize", "paths per sampler point in the search (optimize --paths); given, the report's and the selection's defaults are "
          "not below it",
-         readPaths},
+         {readPaths, [](const S& s) { return Json(s.searchPathsPerPoint); }}},
         {"report_paths_per_point", "whole number", rangeText(Range::atLeast(1)), "32000, or paths_per_point where more",
          "measure, optimize, render, report", "paths per point of the result's report, measure, render and report (their --paths)",
-         readReportPaths},
+         {readReportPaths, [](const S& s) { return Json(s.reportPathsPerPoint); }}},
         {"selection_paths_per_point", "whole number", rangeText(Range::atLeast(1)),
          "1000 (or paths_per_point where more), at most report_paths_per_point", "optimize",
          "paths per point of the search's independent measurements: a zero cost's confirmation, the candidates' re-measures",
-         readInt("selection_paths_per_point", &S::selectionPathsPerPoint, Range::atLeast(1))},
+         intKey("selection_paths_per_point", &S::selectionPathsPerPoint, Range::atLeast(1))},
         {"inner_iterations", "whole number", rangeText(Range::closed(0, 1000)), "0", "optimize",
          "object-level proposals per group-level one; 0: by the levels' degrees of freedom",
-         readInt("inner_iterations", &S::innerIterations, Range::closed(0, 1000))},
+         intKey("inner_iterations", &S::innerIterations, Range::closed(0, 1000))},
         {"nested", "true or false", "", "false", "optimize",
-         "object-level proposals move the members of the group just proposed", readBool("nested", &S::nested)},
+         "object-level proposals move the members of the group just proposed", boolKey("nested", &S::nested)},
         {"polish_share", "number", rangeText(Range::closed(0, 0.9)), "0.2", "optimize",
          "the run's last share: a zero-temperature polish of the best layout; 0: none",
-         readNumber("polish_share", &S::polishShare, Range::closed(0, 0.9))},
+         numberKey("polish_share", &S::polishShare, Range::closed(0, 0.9))},
         {"guided", "true or false", "", "true", "optimize",
-         "the guided move: placements drawn from a map of where each entity's targets held", readBool("guided", &S::guided)},
+         "the guided move: placements drawn from a map of where each entity's targets held", boolKey("guided", &S::guided)},
         {"suggestions", "whole number", rangeText(Range::closed(0, 50)), "0", "optimize",
          "distinct layouts written beside the result (optimize --suggestions)",
-         readInt("suggestions", &S::suggestions, Range::closed(0, 50))},
+         intKey("suggestions", &S::suggestions, Range::closed(0, 50))},
         {"margin", "number", rangeText(Range::closed(0, 5)), "2", "optimize",
          "the search's margin inside every lighting band, in standard errors of its estimate",
-         readNumber("margin", &S::margin, Range::closed(0, 5))},
+         numberKey("margin", &S::margin, Range::closed(0, 5))},
         {"adaptive_share", "true or false", "", "true", "optimize",
          "the object level's share of proposals follows what each level's proposals yield",
-         readBool("adaptive_share", &S::adaptiveShare)},
+         boolKey("adaptive_share", &S::adaptiveShare)},
         {"hierarchy", "hierarchical or flat", "", "hierarchical", "optimize",
          "flat: no groups, every object on its own, groups kept by cohesion constraints (the paper's Figure 6)",
-         readChoice<bool, bool>("hierarchy", &S::flat, hierarchyNames)},
+         choiceKey<bool>("hierarchy", &S::flat, hierarchyNames)},
         {"start", "uniform or scene", "", "uniform", "optimize",
          "the start layout: uniform draws from the regions, or the scene's placement",
-         readChoice<bool, bool>("start", &S::startFromScene, startNames)},
+         choiceKey<bool>("start", &S::startFromScene, startNames)},
         {"temperature", "number > 0, or {\"start\", \"end\"}", "", "{\"start\": 0.1, \"end\": 0.001}", "optimize",
          "a number: a constant temperature (a plain Metropolis chain); an object: geometric cooling from start to end",
-         readTemperature},
+         {readTemperature, writeTemperature}},
         // How light is traced, and the search's experiments.
         {"sampling", "sobol or random", "", "sobol", "measure, optimize",
          "the paths' first vertices: scrambled low-discrepancy numbers, or PCG only",
-         readChoice<bool, bool>("sampling", &S::lowDiscrepancy, samplingNames)},
+         choiceKey<bool>("sampling", &S::lowDiscrepancy, samplingNames)},
         {"sun_patches", "on, off or report", "", "measure, render, report: on; optimize: report", "measure, optimize, render, report",
          "sample the room's sunlit patches at every surface a path meets: everywhere, nowhere, or all but the search "
          "(the same values, less noise where sunlight bounces)",
-         readChoice<SunPatchUse, std::optional<SunPatchUse>>("sun_patches", &S::sunPatches, sunPatchesNames)},
+         optionalChoiceKey<SunPatchUse>("sun_patches", &S::sunPatches, sunPatchesNames)},
         {"exterior_sun", "on or off", "", "on", "measure, optimize, render, report",
          "follow the sky's samples through the openings to sunlit surfaces outside and take the sun's and sky's light there "
          "(the same values either way)",
-         readChoice<bool, bool>("exterior_sun", &S::exteriorSun, onOffNames)},
+         choiceKey<bool>("exterior_sun", &S::exteriorSun, onOffNames)},
         {"light_roulette", "number", rangeText(Range::closed(0, kMostLightRoulette)), "measure: 0; optimize: 0.2", "measure, optimize",
          "a light sample worth less than this share of its sampler's variance per path is traced by roulette (optimize: in the "
          "search only); 0: every sample. Unbiased",
-         [](const Fields& f, S& s) {
-             if (auto v = f.number("light_roulette", Range::closed(0, kMostLightRoulette))) s.lightRoulette = *v;
-         }},
+         {[](const Fields& f, S& s) {
+              if (auto v = f.number("light_roulette", Range::closed(0, kMostLightRoulette))) s.lightRoulette = *v;
+          },
+          [](const S& s) { return s.lightRoulette ? Json(*s.lightRoulette) : Json(nullptr); }}},
         {"adaptive", "true or false", "", "false", "measure",
          "each sampler stops once its value +- 3 standard errors lies in one linear piece of its penalty (--paths the most)",
-         readBool("adaptive", &S::adaptive)},
+         boolKey("adaptive", &S::adaptive)},
         {"fixed_paths", "true or false", "", "false", "optimize",
          "the search traces exactly paths_per_point for every sampler (default: a sampler stops once its penalty is settled)",
-         readBool("fixed_paths", &S::fixedPaths)},
+         boolKey("fixed_paths", &S::fixedPaths)},
         {"full_evaluation", "true or false", "", "false", "optimize",
          "trace every path of every evaluated layout (default: only the paths a move can change)",
-         readBool("full_evaluation", &S::fullEvaluation)},
+         boolKey("full_evaluation", &S::fullEvaluation)},
         {"check_cache", "true or false", "", "false", "optimize",
          "trace every path the path cache reads back again and compare them bit for bit (report.json's path_cache_check)",
-         readBool("check_cache", &S::checkCache)},
+         boolKey("check_cache", &S::checkCache)},
         {"fresh_noise", "true or false", "", "false", "optimize",
          "draw every lighting estimate anew and test with the penalty method (default: common random numbers)",
-         readBool("fresh_noise", &S::freshNoise)},
+         boolKey("fresh_noise", &S::freshNoise)},
         {"noise_blind", "true or false", "", "false", "optimize",
          "the paper's plain Metropolis test on the estimates, the temperature free to fall below their noise",
-         readBool("noise_blind", &S::noiseBlind)},
+         boolKey("noise_blind", &S::noiseBlind)},
         {"single_test", "true or false", "", "false", "optimize",
          "one Metropolis test after lighting every proposal (default: the rules' change first, delayed acceptance)",
-         readBool("single_test", &S::singleTest)},
+         boolKey("single_test", &S::singleTest)},
         {"cycle", "true or false", "", "false", "optimize",
          "object-level proposals move any group's members (the paper's plain cycle: nested false, said)",
-         readBool("cycle", &S::cycle)},
+         boolKey("cycle", &S::cycle)},
         {"flat", "true or false", "", "false", "measure, optimize",
          "measure: the flattened scene (optimize's layout_flat.json); optimize: hierarchy flat",
-         readBool("flat", &S::flatScene)},
+         boolKey("flat", &S::flatScene)},
         {"snapshots", "whole number", rangeText(Range::closed(0, 1000)), "0", "optimize",
          "snapshots.json: the best layout at this many checkpoints (iteration ceil(iterations (k/N)^2)); 0: none",
-         readInt("snapshots", &S::snapshots, Range::closed(0, 1000))},
+         intKey("snapshots", &S::snapshots, Range::closed(0, 1000))},
     };
     return table;
 }
 
 void readSettings(const Fields& f, OptimizerSettings& s) {
     if (!f.valid()) return;
-    for (const SettingKey& row : settingKeys()) row.read(f, s);
+    for (const SettingKey& row : settingKeys()) row.access.read(f, s);
     for (const Exclusion& e : kExclusions)
         if (s.*e.fa && s.*e.fb)
             f.error(e.b, "\"" + std::string(e.a) + "\" and \"" + e.b + "\" exclude each other (" + e.why + ")");
+}
+
+Json settingsJson(const OptimizerSettings& s) {
+    Json object = Json::object();
+    for (const SettingKey& row : settingKeys())
+        if (Json v = row.access.write(s); !v.is_null()) object[row.key] = std::move(v);
+    return object;
 }
 
 SettingOverride parseSetting(const std::string& text) {

@@ -16,6 +16,16 @@
 
 namespace luxplan::io {
 
+// How a row reads its key into the settings and writes it back as the file would hold it.
+struct SettingAccess {
+    // Reads the key from the object (when present) into the settings, reporting a bad
+    // value through the object; rows run in table order (a count's default may follow
+    // an earlier key's value).
+    std::function<void(const json::Fields&, OptimizerSettings&)> read;
+    // The key's value in the settings (null: an optional left to the command's default).
+    std::function<json::Json(const OptimizerSettings&)> write;
+};
+
 struct SettingKey {
     const char* key;
     const char* type;      // "whole number", "number", "true or false", the choices ("on, off") ...
@@ -23,10 +33,7 @@ struct SettingKey {
     const char* fallback;  // the default, per command where they differ
     const char* commands;  // the commands that read it
     const char* doc;       // one line
-    // Reads the key from the object (when present) into the settings, reporting a bad
-    // value through the object; rows run in table order (a count's default may follow
-    // an earlier key's value).
-    std::function<void(const json::Fields&, OptimizerSettings&)> read;
+    SettingAccess access;
 };
 
 // Every key, in the order the object is read.
@@ -34,6 +41,11 @@ const std::vector<SettingKey>& settingKeys();
 
 // Reads the "optimizer" object through the table, then the keys that exclude each other.
 void readSettings(const json::Fields& f, OptimizerSettings& s);
+
+// Every key's value in these settings as the scene file's "optimizer" object would
+// hold it (an optional left to the command's default is absent): read back through
+// readSettings it gives the same settings (report.json's "settings").
+json::Json settingsJson(const OptimizerSettings& s);
 
 // One `--set KEY=VALUE`: the value as the scene file would hold it (true/false, a
 // number, a JSON object, else a string).

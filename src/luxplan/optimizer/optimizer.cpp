@@ -47,9 +47,8 @@ double Schedule::temperature(int iteration, int iterations) const {
     return start * std::pow(end / start, t);
 }
 
-OptimizerOptions optimizerOptions(const Scene& scene) {
+OptimizerOptions optimizerOptions(const OptimizerSettings& s) {
     OptimizerOptions o;
-    const OptimizerSettings& s = scene.optimizer;
     o.iterations = s.iterations;
     o.seed = s.seed;
     o.hierarchy = s.flat || s.flatScene ? Hierarchy::Flat : Hierarchy::Hierarchical;

@@ -139,7 +139,8 @@ struct OptimizerOptions {
 
 // The search's settings from the scene's "optimizer" object (with any --set over it:
 // scene/settings.h); the rest at their defaults.
-OptimizerOptions optimizerOptions(const Scene& scene);
+OptimizerOptions optimizerOptions(const OptimizerSettings& settings);
+inline OptimizerOptions optimizerOptions(const Scene& scene) { return optimizerOptions(scene.optimizer); }
 
 struct MoveStats {
     int64_t proposed = 0;

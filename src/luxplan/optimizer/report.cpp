@@ -98,7 +98,7 @@ std::string GoalCount::sentence() const {
     return s + ", " + std::to_string(rulesHeld) + " of " + std::to_string(rules) + " rules held";
 }
 
-std::string reportJson(const Scene& scene, const OptimizerResult& r) {
+std::string reportJson(const Scene& scene, const OptimizerResult& r, const RunSettings& settings) {
     const Evaluation& best = r.bestEvaluation;
     Json j;
     j["scene"] = scene.name;
@@ -216,36 +216,16 @@ std::string reportJson(const Scene& scene, const OptimizerResult& r) {
     j["levels"] = levels;
     j.update(r.lightingNotes.run);
 
-    const OptimizerOptions& o = r.options;
-    j["settings"] = {
-        {"iterations", o.iterations},
-        {"seed", o.seed},
-        {"hierarchy", o.hierarchy == Hierarchy::Flat ? "flat" : "hierarchical"},
-        {"inner_iterations", o.innerIterations},
-        {"nested", o.focusInner},
-        {"schedule", {{"kind", o.schedule.kind == Schedule::Kind::Constant ? "constant" : "geometric"},
-                      {"start", o.schedule.start}, {"end", o.schedule.end}}},
-        {"start", o.start == StartFrom::Scene ? "scene" : "uniform"},
-        {"start_attempts", o.startAttempts},
-        {"sigma_fraction", o.moves.sigmaFraction},
-        {"jump_hastings", o.moves.jumpHastings},
-        {"stop_at_zero_cost", o.stopAtZeroCost},
-        {"noise_aware", o.noiseAware},
-        {"candidates", o.candidates},
-        {"step_scales", o.moves.stepScales},
-        {"polish_share", o.polishShare},
-        {"guided", o.guidedMoves},
-        {"margin", o.marginZ},
-        {"adaptive_share", o.adaptiveShare},
-        {"polish_from", r.polishFrom},
-        {"suggestions", o.suggestions}};
+    j["polish_from"] = r.polishFrom;
+    j["settings"] = settings;
     return j.dump(2) + "\n";
 }
 
 std::string suggestionFile(size_t index) { return "suggestions/" + std::to_string(index + 1) + ".json"; }
 
-void writeReport(const std::filesystem::path& file, const Scene& scene, const OptimizerResult& result) {
-    writeFileAtomically(file, reportJson(scene, result));
+void writeReport(const std::filesystem::path& file, const Scene& scene, const OptimizerResult& result,
+                 const RunSettings& settings) {
+    writeFileAtomically(file, reportJson(scene, result, settings));
 }
 
 void writeTrace(const std::filesystem::path& file, const OptimizerResult& result) {
@@ -260,11 +240,12 @@ void writeTrace(const std::filesystem::path& file, const OptimizerResult& result
     writeFileAtomically(file, out.str());
 }
 
-void writeOptimizerOutputs(const std::filesystem::path& folder, const Scene& scene, const OptimizerResult& result) {
+void writeOptimizerOutputs(const std::filesystem::path& folder, const Scene& scene, const OptimizerResult& result,
+                           const RunSettings& settings) {
     std::error_code ec;
     std::filesystem::create_directories(folder, ec);
     if (ec) throw IoError("cannot create " + folder.string() + ": " + ec.message());
-    writeReport(folder / "report.json", scene, result);
+    writeReport(folder / "report.json", scene, result, settings);
     writeTrace(folder / "trace.csv", result);
 }
 
