@@ -12,7 +12,7 @@
 namespace luxplan {
 namespace {
 
-std::string quoted(std::string_view s) {
+std::string inQuotes(std::string_view s) {
     std::string r(1, '"');  // appended piecewise: GCC 12 warns falsely (-Wrestrict) on "x" + string
     r.append(s).push_back('"');
     return r;
@@ -44,7 +44,8 @@ const EnumNames<SkyModelType>& skyModelNames() {
     static const EnumNames<SkyModelType> names{{{SkyModelType::Preetham, "preetham"},
                                                 {SkyModelType::CieOvercast, "cie_overcast"},
                                                 {SkyModelType::Uniform, "uniform"},
-                                                {SkyModelType::CieGeneral, "cie_general"}}};
+                                                {SkyModelType::CieGeneral, "cie_general"},
+                                                {SkyModelType::Perez, "perez"}}};
     return names;
 }
 
@@ -69,7 +70,7 @@ std::vector<Diagnostic> validateDaylight(const DaylightParams& p, const Site& si
     if (usesTurbidity(p)) range("/daylight/sky/turbidity", "turbidity", p.turbidity, kMinTurbidity, kMaxTurbidity);
     if (p.model == SkyModelType::CieOvercast || p.model == SkyModelType::CieGeneral) {
         if (!p.horizontalIlluminanceLx)
-            add("/daylight/sky", "sky model " + quoted(model) + " needs \"horizontal_illuminance_lx\"");
+            add("/daylight/sky", "sky model " + inQuotes(model) + " needs \"horizontal_illuminance_lx\"");
         else if (!(*p.horizontalIlluminanceLx > 0) || !std::isfinite(*p.horizontalIlluminanceLx))
             add("/daylight/sky/horizontal_illuminance_lx",
                 "horizontal_illuminance_lx " + formatNumber(*p.horizontalIlluminanceLx) + " must be > 0");
@@ -77,6 +78,8 @@ std::vector<Diagnostic> validateDaylight(const DaylightParams& p, const Site& si
             add("/daylight/sky/horizontal_illuminance_lx", "horizontal_illuminance_lx " + formatNumber(*p.horizontalIlluminanceLx) +
                                                                " exceeds the limit of " + formatNumber(limits::kMaxIlluminanceLx));
     }
+    if (p.model == SkyModelType::Perez && !p.weather)
+        add("/daylight/sky/model", "sky model \"perez\" needs \"weather\" (an EPW file): it builds each hour's sky from the file");
     if (p.model == SkyModelType::Uniform) {
         if (!p.luminanceNits)
             add("/daylight/sky", "sky model \"uniform\" needs \"luminance_nits\"");
@@ -102,11 +105,11 @@ std::vector<Diagnostic> validateDaylight(const DaylightParams& p, const Site& si
         if (p.from || p.to) add("/daylight/sun", "only one of \"sun\" override and \"from\"/\"to\"");
     }
     if (!needsSunPosition(p.model) && p.sunEnabled() && !(p.sunOverride && p.sunOverride->normalIlluminanceLx))
-        add("/daylight/sun", "sky model " + quoted(model) +
+        add("/daylight/sun", "sky model " + inQuotes(model) +
                                  " has no sun of its own; set \"sun\": false or give a fixed sun with "
                                  "\"normal_illuminance_lx\"");
     if (needsSunPosition(p.model) && !p.sunOverride && !p.from)
-        add("/daylight", "sky model " + quoted(model) +
+        add("/daylight", "sky model " + inQuotes(model) +
                              " needs a time (\"from\") or a fixed \"sun\" {\"altitude_deg\", \"azimuth_deg\"}");
     if (p.to && !p.from) add("/daylight/to", "\"to\" needs \"from\"");
     if (!(p.stepMinutes > 0) || !std::isfinite(p.stepMinutes))

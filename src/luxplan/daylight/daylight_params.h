@@ -2,10 +2,14 @@
 // model holds them; daylight.h validates them and bakes the environment.
 #pragma once
 
+#include <array>
+#include <memory>
 #include <optional>
+#include <vector>
 
 #include <luxplan/core/names.h>
 #include <luxplan/daylight/datetime.h>
+#include <luxplan/daylight/weather.h>
 
 namespace luxplan {
 
@@ -16,8 +20,9 @@ struct Site {
     double northDeg = 0;      // clockwise angle from true north to scene +y
 };
 
-// "sky.model": preetham | cie_overcast | uniform | cie_general.
-enum class SkyModelType { Preetham, CieOvercast, Uniform, CieGeneral };
+// "sky.model": preetham | cie_overcast | uniform | cie_general | perez (the all-weather
+// sky of each hour of a weather file).
+enum class SkyModelType { Preetham, CieOvercast, Uniform, CieGeneral, Perez };
 // The scene file's names of the sky models ("preetham", "cie_overcast", ...).
 const EnumNames<SkyModelType>& skyModelNames();
 
@@ -44,6 +49,16 @@ struct DaylightParams {
     std::optional<DateTime> from, to;                    // from, to (to unset: one instant)
     double stepMinutes = 15;                             // step_minutes, > 0
     double pressureMbar = 1010, temperatureC = 10;       // for refraction (standard atmosphere)
+    // "weather": the EPW file (read by the loader, path relative to the scene); its
+    // hours give the Perez sky and sun of each hour, and the site.
+    std::shared_ptr<const WeatherFile> weather;
+    // "occupied": the hours an annual measurement counts (local time: an hour counts
+    // when its middle lies in [hours[0], hours[1]) on one of `weekdays`, ISO 8601's
+    // 1 = Monday .. 7 = Sunday). Default: every hour.
+    struct Occupancy {
+        std::array<double, 2> hours{0, 24};
+        std::vector<int> weekdays{1, 2, 3, 4, 5, 6, 7};
+    } occupied;
 
     bool sunEnabled() const;
 };

@@ -220,6 +220,7 @@ private:
             case SkyModelType::Preetham: d.turbidity = s.number("turbidity", 3.0); break;
             case SkyModelType::CieOvercast: d.horizontalIlluminanceLx = s.number("horizontal_illuminance_lx"); break;
             case SkyModelType::Uniform: d.luminanceNits = s.number("luminance_nits"); break;
+            case SkyModelType::Perez: break;  // each hour's sky from the weather file
             case SkyModelType::CieGeneral:
                 d.horizontalIlluminanceLx = s.number("horizontal_illuminance_lx");
                 d.cieSkyType = s.integer("type").value_or(12);
