@@ -92,7 +92,10 @@ TEST(DaylightParams, EveryProblemIsReportedWithItsPath) {
     EXPECT_EQ(messages(longRange).size(), 1u);
     EXPECT_THROW(buildDaylight(longRange, kAthens, kSmall), SceneError);
     EXPECT_EQ(skyModelNames().parse("cie_overcast"), SkyModelType::CieOvercast);
-    EXPECT_FALSE(skyModelNames().parse("perez"));
+    EXPECT_FALSE(skyModelNames().parse("gendaylit"));
+    DaylightParams perez;
+    perez.model = SkyModelType::Perez;  // without a weather file
+    EXPECT_EQ(messages(perez), std::vector<std::string>{"/daylight/sky/model: sky model \"perez\" needs \"weather\" (an EPW file): it builds each hour's sky from the file"});
 }
 
 TEST(DaylightInstants, StepsFromFromToToInclusive) {
