@@ -63,6 +63,13 @@ Vec3 SkyMap::direction(int ix, int iy, double fx, double fz) const {
 }
 
 DaylightEnvironment::DaylightEnvironment(SkyMap sky, std::vector<SunDisk> suns, double groundReflectance)
+    : DaylightEnvironment(std::move(sky), std::move(suns), groundReflectance, nullptr) {}
+
+DaylightEnvironment::DaylightEnvironment(SkyMap sky, std::vector<SunDisk> suns, const Vec3& groundRadiance)
+    : DaylightEnvironment(std::move(sky), std::move(suns), 0.0, &groundRadiance) {}
+
+DaylightEnvironment::DaylightEnvironment(SkyMap sky, std::vector<SunDisk> suns, double groundReflectance,
+                                         const Vec3* groundRadiance)
     : map_(std::move(sky)), suns_(std::move(suns)), groundReflectance_(groundReflectance) {
     const int w = map_.width(), h = map_.height();
     if (w == 0) throw std::invalid_argument("DaylightEnvironment: empty sky map");
@@ -85,7 +92,7 @@ DaylightEnvironment::DaylightEnvironment(SkyMap sky, std::vector<SunDisk> suns, 
     sunHorizontal_ = luminance(sunE);
 
     // Ground: diffuse reflection of the light on the open horizontal plane.
-    ground_ = (skyE + sunE) * (groundReflectance_ * kInvPi);
+    ground_ = groundRadiance ? *groundRadiance : (skyE + sunE) * (groundReflectance_ * kInvPi);
     for (int iy = h / 2; iy < h; ++iy)
         for (int ix = 0; ix < w; ++ix) map_.at(ix, iy) = ground_;
     radiancePositive_ = maxComponent(ground_) > 0;

@@ -90,6 +90,9 @@ public:
     // the ground is a diffuse plane of `groundReflectance` lit by the sky and sun disks on the
     // open horizontal plane: L_ground = rho E_h / pi, coloured by the light that falls on it.
     DaylightEnvironment(SkyMap sky, std::vector<SunDisk> suns, double groundReflectance);
+    // ... with the ground a given radiance, whatever lights it: a basis of daylight
+    // coefficients, where the ground is a patch of its own (annual/daylight_coefficients.h).
+    DaylightEnvironment(SkyMap sky, std::vector<SunDisk> suns, const Vec3& groundRadiance);
 
     // ---- Sky and ground (everything except the sun disks) ----
     Vec3 Le(const Vec3& w) const;
@@ -169,6 +172,7 @@ private:
     // No two disks reach each other (steps apart by more than a disk): a direction drawn
     // in one disk lies in it alone, so sampleSun needs no lookup.
     bool sunDisksApart_ = false;
+    DaylightEnvironment(SkyMap sky, std::vector<SunDisk> suns, double groundReflectance, const Vec3* groundRadiance);
     void indexSunDisks();
     template <class F> void forEachSunDiskAt(const Vec3& w, F&& f) const;
     double skyIntegral_ = 0, sunIntegral_ = 0, skyHorizontal_ = 0, sunHorizontal_ = 0;

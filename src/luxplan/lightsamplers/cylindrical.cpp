@@ -37,6 +37,7 @@ public:
                 PathContributions& out) const override {
         out.add(tracer.sample(CylindricalSensor(p_), samples, stats, params));
     }
+    std::unique_ptr<Sensor> sensorOf(int /*item*/) const override { return std::make_unique<CylindricalSensor>(p_); }
     // A 15 cm circle around the point, as plans mark a cylindrical measurement.
     SamplerDrawing drawing() const override {
         SamplerDrawing d;

@@ -77,6 +77,8 @@ std::vector<char> PlacedSampler::stillNeeded(const ItemEstimates& items, double,
     return std::vector<char>(size_t(items.items()), kMorePaths);
 }
 
+std::unique_ptr<Sensor> PlacedSampler::sensorOf(int /*item*/) const { return nullptr; }
+
 Estimate PlacedSampler::combine(const ItemEstimates& items) const {
     Estimate e;
     int n = 0;

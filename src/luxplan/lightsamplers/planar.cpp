@@ -29,6 +29,9 @@ public:
                 PathContributions& out) const override {
         out.add(tracer.sample(CosineSensor(points_[size_t(item)], normal_), samples, stats, params));
     }
+    std::unique_ptr<Sensor> sensorOf(int item) const override {
+        return std::make_unique<CosineSensor>(points_[size_t(item)], normal_);
+    }
     std::vector<Vec3> coverageProbes(Vec3& normal) const override {
         normal = normal_;
         return points_;

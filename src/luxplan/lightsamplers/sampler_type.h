@@ -30,6 +30,7 @@ namespace luxplan {
 
 class PathTracer;
 class PathSamples;
+class Sensor;
 struct RayStats;
 struct PathParams;
 
@@ -197,6 +198,11 @@ public:
     // Default: no more than the value's interval says.
     virtual double lowerEnd(const ItemEstimates& /*items*/, double /*z*/) const { return -kInf; }
     virtual SamplerDrawing drawing() const = 0;
+    // The sensor item `item`'s paths start from, where each item is one sensor whose
+    // paths' mean is its estimate (no shared paths, no cells): daylight coefficients
+    // (annual/daylight_coefficients.h) split those paths' light by where it came from.
+    // Null for the other types.
+    virtual std::unique_ptr<Sensor> sensorOf(int item) const;
     // What its value is made of, from its items' means (the points of a SamplerResult,
     // in item order), where the type reports it: a glare eye's survey of its sources.
     virtual std::optional<GlareSurvey> survey(const std::vector<double>& /*itemMeans*/) const { return std::nullopt; }

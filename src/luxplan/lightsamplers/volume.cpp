@@ -31,6 +31,7 @@ public:
                 PathContributions& out) const override {
         out.add(tracer.sample(SphereSensor(points[size_t(item)]), samples, stats, params));
     }
+    std::unique_ptr<Sensor> sensorOf(int item) const override { return std::make_unique<SphereSensor>(points[size_t(item)]); }
     SamplerDrawing drawing() const override {
         SamplerDrawing d;
         d.outline = corners;

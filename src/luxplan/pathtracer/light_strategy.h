@@ -204,9 +204,12 @@ struct Path {
     Vec3 spawn(const Vertex& x, const Vec3& wi) const { return x.isSurface() ? offsetAlong(x.p, x.ng, wi) : x.p + wi * kRayEpsilon; }
 
     // A light sample's contribution, credited to `source` at `creditDepth` bounces:
-    // at the sensor (depth 0) into sensorLight when given, else into L.
-    void add(const Vec3& wi, const Vec3& contribution, int source, int creditDepth) {
+    // at the sensor (depth 0) into sensorLight when given, else into L. `towards`: where
+    // the sun's or sky's light left them, when that is not along wi (a sunlit patch's sun).
+    void add(const Vec3& wi, const Vec3& contribution, int source, int creditDepth, const Vec3* towards = nullptr) {
         if (params.budget) params.budget->credit(source, creditDepth, luminance(contribution));
+        if (params.daylight && (source == LightBudget::kSun || source == LightBudget::kSky))
+            params.daylight->add(source, towards ? *towards : wi, creditDepth, luminance(contribution));
         if (depth == 0 && sensorLight) {
             sensorLight->wi[sensorLight->count] = wi;
             sensorLight->value[sensorLight->count++] = luminance(contribution);

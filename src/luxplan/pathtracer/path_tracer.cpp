@@ -131,6 +131,15 @@ double PathTracer::transmittance(const Vec3& origin, const Vec3& w, double tMax,
 }
 
 
+double PathTracer::directSun(const Sensor& sensor, const Vec3& towardsSun, RayStats& stats) const {
+    if (sensor.hidesSources() || sealedAt(sensor.position())) return 0;
+    const double response = sensor.response(towardsSun);
+    if (!(response > 0)) return 0;
+    const Vec3 from = sensor.position() + towardsSun * kRayEpsilon;  // as a sensor's rays leave it
+    if (patches_.shadedByShell(from, towardsSun)) return 0;
+    return response * transmittance(from, towardsSun, kInf, -1, stats);
+}
+
 double PathTracer::otherSunDensity(const Path& path, const Vec3& ws) const {
     return path.outsideDensity + kPatchLight.pdf(path, ws, nullptr);
 }
@@ -262,6 +271,10 @@ void PathTracer::addEscaped(Path& path, const Vec3& d) const {
     if (path.params.budget) {
         path.params.budget->credit(LightBudget::kSky, path.depth, luminance(path.throughput * sky * wSky));
         path.params.budget->credit(LightBudget::kSun, path.depth, luminance(path.throughput * sun * wSun));
+    }
+    if (path.params.daylight) {
+        path.params.daylight->add(LightBudget::kSky, d, path.depth, luminance(path.throughput * sky * wSky));
+        path.params.daylight->add(LightBudget::kSun, d, path.depth, luminance(path.throughput * sun * wSun));
     }
 }
 

@@ -88,6 +88,18 @@ struct LightBudget {
     }
 };
 
+// The sun's and the sky's light of a path by the direction it left them in, credited
+// as LightBudget is: what daylight coefficients (annual/daylight_coefficients.h) bin by
+// sky patch and sun position.
+class DaylightTally {
+public:
+    virtual ~DaylightTally() = default;
+    // `source`: LightBudget::kSun or kSky; `towards`: unit, from the scene towards the
+    // sun disk or the sky (or the ground below the horizon); `depth`: the surfaces the
+    // light scattered off before the sensor; `value`: luminance, as LightBudget's.
+    virtual void add(int source, const Vec3& towards, int depth, double value) = 0;
+};
+
 // Rays traced, for throughput figures.
 struct RayStats {
     uint64_t closest = 0, shadow = 0;
@@ -108,6 +120,9 @@ struct PathParams {
     // re-evaluation, incremental/path_cache.h).
     PathFootprint* footprint = nullptr;
     LightBudget* budget = nullptr;  // credited with every contribution, if set
+    // Credited with every contribution of the sun and the sky, if set. Not with the
+    // exterior sun (PathTracerOptions::exteriorSun), whose samples mix both.
+    DaylightTally* daylight = nullptr;
 };
 
 // The light a path's next-event estimation found at the sensor itself, reported apart
@@ -178,6 +193,12 @@ public:
     // shadows itself). Public for the glare samplers' direct views of their sources.
     double transmittance(const Vec3& p, const Vec3& w, double tMax, int target, RayStats& stats,
                          PathFootprint* footprint = nullptr) const;
+
+    // The light a sun of unit normal illuminance (1 lx) along unit `towardsSun` sends
+    // straight to the sensor, nothing scattered: its response there times what lets the
+    // sun through (panes; 0 behind anything opaque), along the disk's centre. The direct
+    // sun of daylight coefficients, per hour without noise.
+    double directSun(const Sensor& sensor, const Vec3& towardsSun, RayStats& stats) const;
 
 private:
     // The lights are strategies (light_strategy.h) that read the tracer's parts.

@@ -77,7 +77,7 @@ void SunPatchStrategy::sample(Path& path) const {
     const double connection = tracer.transmittance(from, span / gap, gap, -1, stats, footprint);
     if (connection <= 0) return;
     path.add(wi, path.throughput * fx * fy * patch.sun.Le * (cosY / d2 * connection * patch.toSun * w / (pSun * b)),
-             LightBudget::kSun, path.depth);
+             LightBudget::kSun, path.depth, &patch.sun.wi);
 }
 
 // The patch strategy's area density at the current vertex for sun direction wi, had it
