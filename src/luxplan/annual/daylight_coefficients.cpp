@@ -40,7 +40,9 @@ DaylightEnvironment basisSky(const std::vector<Vec3>& sunBins) {
 // the sensor left out: directSun gives it per hour).
 class PathTally final : public DaylightTally {
 public:
-    PathTally(const SkyPatches& sky, const std::vector<Vec3>& sunBins) : sky_(sky), sunBins_(sunBins) {}
+    PathTally(const SkyPatches& sky, const SkyPatches& sunPatches, const std::vector<int>& binOfPatch,
+              const std::vector<Vec3>& sunBins)
+        : sky_(sky), sunPatches_(sunPatches), binOfPatch_(binOfPatch), sunBins_(sunBins) {}
     void add(int source, const Vec3& towards, int depth, double value) override {
         if (value == 0) return;
         if (source == LightBudget::kSky) {
@@ -57,14 +59,21 @@ public:
     const std::vector<Entry>& entries() const { return entries_; }
 
 private:
+    // The disk the direction lies in: its patch's, unless the disk reaches over the
+    // patch's edge (then the nearest centre).
     int nearestBin(const Vec3& w) const {
+        const int own = binOfPatch_[size_t(sunPatches_.patchOf(w))];
+        if (own >= 0 && dot(w, sunBins_[size_t(own)]) >= kWithinDisk) return own;
         int best = 0;
         double most = -2;
         for (size_t b = 0; b < sunBins_.size(); ++b)
             if (const double c = dot(w, sunBins_[b]); c > most) most = c, best = int(b);
         return best;
     }
+    static inline const double kWithinDisk = std::cos(kSunHalfAngle * 1.01);
     const SkyPatches& sky_;
+    const SkyPatches& sunPatches_;
+    const std::vector<int>& binOfPatch_;
     const std::vector<Vec3>& sunBins_;
     std::vector<Entry> entries_;
 };
@@ -125,7 +134,7 @@ DaylightCoefficients::DaylightCoefficients(const Scene& scene, const Layout& lay
         const PlacedSampler& place = *placed[sampler.index];
         Point& point = sampler.points[size_t(job.item)];
         std::vector<double> sums(size_t(bases), 0.0);
-        PathTally tally(sky_, sunBinDirections_);
+        PathTally tally(sky_, sunPatches_, binOfPatch, sunBinDirections_);
         PathParams params;
         params.daylight = &tally;
         RayStats stats;
