@@ -45,11 +45,11 @@ TEST(DaylightCoefficients, AnOpenPointGetsEachPatchsProjectedSolidAngle) {
                       .uniformSky(1000)
                       .sampler("point", planarSampler({0, 0, 0.8}, {0, 0, 1}, {0, 1, 0}, {0.1, 0.1}, {1, 1}), 0)
                       .build();
-    DaylightCoefficientOptions o;
-    o.pathsPerPoint = 20000;
-    const DaylightCoefficients dc(scene, initialLayout(scene), {DaylightInstant{}}, o);
-    ASSERT_EQ(dc.samplers().size(), 1u);
-    const DaylightCoefficients::Point& p = dc.samplers()[0].points[0];
+    const DaylightCoefficients dc({DaylightInstant{}}, [](size_t) -> SkyLuminance { return [](const Vec3&) { return 1.0; }; },
+                                  DaylightCoefficientOptions{});
+    EmbreeScene rt(scene, initialLayout(scene));
+    const PathTracer tracer(rt, &dc.basis(), DaylightCoefficients::tracing());
+    const PointCoefficients p = dc.coefficients(tracer, *placeSampler(scene.samplers[0], tracer), 0, 0, 20000, 1);
     const SkyPatches& sky = dc.skyPatches();
     EXPECT_EQ(p.sky[0], 0.0);
     double sum = 0;
@@ -98,18 +98,18 @@ TEST(DaylightCoefficients, HoursAgreeWithTracingEachHourDirectly) {
     const std::vector<DaylightInstant> hours = daylightInstants(day, athens);
     ASSERT_EQ(hours.size(), 5u);
     DaylightCoefficientOptions o;
-    o.pathsPerPoint = 4000;
     o.groundReflectance = day.groundReflectance;
     const Layout layout = initialLayout(scene);
-    const DaylightCoefficients dc(scene, layout, hours, o);
-    const AnnualSeries series = dc.series([&](size_t h) -> SkyLuminance {
+    const DaylightCoefficients dc(hours, [&](size_t h) -> SkyLuminance {
         auto sky = std::make_shared<PreethamSky>(day.turbidity, hours[h].sunDirection);
         return [sky](const Vec3& w) { return sky->luminance(w); };
-    });
+    }, o);
+    EmbreeScene rt(scene, layout);
+    const PathTracer basis(rt, &dc.basis(), DaylightCoefficients::tracing());
+    const AnnualSeries series = dc.measure(basis, {0}, 4000, 1);
     ASSERT_EQ(series.samplers.size(), 1u);
     ASSERT_EQ(series.samplers[0].points.size(), 9u);
 
-    EmbreeScene rt(scene, layout);
     for (size_t h : {size_t(0), size_t(2), size_t(4)}) {
         DaylightParams at = day;
         at.from = hours[h].time;

@@ -2,16 +2,13 @@
 
 #include <atomic>
 #include <cmath>
-#include <memory>
 
 #include <luxplan/core/parallel.h>
 #include <luxplan/core/rng.h>
 #include <luxplan/daylight/preetham.h>
 #include <luxplan/lightsamplers/light_samplers.h>
 #include <luxplan/pathtracer/path_samples.h>
-#include <luxplan/pathtracer/path_tracer.h>
 #include <luxplan/pathtracer/sensor.h>
-#include <luxplan/rt/embree_scene.h>
 
 namespace luxplan {
 namespace {
@@ -80,101 +77,32 @@ private:
 
 }  // namespace
 
-DaylightCoefficients::DaylightCoefficients(const Scene& scene, const Layout& layout,
-                                           const std::vector<DaylightInstant>& hours,
+DaylightCoefficients::DaylightCoefficients(std::vector<DaylightInstant> hours,
+                                           const std::function<SkyLuminance(size_t hour)>& skyOf,
                                            const DaylightCoefficientOptions& options)
-    : scene_(&scene), hours_(hours), options_(options), sky_(options.skySubdivision), sunPatches_(options.sunSubdivision) {
+    : hours_(std::move(hours)), options_(options), sky_(options.skySubdivision), sunPatches_(options.sunSubdivision) {
     // The sun bins: the patches of the finer subdivision that the hours' suns visit,
     // each disk at the mean direction of its hours' suns.
-    std::vector<int> binOfPatch(size_t(sunPatches_.count()), -1);
+    binOfPatch_.assign(size_t(sunPatches_.count()), -1);
     std::vector<Vec3> sums;
     hourBins_.assign(hours_.size(), -1);
     for (size_t h = 0; h < hours_.size(); ++h) {
         if (!hours_[h].sunUp()) continue;
-        const int patch = sunPatches_.patchOf(hours_[h].sunDirection);
-        int& bin = binOfPatch[size_t(patch)];
+        int& bin = binOfPatch_[size_t(sunPatches_.patchOf(hours_[h].sunDirection))];
         if (bin < 0) bin = int(sums.size()), sums.push_back(Vec3());
         sums[size_t(bin)] += hours_[h].sunDirection;
         hourBins_[h] = bin;
     }
     for (const Vec3& s : sums) sunBinDirections_.push_back(normalize(s));
+    basis_ = std::make_unique<DaylightEnvironment>(basisSky(sunBinDirections_));
 
-    const DaylightEnvironment basis = basisSky(sunBinDirections_);
-    EmbreeScene rt(scene, layout);
-    PathTracerOptions tracing;
-    tracing.exteriorSun = false;  // its samples mix the sun and the sky
-    const PathTracer tracer(rt, &basis, tracing);
-
-    struct Work {
-        size_t sampler;
-        int item;
-    };
-    std::vector<Work> work;
-    std::vector<std::unique_ptr<PlacedSampler>> placed(scene.samplers.size());
-    for (size_t k = 0; k < scene.samplers.size(); ++k) {
-        placed[k] = placeSampler(scene.samplers[k], tracer);
-        if (!placed[k]->sensorOf(0)) {
-            unsupported_.push_back(scene.samplers[k].name);
-            continue;
-        }
-        Sampler s{k, std::vector<Point>(size_t(placed[k]->items()))};
-        for (int i = 0; i < placed[k]->items(); ++i) {
-            s.points[size_t(i)].covered = placed[k]->covered(i);
-            if (!placed[k]->covered(i)) work.push_back({samplers_.size(), i});
-        }
-        samplers_.push_back(std::move(s));
-    }
-
-    const int bases = sky_.count() + int(sunBinDirections_.size());
-    const int paths = std::max(1, options_.pathsPerPoint);
-    std::atomic<size_t> done{0};
-    parallelFor(work.size(), [&](size_t w) {
-        const Work& job = work[w];
-        Sampler& sampler = samplers_[job.sampler];
-        const PlacedSampler& place = *placed[sampler.index];
-        Point& point = sampler.points[size_t(job.item)];
-        std::vector<double> sums(size_t(bases), 0.0);
-        PathTally tally(sky_, sunPatches_, binOfPatch, sunBinDirections_);
-        PathParams params;
-        params.daylight = &tally;
-        RayStats stats;
-        const PathSamples::Sequence sequence(
-            hashValues({options_.seed, kCoefficientTag, uint64_t(sampler.index), uint64_t(job.item)}));
-        for (int p = 0; p < paths; ++p) {
-            tally.clear();
-            Rng rng(hashValues({options_.seed, kCoefficientTag, uint64_t(sampler.index), uint64_t(job.item), uint64_t(p)}));
-            PathSamples samples(rng, sequence, uint32_t(p));
-            PathContributions out(job.item);
-            place.sample(tracer, job.item, samples, stats, params, out);
-            if (!out.finite()) continue;  // dropped, as the estimator drops it
-            for (const PathTally::Entry& e : tally.entries()) sums[size_t(e.basis)] += e.value;
-        }
-        point.sky.assign(sums.begin(), sums.begin() + sky_.count());
-        point.sun.assign(sums.begin() + sky_.count(), sums.end());
-        for (double& v : point.sky) v /= paths;
-        for (double& v : point.sun) v /= paths;
-        // The sun straight at the point, for each hour's own position.
-        const std::unique_ptr<Sensor> sensor = place.sensorOf(job.item);
-        point.direct.assign(hours_.size(), 0.0);
-        for (size_t h = 0; h < hours_.size(); ++h)
-            if (hours_[h].sunUp()) point.direct[h] = tracer.directSun(*sensor, hours_[h].sunDirection, stats);
-        const size_t finished = ++done;
-        if (options_.progress) options_.progress(finished, work.size());
-    });
-}
-
-AnnualSeries DaylightCoefficients::series(const std::function<SkyLuminance(size_t hour)>& skyOf) const {
-    AnnualSeries out;
-    const size_t hours = hours_.size();
-    for (const DaylightInstant& h : hours_) out.hours.push_back(h.time.value_or(DateTime{}));
-
-    // Each hour's patch luminances (the ground's from the light on the open horizontal
-    // plane, as the baked sky's), then every point's dot product.
+    // Each hour's patch luminances: the mean over n x n directions equal in solid angle,
+    // and the ground's from the light on the open horizontal plane, as the baked sky's.
     const int patches = sky_.count(), n = std::max(2, 8 / sky_.subdivision());
-    std::vector<std::vector<double>> luminance(hours, std::vector<double>(size_t(patches), 0.0));
-    parallelFor(hours, [&](size_t h) {
+    luminance_.assign(hours_.size(), std::vector<double>(size_t(patches), 0.0));
+    parallelFor(hours_.size(), [&](size_t h) {
         const SkyLuminance sky = skyOf(h);
-        std::vector<double>& L = luminance[h];
+        std::vector<double>& L = luminance_[h];
         double horizontal = 0;
         for (int p = 1; p < patches; ++p) {
             double sum = 0;
@@ -187,38 +115,116 @@ AnnualSeries DaylightCoefficients::series(const std::function<SkyLuminance(size_
         if (i.sunUp()) horizontal += i.sunNormalIlluminanceLx * std::max(0.0, i.sunDirection.z);
         L[0] = options_.groundReflectance * horizontal / kPi;
     });
+}
 
-    for (const Sampler& s : samplers_) {
-        const LightSamplerSpec& spec = scene_->samplers[s.index];
+PathTracerOptions DaylightCoefficients::tracing() {
+    PathTracerOptions o;
+    o.exteriorSun = false;  // its samples mix the sun and the sky
+    return o;
+}
+
+bool DaylightCoefficients::supports(const PlacedSampler& placed) { return placed.items() > 0 && placed.sensorOf(0) != nullptr; }
+
+PointCoefficients DaylightCoefficients::coefficients(const PathTracer& tracer, const PlacedSampler& placed, size_t sampler,
+                                                     int item, int paths, uint64_t seed) const {
+    const int bases = sky_.count() + int(sunBinDirections_.size());
+    paths = std::max(1, paths);
+    std::vector<double> sums(size_t(bases), 0.0);
+    PathTally tally(sky_, sunPatches_, binOfPatch_, sunBinDirections_);
+    PathParams params;
+    params.daylight = &tally;
+    RayStats stats;
+    const PathSamples::Sequence sequence(hashValues({seed, kCoefficientTag, uint64_t(sampler), uint64_t(item)}));
+    for (int p = 0; p < paths; ++p) {
+        tally.clear();
+        Rng rng(hashValues({seed, kCoefficientTag, uint64_t(sampler), uint64_t(item), uint64_t(p)}));
+        PathSamples samples(rng, sequence, uint32_t(p));
+        PathContributions out(item);
+        placed.sample(tracer, item, samples, stats, params, out);
+        if (!out.finite()) continue;  // dropped, as the estimator drops it
+        for (const PathTally::Entry& e : tally.entries()) sums[size_t(e.basis)] += e.value;
+    }
+    PointCoefficients c;
+    c.sky.assign(sums.begin(), sums.begin() + sky_.count());
+    c.sun.assign(sums.begin() + sky_.count(), sums.end());
+    for (double& v : c.sky) v /= paths;
+    for (double& v : c.sun) v /= paths;
+    // The sun straight at the point, for each hour's own position.
+    const std::unique_ptr<Sensor> sensor = placed.sensorOf(item);
+    c.direct.assign(hours_.size(), 0.0);
+    for (size_t h = 0; h < hours_.size(); ++h)
+        if (hours_[h].sunUp()) c.direct[h] = tracer.directSun(*sensor, hours_[h].sunDirection, stats);
+    return c;
+}
+
+AnnualSeries DaylightCoefficients::measure(const PathTracer& tracer, const std::vector<size_t>& which, int paths,
+                                           uint64_t seed, const std::function<void(size_t, size_t)>& progress) const {
+    const Scene& scene = tracer.rayTracer().scene();
+    const size_t hours = hours_.size();
+    AnnualSeries out;
+    for (const DaylightInstant& h : hours_) out.hours.push_back(h.time.value_or(DateTime{}));
+
+    struct Work {
+        size_t sampler;  // in `placed`
+        int item;
+    };
+    std::vector<Work> work;
+    std::vector<std::unique_ptr<PlacedSampler>> placed;
+    std::vector<size_t> kept;
+    for (size_t k : which) {
+        std::unique_ptr<PlacedSampler> p = placeSampler(scene.samplers[k], tracer);
+        if (!supports(*p)) continue;
+        for (int i = 0; i < p->items(); ++i)
+            if (!p->covered(i)) work.push_back({placed.size(), i});
+        placed.push_back(std::move(p));
+        kept.push_back(k);
+    }
+
+    // Each point's hours, from its coefficients.
+    std::vector<std::vector<double>> values(work.size()), direct(work.size());
+    std::atomic<size_t> done{0};
+    const int patches = sky_.count();
+    parallelFor(work.size(), [&](size_t w) {
+        const Work& job = work[w];
+        const PointCoefficients c = coefficients(tracer, *placed[job.sampler], kept[job.sampler], job.item, paths, seed);
+        values[w].assign(hours, 0.0);
+        direct[w].assign(hours, 0.0);
+        for (size_t h = 0; h < hours; ++h) {
+            const std::vector<double>& L = luminance_[h];
+            double v = 0;
+            for (int p = 0; p < patches; ++p) v += c.sky[size_t(p)] * L[size_t(p)];
+            if (hourBins_[h] >= 0) {
+                const double En = hours_[h].sunNormalIlluminanceLx;
+                direct[w][h] = En * c.direct[h];
+                v += En * c.sun[size_t(hourBins_[h])] + direct[w][h];
+            }
+            values[w][h] = v;
+        }
+        const size_t finished = ++done;
+        if (progress) progress(finished, work.size());
+    });
+
+    // Each sampler: its points' mean per hour (the covered ones left out).
+    size_t w = 0;
+    for (size_t s = 0; s < placed.size(); ++s) {
+        const LightSamplerSpec& spec = scene.samplers[kept[s]];
         AnnualSampler a;
         a.name = spec.name;
         a.type = spec.type->name();
         a.targetMin = spec.targetMin, a.targetMax = spec.targetMax;
-        a.planar = spec.type->hasPointStatistics() && std::string(a.type) == "planar";
+        a.planar = a.type == "planar";
         a.values.assign(hours, 0.0);
-        std::vector<std::vector<double>> points(s.points.size()), direct(s.points.size());
+        const int items = placed[s]->items();
+        std::vector<std::vector<double>> points(static_cast<size_t>(items)), sun(static_cast<size_t>(items));
         int counted = 0;
-        for (size_t k = 0; k < s.points.size(); ++k) {
-            const Point& pt = s.points[k];
-            if (pt.covered) continue;
+        for (; w < work.size() && work[w].sampler == s; ++w) {
             ++counted;
-            points[k].assign(hours, 0.0);
-            direct[k].assign(hours, 0.0);
-            for (size_t h = 0; h < hours; ++h) {
-                double v = 0;
-                for (int p = 0; p < patches; ++p) v += pt.sky[size_t(p)] * luminance[h][size_t(p)];
-                const DaylightInstant& i = hours_[h];
-                if (hourBins_[h] >= 0) {
-                    const double En = i.sunNormalIlluminanceLx;
-                    direct[k][h] = En * pt.direct[h];
-                    v += En * pt.sun[size_t(hourBins_[h])] + direct[k][h];
-                }
-                points[k][h] = v;
-                a.values[h] += v;
-            }
+            for (size_t h = 0; h < hours; ++h) a.values[h] += values[w][h];
+            points[size_t(work[w].item)] = std::move(values[w]);
+            sun[size_t(work[w].item)] = std::move(direct[w]);
         }
         for (double& v : a.values) v = counted > 0 ? v / counted : 0;
-        if (a.planar) a.points = std::move(points), a.directSun = std::move(direct);
+        if (a.planar) a.points = std::move(points), a.directSun = std::move(sun);
         out.samplers.push_back(std::move(a));
     }
     return out;

@@ -11,12 +11,15 @@
 #pragma once
 
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include <luxplan/annual/annual_series.h>
 #include <luxplan/annual/sky_patches.h>
 #include <luxplan/daylight/daylight.h>
+#include <luxplan/lightsamplers/sampler_type.h>
+#include <luxplan/pathtracer/path_tracer.h>
 #include <luxplan/scene/layout.h>
 #include <luxplan/scene/scene.h>
 
@@ -25,55 +28,64 @@ namespace luxplan {
 struct DaylightCoefficientOptions {
     int skySubdivision = 1;    // Reinhart MF of the sky patches (1: 145 patches)
     int sunSubdivision = 2;    // ... of the bins of the interreflected sun (2: about 6 deg)
-    int pathsPerPoint = 1000;  // per sampler point, traced once
-    uint64_t seed = 1;
     double groundReflectance = 0.2;  // of the ground outside, lit by each hour's sky and sun
-    // Called as points finish, with how many of how many (progress on long runs).
-    std::function<void(size_t done, size_t total)> progress;
 };
 
 // One hour's sky: its luminance (cd/m2) in a scene direction above the horizon.
 using SkyLuminance = std::function<double(const Vec3&)>;
 
+// The hours an annual measurement counts: the instants of the scene's daylight period
+// (every hour of its weather file's period) that are occupied (DaylightParams::occupied)
+// with the sun above the horizon.
+std::vector<DaylightInstant> annualHours(const DaylightParams& params, const Site& site);
+
+// What one point receives per unit of each basis: [patch] per cd/m2 of the patch
+// (patch 0 the ground), [bin] per lx of a sun in that bin, scattered at least once;
+// [hour]: straight from that hour's sun, per lx.
+struct PointCoefficients {
+    std::vector<double> sky, sun, direct;
+};
+
 class DaylightCoefficients {
 public:
-    // Traces the scene's samplers where `layout` places them. `hours`: the instants
-    // whose suns set the sun bins and whose direct sun is computed (each with the sun up
-    // or not). Samplers whose points are no single sensors (directional, ugr, dgp) get
-    // no coefficients: unsupported() names them.
-    DaylightCoefficients(const Scene& scene, const Layout& layout, const std::vector<DaylightInstant>& hours,
+    // The basis for these hours (their suns set the sun bins) and each hour's patch
+    // luminances, `sky(k)` being hour k's sky (layout-free: computed once).
+    DaylightCoefficients(std::vector<DaylightInstant> hours, const std::function<SkyLuminance(size_t hour)>& sky,
                          const DaylightCoefficientOptions& options);
 
-    // The light of every hour given at construction, `sky(k)` being hour k's sky.
-    AnnualSeries series(const std::function<SkyLuminance(size_t hour)>& sky) const;
+    // The basis sky the coefficients are traced under, and how (no exterior sun: its
+    // samples mix the sun and the sky). A tracer of both on the scene's EmbreeScene
+    // measures any layout it is updated to.
+    const DaylightEnvironment& basis() const { return *basis_; }
+    static PathTracerOptions tracing();
 
-    // What one point receives per unit of each basis: [patch] per cd/m2 of the patch
-    // (patch 0 the ground), [bin] per lx of a sun in that bin, scattered at least once.
-    struct Point {
-        std::vector<double> sky, sun;
-        std::vector<double> direct;  // [hour]: straight from that hour's sun, per lx
-        bool covered = false;        // covered by furniture: left out
-    };
-    struct Sampler {
-        size_t index;  // in Scene::samplers
-        std::vector<Point> points;
-    };
-    const std::vector<Sampler>& samplers() const { return samplers_; }
-    const std::vector<std::string>& unsupported() const { return unsupported_; }
+    // Every hour's light at the samplers `which` (indices into Scene::samplers; those
+    // that are no single sensors per point, as directional, ugr and dgp, are left out:
+    // supports()), where the tracer's layout puts them, `paths` paths per point.
+    // `progress(done, total)` is told as points finish.
+    AnnualSeries measure(const PathTracer& tracer, const std::vector<size_t>& which, int paths, uint64_t seed,
+                         const std::function<void(size_t, size_t)>& progress = {}) const;
+    // Whether a sampler type gets coefficients (each item one sensor).
+    static bool supports(const PlacedSampler& placed);
+
+    // One point's coefficients (for tests).
+    PointCoefficients coefficients(const PathTracer& tracer, const PlacedSampler& placed, size_t sampler, int item,
+                                   int paths, uint64_t seed) const;
+
+    const std::vector<DaylightInstant>& hours() const { return hours_; }
     const SkyPatches& skyPatches() const { return sky_; }
     int sunBins() const { return int(sunBinDirections_.size()); }
-    // The sun bin of hour k (-1: its sun is down).
-    int sunBinOf(size_t hour) const { return hourBins_[hour]; }
+    int sunBinOf(size_t hour) const { return hourBins_[hour]; }  // -1: its sun is down
 
 private:
-    const Scene* scene_;
     std::vector<DaylightInstant> hours_;
     DaylightCoefficientOptions options_;
     SkyPatches sky_, sunPatches_;
+    std::vector<int> binOfPatch_;         // sun patch -> bin (-1: none)
     std::vector<Vec3> sunBinDirections_;  // the basis disks' centres
     std::vector<int> hourBins_;
-    std::vector<Sampler> samplers_;
-    std::vector<std::string> unsupported_;
+    std::vector<std::vector<double>> luminance_;  // [hour][patch], cd/m2 (patch 0: the ground)
+    std::unique_ptr<DaylightEnvironment> basis_;
 };
 
 }  // namespace luxplan
