@@ -35,9 +35,9 @@ double lightingCost(const Scene& scene, const std::vector<double>& values) {
     requireSize(scene, values.size());
     double sum = 0, weights = 0;
     for (size_t k = 0; k < values.size(); ++k) {
-        if (!scene.samplers[k].statistics.empty())
+        if (!scene.samplers[k].statistics.empty() || scene.samplers[k].annual)
             throw std::invalid_argument("lightingCost: sampler \"" + scene.samplers[k].name +
-                                        "\" has statistics goals, which need its points, not only its value");
+                                        "\" has statistics or annual goals, which need its points or its year, not only its value");
         sum += scene.samplers[k].weight * lightingPenalty(scene.samplers[k], values[k]);
         weights += scene.samplers[k].weight;
     }
@@ -48,16 +48,26 @@ std::vector<LightingTerm> lightingTerms(const LightSamplerSpec& sampler, const S
     std::vector<LightingTerm> terms;
     terms.push_back({Statistic::Mean, result.value, result.standardError, sampler.targetMin, sampler.targetMax,
                      sampler.tolerance, sampler.weight, lightingPenalty(sampler, result.value)});
-    if (sampler.statistics.empty()) return terms;
-    if (result.points.empty())
-        throw std::invalid_argument("lightingTerms: sampler \"" + sampler.name +
-                                    "\" has statistics goals, but its measurement holds no points");
-    const PointStatistics stats = pointStatistics(result.points, result.pointErrors);
-    for (const StatisticGoal& goal : sampler.statistics) {
-        const StatisticEstimate& e = stats.of(goal.statistic);
-        requireFinite(sampler, goal.jsonPath, std::string("its ") + statisticNames().name(goal.statistic) + " as ", e.value);
-        terms.push_back({goal.statistic, e.value, e.standardError, goal.targetMin, goal.targetMax, goal.tolerance,
-                         sampler.weight, penalty(e.value, goal.targetMin, goal.targetMax, goal.tolerance, kLightingStiffness)});
+    if (!sampler.statistics.empty()) {
+        if (result.points.empty())
+            throw std::invalid_argument("lightingTerms: sampler \"" + sampler.name +
+                                        "\" has statistics goals, but its measurement holds no points");
+        const PointStatistics stats = pointStatistics(result.points, result.pointErrors);
+        for (const StatisticGoal& goal : sampler.statistics) {
+            const StatisticEstimate& e = stats.of(goal.statistic);
+            requireFinite(sampler, goal.jsonPath, std::string("its ") + statisticNames().name(goal.statistic) + " as ", e.value);
+            terms.push_back({goal.statistic, e.value, e.standardError, goal.targetMin, goal.targetMax, goal.tolerance,
+                             sampler.weight, penalty(e.value, goal.targetMin, goal.targetMax, goal.tolerance, kLightingStiffness)});
+        }
+    }
+    if (sampler.annual) {
+        if (!result.annualInRange)
+            throw std::invalid_argument("lightingTerms: sampler \"" + sampler.name +
+                                        "\" has an annual goal, but its measurement holds no year");
+        const AnnualGoal& g = *sampler.annual;
+        requireFinite(sampler, g.jsonPath, "its share of hours in range as ", *result.annualInRange);
+        terms.push_back({Statistic::AnnualInRange, *result.annualInRange, 0.0, g.targetMin, g.targetMax, g.tolerance,
+                         sampler.weight, penalty(*result.annualInRange, g.targetMin, g.targetMax, g.tolerance, kLightingStiffness)});
     }
     return terms;
 }
@@ -97,7 +107,7 @@ namespace {
 // L's denominator: every term's weight, a sampler's once per term (1 + its goals).
 double totalWeight(const Scene& scene) {
     double weights = 0;
-    for (const LightSamplerSpec& s : scene.samplers) weights += s.weight * double(1 + s.statistics.size());
+    for (const LightSamplerSpec& s : scene.samplers) weights += s.weight * double(1 + s.statistics.size() + (s.annual ? 1 : 0));
     return weights;
 }
 

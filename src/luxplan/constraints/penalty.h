@@ -42,8 +42,9 @@ struct LightingTerm {
     double penalty = 0;  // P(value, targetMin, targetMax, tolerance, 1)
 };
 
-// A sampler's terms: its value's first, then one per statistics goal in the order
-// of LightSamplerSpec::statistics. A non-finite value throws SceneError naming the
+// A sampler's terms: its value's first, then one per statistics goal in the order of
+// LightSamplerSpec::statistics, then its annual goal's (the share of hours in range,
+// SamplerResult::annualInRange, error 0: the coefficients' noise is not estimated). A non-finite value throws SceneError naming the
 // sampler (its goal's path for a statistic); goals without points to measure them
 // over throw std::invalid_argument.
 std::vector<LightingTerm> lightingTerms(const LightSamplerSpec& sampler, const SamplerResult& result);

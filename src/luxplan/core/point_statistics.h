@@ -12,12 +12,18 @@
 
 namespace luxplan {
 
-enum class Statistic { Mean, Min, Max, U0 };
+// What a lighting goal is on: a sampler's value (Mean), a statistic over its points, or
+// (AnnualInRange, no statistic of the points) the share of a year's hours whose value
+// lies in its target (LightSamplerSpec::annual).
+enum class Statistic { Mean, Min, Max, U0, AnnualInRange };
 
 // The names measure --json and the scene file use.
 inline const EnumNames<Statistic>& statisticNames() {
-    static const EnumNames<Statistic> names{
-        {{Statistic::Mean, "mean"}, {Statistic::Min, "min"}, {Statistic::Max, "max"}, {Statistic::U0, "u0"}}};
+    static const EnumNames<Statistic> names{{{Statistic::Mean, "mean"},
+                                             {Statistic::Min, "min"},
+                                             {Statistic::Max, "max"},
+                                             {Statistic::U0, "u0"},
+                                             {Statistic::AnnualInRange, "annual_in_range"}}};
     return names;
 }
 
@@ -34,6 +40,7 @@ struct PointStatistics {
             case Statistic::Min: return min;
             case Statistic::Max: return max;
             case Statistic::U0: return u0;
+            case Statistic::AnnualInRange: break;  // no statistic of the points
         }
         return mean;
     }

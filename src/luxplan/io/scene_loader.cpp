@@ -14,6 +14,7 @@
 #include <luxplan/constraints/constraint_type.h>
 #include <luxplan/daylight/datetime.h>
 #include <luxplan/daylight/daylight.h>
+#include <luxplan/pathtracer/sensor.h>
 #include <luxplan/emitters/emitter_shape.h>
 #include <luxplan/emitters/photometric_emitter.h>
 #include <luxplan/json/fields.h>
@@ -950,6 +951,7 @@ private:
         readTarget(f, s, entry ? s.type->unit() : "");
         s.weight = f.number("weight", 1.0, kWeight);
         readStatistics(f, s, entry ? s.type.get() : nullptr, entry ? *type : "");
+        readAnnualGoal(f, s, entry ? s.type.get() : nullptr, entry ? *type : "");
         f.finish(entry ? article(*type + " sampler") : "", family);
         if (!entry) return;
         int index = int(scene_.samplers.size());
@@ -1081,6 +1083,40 @@ private:
             g.finish();
             s.statistics.push_back(goal);
         }
+    }
+
+    // The sampler's "annual": {"in_range": {"target": [min, max], "tolerance": t}}, a
+    // goal on the share of the year's occupied hours whose value lies in its target.
+    void readAnnualGoal(const Fields& f, LightSamplerSpec& s, const SamplerType* type, const std::string& typeLabel) {
+        if (!f.has("annual")) return;
+        Fields a(sink_, f.get("annual"), f.at("annual"), "an annual goal object such as {\"in_range\": {\"target\": [0.5, 1]}}");
+        if (!a.valid()) return;
+        if (!scene_.daylight) {
+            f.error("annual", "an annual goal needs the scene's \"daylight\" (its hours are the daylight's)");
+            return;
+        }
+        if (type && !type->place(Transform())->sensorOf(0)) {
+            f.error("annual", "annual goals are on samplers whose points are single sensors (planar, volume, cylindrical); " +
+                                  article(typeLabel + " sampler") + " is not one");
+            return;
+        }
+        if (!a.has("in_range")) {
+            a.missing("in_range");
+            a.finish();
+            return;
+        }
+        AnnualGoal goal;
+        goal.jsonPath = a.at("in_range");
+        Fields g(sink_, a.get("in_range"), goal.jsonPath, "an in_range goal object");
+        if (g.valid()) {
+            if (readTargetRange(g, goal.targetMin, goal.targetMax, "") && (goal.targetMin < 0 || goal.targetMax > 1))
+                g.error("target", "the share of hours in range lies in [0, 1]: a target of [" + formatNumber(goal.targetMin) +
+                                      ", " + formatNumber(goal.targetMax) + "] asks for what no year gives");
+            goal.tolerance = g.number("tolerance", 0.1, Range::positive());
+            g.finish();
+            s.annual = goal;
+        }
+        a.finish();
     }
 
     std::vector<std::string> entityNames() const {

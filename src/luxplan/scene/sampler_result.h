@@ -53,6 +53,10 @@ struct SamplerResult {
     // Planar samplers: the points covered by furniture (inside another entity's solid),
     // left out of the value and the statistics; their `points` entries are NaN.
     std::vector<int> covered = {};
+    // A sampler with an annual goal: the share of the year's hours whose value lies in
+    // its target (daylight coefficients of the same layout), and how many hours.
+    std::optional<double> annualInRange = std::nullopt;
+    int annualHours = 0;
 };
 
 }  // namespace luxplan

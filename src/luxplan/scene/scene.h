@@ -84,6 +84,15 @@ struct StatisticGoal {
     std::string jsonPath;  // of the goal's object, for errors found later
 };
 
+// A goal on the year (the sampler's "annual" object): the share of the daylight's
+// occupied hours with the sun up (annual/daylight_coefficients.h, annualHours) whose
+// value lies in the sampler's target, itself within [targetMin, targetMax].
+struct AnnualGoal {
+    double targetMin = 0, targetMax = 1;  // shares of the hours, within [0, 1]
+    double tolerance = 0.1;
+    std::string jsonPath;  // of the "in_range" object, for errors found later
+};
+
 // A lighting intention (the paper's Section 4): what its type measures where, and
 // the accepted range of the value.
 struct LightSamplerSpec {
@@ -96,6 +105,7 @@ struct LightSamplerSpec {
     double weight = 1;
     int entity = -1;       // -1: world frame; else the entity it moves with
     std::vector<StatisticGoal> statistics;  // planar and volume samplers only
+    std::optional<AnnualGoal> annual;       // samplers whose points are single sensors, in daylight
 };
 
 // What a part was, kept for outputs (plans, glTF) and summaries.
