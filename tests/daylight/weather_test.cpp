@@ -171,7 +171,7 @@ TEST(Epw, MissingCodesAreNaN) {
     EXPECT_DOUBLE_EQ(w.hours[kJune21Hour13 + 1].diffuseHorizontalWm2, 224);
 }
 
-TEST(Epw, CrlfAndNoFinalLineEnd) {
+TEST(Epw, CrlfByteOrderMarkAndNoFinalLineEnd) {
     auto lines = chicagoLines();
     TempDir dir;
     WeatherFile crlf = readEpw(dir.write("crlf.epw", join(lines, "\r\n")));
@@ -182,6 +182,7 @@ TEST(Epw, CrlfAndNoFinalLineEnd) {
     text.pop_back();
     EXPECT_EQ(readEpw(dir.write("open.epw", text)).hours.size(), 8760u);
     EXPECT_EQ(readEpw(dir.write("blank.epw", join(lines) + "\n\n")).hours.size(), 8760u);
+    EXPECT_EQ(readEpw(dir.write("bom.epw", "\xEF\xBB\xBF" + join(lines))).city, "Chicago Ohare Intl Ap");
 }
 
 // ---- errors: each with its FILE:LINE ----

@@ -100,7 +100,8 @@ private:
 
 std::vector<Line> splitLines(const std::string& text) {
     std::vector<Line> lines;
-    size_t start = 0;
+    // A UTF-8 byte order mark, as some editors write one, is no part of LOCATION.
+    size_t start = text.rfind("\xEF\xBB\xBF", 0) == 0 ? 3 : 0;
     int number = 1;
     while (start < text.size()) {
         size_t nl = text.find('\n', start);
