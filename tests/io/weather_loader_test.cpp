@@ -77,6 +77,9 @@ TEST(WeatherKey, SiteThatDisagreesNamesBoth) {
     EXPECT_EQ(test::onlyProblem(s), "/site/longitude: -88.1 disagrees with chicago.epw's LOCATION longitude -87.92 by more than 0.1 degree");
     s["site"] = {{"latitude", 40}, {"longitude", 0}};
     EXPECT_EQ(test::problems(s).size(), 2u);
+    // A latitude out of range is said once.
+    s["site"] = {{"latitude", 100}};
+    EXPECT_EQ(test::onlyProblem(s).rfind("/site/latitude: ", 0), 0u);
 }
 
 TEST(WeatherKey, OnlyThePerezSkyUsesIt) {

@@ -313,6 +313,7 @@ private:
                 site = fromFile;
                 return;
             }
+            if (!siteValid_) return;  // its own error said it
             double diff = std::abs(site - fromFile);
             if (std::string(key) == "longitude") diff = std::min(diff, 360 - diff);  // across the date line
             if (diff > 0.1 + 1e-9)
