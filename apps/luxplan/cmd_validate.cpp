@@ -7,6 +7,7 @@
 #include "commands.h"
 #include <luxplan/checks/scene_warnings.h>
 #include <luxplan/constraints/constraint_type.h>
+#include <luxplan/daylight/weather.h>
 #include <luxplan/io/layout_io.h>
 #include <luxplan/io/scene_loader.h>
 #include <luxplan/emitters/emitter_shape.h>
@@ -27,7 +28,10 @@ void printSummary(const Scene& s, std::ostream& out) {
         const DaylightParams& d = *s.daylight;
         out << "  daylight: " << skyModelNames().name(d.model) << " sky" << (d.sunEnabled() ? " + sun" : "");
         if (d.sunOverride) out << " fixed at altitude " << d.sunOverride->altitudeDeg << ", azimuth " << d.sunOverride->azimuthDeg;
-        if (d.from) out << ", " << d.from->str() << (d.to ? " to " + d.to->str() + " every " + std::to_string(int(d.stepMinutes)) + " min" : "");
+        if (d.weather)  // its hours are the steps; from/to only select them
+            out << ", weather " << d.weather->file.filename().string() << " (" << d.weather->city << "): "
+                << weatherHoursIn(*d.weather, d.from, d.to).size() << " of its " << d.weather->hours.size() << " hours";
+        else if (d.from) out << ", " << d.from->str() << (d.to ? " to " + d.to->str() + " every " + std::to_string(int(d.stepMinutes)) + " min" : "");
         out << "\n";
     } else {
         out << "  daylight: none (artificial light only)\n";

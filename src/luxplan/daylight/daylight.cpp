@@ -1,6 +1,7 @@
 // Daylight parameters -> validated time steps -> baked, time-averaged DaylightEnvironment.
 #include <luxplan/daylight/daylight.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 
@@ -112,7 +113,10 @@ std::vector<Diagnostic> validateDaylight(const DaylightParams& p, const Site& si
         add("/daylight", "sky model " + inQuotes(model) +
                              " needs a time (\"from\") or a fixed \"sun\" {\"altitude_deg\", \"azimuth_deg\"}");
     if (p.to && !p.from) add("/daylight/to", "\"to\" needs \"from\"");
-    if (!(p.stepMinutes > 0) || !std::isfinite(p.stepMinutes))
+    if (p.weather) {
+        // The steps are the file's hours, and from/to a span of its year that may wrap
+        // over New Year (weatherHoursIn): no order or step count to check.
+    } else if (!(p.stepMinutes > 0) || !std::isfinite(p.stepMinutes))
         add("/daylight/step_minutes", "step_minutes " + formatNumber(p.stepMinutes) + " must be > 0");
     else if (p.from && p.to) {
         if (p.to->julianDayUT() < p.from->julianDayUT())
@@ -222,6 +226,13 @@ DaylightEnvironment buildDaylight(const DaylightParams& p, const Site& site, con
         disks.push_back(s);
     }
     return DaylightEnvironment(std::move(map), std::move(disks), p.groundReflectance);
+}
+
+bool occupiedAt(const DaylightParams::Occupancy& occupied, const DateTime& t) {
+    const double hour = t.hour + t.minute / 60.0 + t.second / 3600.0;
+    if (!(hour >= occupied.hours[0] && hour < occupied.hours[1])) return false;
+    const int weekday = isoWeekday(t.year, t.month, t.day);
+    return std::find(occupied.weekdays.begin(), occupied.weekdays.end(), weekday) != occupied.weekdays.end();
 }
 
 }  // namespace luxplan
