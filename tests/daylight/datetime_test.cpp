@@ -125,4 +125,24 @@ TEST(DateTimeFractions, ASecondThatRoundsTo60IsRefusedAsWritten) {
 }
 
 }  // namespace fractional_seconds
+
+namespace iso_weekday {
+
+// Weekdays read off a calendar: 1 = Monday .. 7 = Sunday.
+TEST(IsoWeekday, KnownDates) {
+    EXPECT_EQ(isoWeekday(2026, 12, 7), 1);  // Monday
+    EXPECT_EQ(isoWeekday(1970, 1, 1), 4);   // Thursday: the Unix epoch
+    EXPECT_EQ(isoWeekday(2000, 1, 1), 6);   // Saturday
+    EXPECT_EQ(isoWeekday(2024, 2, 29), 4);  // Thursday, a leap day
+    EXPECT_EQ(isoWeekday(2006, 1, 1), 7);   // Sunday
+    EXPECT_EQ(isoWeekday(1900, 3, 1), 4);   // Thursday, after a 28-day February of a century
+    EXPECT_EQ(isoWeekday(1582, 10, 15), 5); // Friday: the Gregorian calendar's first day
+    // Seven days on, the same weekday; one day on, the next.
+    for (int d = 1; d <= 24; ++d) {
+        EXPECT_EQ(isoWeekday(2026, 12, d + 7), isoWeekday(2026, 12, d));
+        EXPECT_EQ(isoWeekday(2026, 12, d + 1), isoWeekday(2026, 12, d) % 7 + 1);
+    }
+}
+
+}  // namespace iso_weekday
 }  // namespace luxplan

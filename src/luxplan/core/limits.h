@@ -16,6 +16,8 @@ inline constexpr std::uintmax_t kMaxJsonFileBytes = 64ull << 20;
 inline constexpr std::uintmax_t kMaxMeshFileBytes = 512ull << 20;
 // An IES or EULUMDAT file (real ones are a few kB; a dense one a few hundred).
 inline constexpr std::uintmax_t kMaxPhotometryFileBytes = 16ull << 20;
+// An EPW weather file (a year of hourly rows is about 1.7 MB).
+inline constexpr std::uintmax_t kMaxWeatherFileBytes = 64ull << 20;
 
 // ---- JSON structure ----
 // Arrays and objects nested inside each other in a scene or layout file; checked

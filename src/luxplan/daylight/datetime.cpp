@@ -79,6 +79,12 @@ int daysInMonth(int year, int month) {
     return month == 2 && isLeap(year) ? 29 : kDays[month - 1];
 }
 
+int isoWeekday(int year, int month, int day) {
+    // 1970-01-01 was a Thursday (ISO 4).
+    const int64_t days = daysFromCivil(year, month, day);
+    return int(((days % 7) + 7 + 3) % 7) + 1;
+}
+
 double DateTime::julianDayUT() const {
     double dayFraction = ((hour * 60.0 + minute - utcOffsetMinutes) * 60.0 + second) / 86400.0;
     return kJulianDayUnixEpoch + double(daysFromCivil(year, month, day)) + dayFraction;

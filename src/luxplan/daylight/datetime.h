@@ -33,4 +33,7 @@ std::optional<DateTime> parseIso8601(std::string_view text, std::string* error =
 // Days in a month of the proleptic Gregorian calendar.
 int daysInMonth(int year, int month);
 
+// ISO 8601's weekday of a date of the proleptic Gregorian calendar: 1 = Monday .. 7 = Sunday.
+int isoWeekday(int year, int month, int day);
+
 }  // namespace luxplan

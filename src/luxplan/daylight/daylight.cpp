@@ -1,6 +1,7 @@
 // Daylight parameters -> validated time steps -> baked, time-averaged DaylightEnvironment.
 #include <luxplan/daylight/daylight.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 
@@ -222,6 +223,13 @@ DaylightEnvironment buildDaylight(const DaylightParams& p, const Site& site, con
         disks.push_back(s);
     }
     return DaylightEnvironment(std::move(map), std::move(disks), p.groundReflectance);
+}
+
+bool occupiedAt(const DaylightParams::Occupancy& occupied, const DateTime& t) {
+    const double hour = t.hour + t.minute / 60.0 + t.second / 3600.0;
+    if (!(hour >= occupied.hours[0] && hour < occupied.hours[1])) return false;
+    const int weekday = isoWeekday(t.year, t.month, t.day);
+    return std::find(occupied.weekdays.begin(), occupied.weekdays.end(), weekday) != occupied.weekdays.end();
 }
 
 }  // namespace luxplan

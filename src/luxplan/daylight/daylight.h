@@ -61,4 +61,8 @@ std::vector<DaylightInstant> daylightInstants(const DaylightParams& params, cons
 DaylightEnvironment buildDaylight(const DaylightParams& params, const Site& site,
                                   const DaylightBakeOptions& options = {});
 
+// Whether an hour counts for annual results: its middle (local time, as
+// WeatherFile::middleOf gives it) lies in [hours[0], hours[1]) on one of `weekdays`.
+bool occupiedAt(const DaylightParams::Occupancy& occupied, const DateTime& localMiddleOfHour);
+
 }  // namespace luxplan
