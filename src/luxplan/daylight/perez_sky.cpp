@@ -174,12 +174,30 @@ PerezAllWeatherSky::PerezAllWeatherSky(const PerezSkyCondition& condition, const
     if (relativeIlluminance > 0) scale_ = condition.diffuseHorizontalLx / relativeIlluminance;
 }
 
-double PerezAllWeatherSky::relativeLuminance(const Vec3& w) const {
-    if (w.z < 0) return 0;
-    const double gamma = std::acos(std::clamp(dot(w, sun_), -1.0, 1.0));
-    return perezRelativeLuminance(k_, w.z, gamma);
+double PerezAllWeatherSky::gradation(double cosTheta) const {
+    return 1 + k_[0] * std::exp(k_[1] / std::max(cosTheta, 1e-6));
 }
 
-double PerezAllWeatherSky::luminance(const Vec3& w) const { return scale_ == 0 ? 0 : scale_ * relativeLuminance(w); }
+double PerezAllWeatherSky::indicatrix(const Vec3& w) const {
+    const double cg = std::clamp(dot(w, sun_), -1.0, 1.0), gamma = std::acos(cg);
+    return 1 + k_[2] * std::exp(k_[3] * gamma) + k_[4] * cg * cg;
+}
+
+double PerezAllWeatherSky::relativeLuminance(const Vec3& w) const {
+    if (w.z < 0) return 0;
+    return std::max(0.0, gradation(w.z) * indicatrix(w));
+}
+
+double PerezAllWeatherSky::luminance(const Vec3& w) const {
+    if (w.z < 0) return 0;
+    return scale_ * std::max(0.0, gradation(w.z) * indicatrix(w));
+}
+
+PerezAllWeatherSky::Row PerezAllWeatherSky::row(double cosTheta) const {
+    Row r;
+    r.sky_ = this;
+    r.gradation_ = gradation(cosTheta);
+    return r;
+}
 
 }  // namespace luxplan

@@ -7,6 +7,7 @@
 // included. docs/daylight.md, "The Perez all-weather sky".
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -79,7 +80,23 @@ public:
     double relativeLuminance(const Vec3& w) const;
     double scale() const { return scale_; }  // cd/m2 per unit of relative luminance
 
+    // Directions that share one cos(theta) (a row of a map), the gradation term computed
+    // once; luminance(w) equals luminance() bit for bit.
+    class Row {
+    public:
+        double luminance(const Vec3& w) const { return sky_->scale_ * std::max(0.0, gradation_ * sky_->indicatrix(w)); }
+
+    private:
+        friend class PerezAllWeatherSky;
+        const PerezAllWeatherSky* sky_ = nullptr;
+        double gradation_ = 0;
+    };
+    Row row(double cosTheta) const;
+
 private:
+    double gradation(double cosTheta) const;  // 1 + a exp(b / cos theta)
+    double indicatrix(const Vec3& w) const;   // 1 + c exp(d gamma) + e cos^2 gamma
+
     std::array<double, 5> k_{};
     Vec3 sun_;
     double scale_ = 0;
