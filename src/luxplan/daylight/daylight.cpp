@@ -127,7 +127,10 @@ std::vector<Diagnostic> validateDaylight(const DaylightParams& p, const Site& si
         add("/daylight", "sky model " + inQuotes(model) +
                              " needs a time (\"from\") or a fixed \"sun\" {\"altitude_deg\", \"azimuth_deg\"}");
     if (p.to && !p.from) add("/daylight/to", "\"to\" needs \"from\"");
-    if (!(p.stepMinutes > 0) || !std::isfinite(p.stepMinutes))
+    if (p.weather) {
+        // The steps are the file's hours, and from/to a span of its year that may wrap
+        // over New Year (weatherHoursIn): no order or step count to check.
+    } else if (!(p.stepMinutes > 0) || !std::isfinite(p.stepMinutes))
         add("/daylight/step_minutes", "step_minutes " + formatNumber(p.stepMinutes) + " must be > 0");
     else if (p.from && p.to && p.model != SkyModelType::Perez) {  // perez: the file's hours
         if (p.to->julianDayUT() < p.from->julianDayUT())

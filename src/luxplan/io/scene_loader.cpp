@@ -4,6 +4,7 @@
 #include <luxplan/io/scene_loader.h>
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <map>
 #include <set>
@@ -14,6 +15,7 @@
 #include <luxplan/constraints/constraint_type.h>
 #include <luxplan/daylight/datetime.h>
 #include <luxplan/daylight/daylight.h>
+#include <luxplan/daylight/weather.h>
 #include <luxplan/emitters/emitter_shape.h>
 #include <luxplan/emitters/photometric_emitter.h>
 #include <luxplan/json/fields.h>
@@ -199,6 +201,9 @@ private:
 
     void readSite(const Json& j, const std::string& path) {
         Fields f(sink_, j, path);
+        // Which of the two a weather file's LOCATION must agree with (readWeather).
+        siteLatitudeGiven_ = f.valid() && j.contains("latitude");
+        siteLongitudeGiven_ = f.valid() && j.contains("longitude");
         scene_.site.latitudeDeg = f.number("latitude", 0.0, Range::closed(-90, 90, "deg"));
         scene_.site.longitudeDeg = f.number("longitude", 0.0, Range::closed(-180, 180, "deg"));
         scene_.site.northDeg = f.number("north_deg", 0.0, Range::closed(-360, 360, "deg"));
@@ -274,6 +279,8 @@ private:
         d.temperatureC = f.number("temperature_c", 10.0);
         d.from = readTime(f, "from");
         d.to = readTime(f, "to");
+        if (auto rel = f.string("weather")) readWeather(f, *rel, d);
+        if (f.has("occupied")) readOccupied(f.get("occupied"), f.at("occupied"), d.occupied);
         f.finish();
         if (sink_.count() == before && siteValid_)
             for (Diagnostic diag : validateDaylight(d, scene_.site)) {
@@ -281,6 +288,70 @@ private:
                 sink_.diagnostics.push_back(diag);
             }
         scene_.daylight = d;
+    }
+
+    // "weather": an EPW file (relative to the scene's folder); its errors keep their own
+    // FILE:LINE. The site comes from the file: a scene's "site" may only repeat it.
+    void readWeather(const Fields& f, const std::string& rel, DaylightParams& d) {
+        const std::filesystem::path file = std::filesystem::path(rel).is_absolute() ? std::filesystem::path(rel) : dir_ / rel;
+        try {
+            d.weather = std::make_shared<const WeatherFile>(readEpw(file));
+        } catch (const IoError& e) {
+            f.error("weather", e.what());
+            return;
+        }
+        if (d.model != SkyModelType::Perez)
+            f.error("weather", "a weather file gives the hours of the \"perez\" sky; sky model \"" +
+                                   std::string(skyModelNames().name(d.model)) + "\" does not use it");
+        // Its hours are the steps: one per hour of the file.
+        if (f.has("step_minutes"))
+            f.error("step_minutes", "\"step_minutes\" does not apply with a weather file (its hours are the time steps)");
+        const WeatherFile& w = *d.weather;
+        const std::string name = file.filename().string();
+        auto agree = [&](const char* key, bool given, double& site, double fromFile) {
+            if (!given) {
+                site = fromFile;
+                return;
+            }
+            double diff = std::abs(site - fromFile);
+            if (std::string(key) == "longitude") diff = std::min(diff, 360 - diff);  // across the date line
+            if (diff > 0.1 + 1e-9)
+                sink_.error(std::string("/site/") + key, formatNumber(site) + " disagrees with " + name + "'s LOCATION " + key +
+                                                             " " + formatNumber(fromFile) + " by more than 0.1 degree");
+        };
+        agree("latitude", siteLatitudeGiven_, scene_.site.latitudeDeg, w.latitudeDeg);
+        agree("longitude", siteLongitudeGiven_, scene_.site.longitudeDeg, w.longitudeDeg);
+    }
+
+    // "occupied": {"hours": [start, end], "weekdays": [ISO weekdays]}, each optional.
+    void readOccupied(const Json& j, const std::string& path, DaylightParams::Occupancy& o) {
+        Fields f(sink_, j, path);
+        if (!f.valid()) return;
+        if (auto h = f.numbers("hours", 2, Range::closed(0, 24, "h"))) {
+            if ((*h)[0] < (*h)[1]) o.hours = {(*h)[0], (*h)[1]};
+            else
+                f.error("hours", "the first hour " + formatNumber((*h)[0]) + " must come before the second " +
+                                     formatNumber((*h)[1]) + " (hours of one day, e.g. [8, 18])");
+        }
+        if (const Json* a = f.array("weekdays")) {
+            if (a->empty()) f.error("weekdays", "no weekday: name at least one (1 = Monday .. 7 = Sunday)");
+            std::vector<int> days;
+            for (size_t i = 0; i < a->size(); ++i) {
+                const Json& v = (*a)[i];
+                const std::string at = pointer(f.at("weekdays"), i);
+                if (!v.is_number() || v.get<double>() != std::floor(v.get<double>()) || v.get<double>() < 1 || v.get<double>() > 7) {
+                    sink_.error(at, "expected a weekday 1 (Monday) .. 7 (Sunday), got " +
+                                        (v.is_number() ? formatNumber(v.get<double>()) : typeName(v)));
+                    continue;
+                }
+                const int day = v.get<int>();
+                if (std::find(days.begin(), days.end(), day) != days.end())
+                    sink_.error(at, "weekday " + std::to_string(day) + " repeated");
+                else days.push_back(day);
+            }
+            if (!a->empty() && days.size() == a->size()) o.weekdays = days;
+        }
+        f.finish();
     }
 
     // The keys of one material type.
@@ -1276,6 +1347,7 @@ private:
     LoadOptions options_;
     bool entitiesIncomplete_ = false;
     bool siteValid_ = true;
+    bool siteLatitudeGiven_ = false, siteLongitudeGiven_ = false;
     DiagnosticSink sink_;
     Scene scene_;
     std::filesystem::path dir_;
