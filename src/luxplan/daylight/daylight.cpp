@@ -132,7 +132,7 @@ std::vector<Diagnostic> validateDaylight(const DaylightParams& p, const Site& si
         // over New Year (weatherHoursIn): no order or step count to check.
     } else if (!(p.stepMinutes > 0) || !std::isfinite(p.stepMinutes))
         add("/daylight/step_minutes", "step_minutes " + formatNumber(p.stepMinutes) + " must be > 0");
-    else if (p.from && p.to && p.model != SkyModelType::Perez) {  // perez: the file's hours
+    else if (p.from && p.to) {
         if (p.to->julianDayUT() < p.from->julianDayUT())
             add("/daylight/to", "\"to\" " + p.to->str() + " is before \"from\" " + p.from->str());
         else if (!(stepCount(*p.from, *p.to, p.stepMinutes) <= kMaxDaylightSteps))
