@@ -27,7 +27,7 @@ struct DaylightBakeOptions {
     int height = 256;
     int supersample = 2;
     // Called after each time step's sky is baked, with how many of how many (the skies
-    // that follow the sun: Preetham, CIE general); a long period takes a while.
+    // that follow the sun: Preetham, CIE general, Perez); a long period takes a while.
     std::function<void(int baked, int total)> onStep;
 };
 
