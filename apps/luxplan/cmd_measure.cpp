@@ -5,6 +5,7 @@
 // an optimize run with hierarchy flat). --daylight-factor: each planar sampler's daylight
 // factor under the CIE overcast sky instead (lightsamplers/daylight_factor.h).
 #include <atomic>
+#include <cmath>
 #include <chrono>
 #include <condition_variable>
 #include <iomanip>
@@ -26,6 +27,7 @@
 #include <luxplan/core/format.h>
 #include <luxplan/daylight/datetime.h>
 #include <luxplan/daylight/daylight.h>
+#include <luxplan/daylight/weather.h>
 #include <luxplan/io/layout_io.h>
 #include <luxplan/io/scene_loader.h>
 #include <luxplan/lightsamplers/daylight_factor.h>
@@ -65,6 +67,21 @@ DaylightParams daylightAt(const Scene& scene, const std::string& at) {
     DaylightParams d = *scene.daylight;
     d.from = *t;
     d.to.reset();
+    if (d.weather) {
+        // The file's hour that contains the time (its month, day and hour in the file's
+        // time zone, the year ignored), placed and reported at its middle.
+        const WeatherFile& w = *d.weather;
+        const std::vector<size_t> hours = weatherHoursIn(w, *t, std::nullopt);
+        if (hours.empty())
+            throw std::runtime_error("--at " + at + ": no hour of " + w.file.string() + " contains it");
+        const WeatherHour& h = w.hours[hours.front()];
+        for (auto [value, what] : {std::pair{h.directNormalWm2, "direct normal"}, std::pair{h.diffuseHorizontalWm2, "diffuse horizontal"}})
+            if (std::isnan(value))
+                throw FileError(w.file.string(), std::to_string(h.line),
+                                "--at " + at + ": the " + what + " irradiance of that hour (" + w.middleOf(h).str() +
+                                    ") is missing (the file's code 9999)");
+        d.from = w.middleOf(h);
+    }
     return d;
 }
 
@@ -205,9 +222,11 @@ void runMeasure(const MeasureArgs& args) {
     // Said before the daylight's bake, the first thing that takes time.
     warnLargeMeasurement(scene, pathsPerPoint, "measuring");
     std::optional<DaylightEnvironment> daylight;
+    std::string atReported = args.at;  // a weather file's hour is reported at its middle
     if (!args.at.empty()) {
         Scene instant = scene;
         instant.daylight = daylightAt(scene, args.at);
+        if (instant.daylight->weather) atReported = instant.daylight->from->str();
         // The same warning as a scene whose period is that instant: after sunset.
         for (const Diagnostic& w : darkDaylight(instant))
             std::cerr << scene.file.string() << ": --at " << args.at << ": warning: " << w.message << "\n";
@@ -274,7 +293,7 @@ void runMeasure(const MeasureArgs& args) {
                               {"G", geometry.cost}, {"C", cost}, {"C_std_error", w * lightingError},
                               {"geometric_rules_pass", !geometry.rejected},
                               {"seconds", seconds}};
-        if (!args.at.empty()) out["at"] = args.at;
+        if (!args.at.empty()) out["at"] = atReported;
         std::cout << out.dump(2) << "\n";
         return;
     }

@@ -4,9 +4,11 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <stdexcept>
 
 #include <luxplan/core/format.h>
 #include <luxplan/daylight/cie_sky.h>
+#include <luxplan/daylight/perez_sky.h>
 #include <luxplan/daylight/preetham.h>
 #include <luxplan/daylight/solar_position.h>
 
@@ -28,8 +30,18 @@ bool usesTurbidity(const DaylightParams& p) {
     return p.model == SkyModelType::Preetham || (p.model == SkyModelType::CieGeneral && sunFromPreetham(p));
 }
 
-// Does the sky's shape depend on where the sun is?
+// Does the sky's shape depend on where the sun is, given by a time or a fixed sun?
 bool needsSunPosition(SkyModelType m) { return m == SkyModelType::Preetham || m == SkyModelType::CieGeneral; }
+// Does the model bring its own sun? (Perez: the weather file's, at each hour's time.)
+bool hasOwnSun(SkyModelType m) { return needsSunPosition(m) || m == SkyModelType::Perez; }
+
+// Day of the year of a month and day in a year of 365 days (as gendaylit's jdate; 29
+// February counts as 1 March), for the sun's distance in the Perez brightness.
+int dayOfYear(int month, int day) {
+    int n = day;
+    for (int m = 1; m < month; ++m) n += daysInMonth(2001, m);
+    return n;
+}
 
 // Number of instants from..to every step (to included when on the grid), in floating
 // point: a tiny step gives a count beyond any integer, compared with the limit before
@@ -53,7 +65,7 @@ const EnumNames<SkyModelType>& skyModelNames() {
 bool DaylightParams::sunEnabled() const {
     if (sunOverride) return true;
     if (sun) return *sun;
-    return needsSunPosition(model);
+    return hasOwnSun(model);
 }
 
 std::vector<Diagnostic> validateDaylight(const DaylightParams& p, const Site& site) {
@@ -105,7 +117,9 @@ std::vector<Diagnostic> validateDaylight(const DaylightParams& p, const Site& si
                                                            " exceeds the limit of " + formatNumber(limits::kMaxIlluminanceLx));
         if (p.from || p.to) add("/daylight/sun", "only one of \"sun\" override and \"from\"/\"to\"");
     }
-    if (!needsSunPosition(p.model) && p.sunEnabled() && !(p.sunOverride && p.sunOverride->normalIlluminanceLx))
+    if (p.model == SkyModelType::Perez && p.sunOverride)
+        add("/daylight/sun", "sky model \"perez\" takes its sun from the weather file; \"sun\" may only be true or false");
+    if (!hasOwnSun(p.model) && p.sunEnabled() && !(p.sunOverride && p.sunOverride->normalIlluminanceLx))
         add("/daylight/sun", "sky model " + inQuotes(model) +
                                  " has no sun of its own; set \"sun\": false or give a fixed sun with "
                                  "\"normal_illuminance_lx\"");
@@ -126,6 +140,10 @@ std::vector<Diagnostic> validateDaylight(const DaylightParams& p, const Site& si
                                               formatNumber(stepCount(*p.from, *p.to, p.stepMinutes)) +
                                               " time steps, which exceeds the limit of " + std::to_string(kMaxDaylightSteps));
     }
+    if (p.model == SkyModelType::Perez && p.weather && weatherHoursIn(*p.weather, p.from, p.to).empty())
+        add(p.to ? "/daylight/to" : "/daylight/from",
+            "no hour of the weather file has its middle in " + (p.from ? p.from->str() : std::string("...")) +
+                (p.to ? " to " + p.to->str() : std::string()) + " (compared by month, day and time of day)");
     range("/daylight/ground_reflectance", "ground_reflectance", p.groundReflectance, 0, 1);
     if (!(p.pressureMbar > 0) || !std::isfinite(p.pressureMbar))
         add("/daylight/pressure_mbar", "pressure_mbar " + formatNumber(p.pressureMbar) + " must be > 0");
@@ -144,7 +162,28 @@ std::vector<DaylightInstant> daylightInstants(const DaylightParams& p, const Sit
         return preethamSunNormalIlluminance(p.turbidity, radians(90 - altitudeDeg));
     };
 
-    if (p.sunOverride) {
+    if (p.model == SkyModelType::Perez) {
+        const WeatherFile& weather = *p.weather;
+        SolarObserver observer;
+        observer.latitudeDeg = site.latitudeDeg;
+        observer.longitudeDeg = site.longitudeDeg;
+        observer.pressureMbar = p.pressureMbar;
+        observer.temperatureC = p.temperatureC;
+        const std::vector<size_t> hours = weatherHoursIn(weather, p.from, p.to);
+        out.reserve(hours.size());
+        for (size_t index : hours) {
+            DaylightInstant i;
+            i.weatherHour = index;
+            i.time = weather.middleOf(weather.hours[index]);
+            SolarPosition sp = solarPosition(*i.time, observer);
+            i.hasSunPosition = true;
+            i.sunAltitudeDeg = sp.altitudeDeg;
+            i.sunAzimuthDeg = sp.azimuthDeg;
+            i.sunDirection = horizonToScene(sp.altitudeDeg, sp.azimuthDeg, site.northDeg);
+            if (sunOn && sp.altitudeDeg >= 0) i.sunNormalIlluminanceLx = perezConditionOf(p, i).directNormalLx;
+            out.push_back(i);
+        }
+    } else if (p.sunOverride) {
         DaylightInstant i;
         i.hasSunPosition = true;
         i.sunAltitudeDeg = p.sunOverride->altitudeDeg;
@@ -177,6 +216,53 @@ std::vector<DaylightInstant> daylightInstants(const DaylightParams& p, const Sit
     return out;
 }
 
+PerezSkyCondition perezConditionOf(const DaylightParams& p, const DaylightInstant& i) {
+    if (!p.weather || !i.weatherHour || *i.weatherHour >= p.weather->hours.size())
+        throw std::invalid_argument("perezConditionOf: the instant has no hour of the scene's weather file");
+    const WeatherHour& h = p.weather->hours[*i.weatherHour];
+    PerezSkyInput in;
+    in.sunZenithDeg = 90 - i.sunAltitudeDeg;
+    if (!(in.sunZenithDeg < 90)) return {};  // night: whatever the file says, a dark sky
+    for (auto [value, what] : {std::pair{h.directNormalWm2, "direct normal"}, std::pair{h.diffuseHorizontalWm2, "diffuse horizontal"}})
+        if (std::isnan(value))
+            throw FileError(p.weather->file.string(), std::to_string(h.line),
+                            "the " + std::string(what) + " irradiance of " + i.time.value_or(p.weather->middleOf(h)).str() +
+                                " is missing (the file's code 9999), with the sun up: the Perez sky of that hour needs it");
+    in.directNormalWm2 = h.directNormalWm2;
+    in.diffuseHorizontalWm2 = h.diffuseHorizontalWm2;
+    in.dayOfYear = dayOfYear(h.month, h.day);
+    in.dewPointC = h.dewPointC;  // missing (NaN): 2 cm of water, gendaylit's default
+    return perezSkyCondition(in);
+}
+
+std::function<double(const Vec3&)> skyLuminanceAt(const DaylightParams& p, const DaylightInstant& i) {
+    const bool sunUp = i.hasSunPosition && i.sunAltitudeDeg >= 0;
+    switch (p.model) {
+        case SkyModelType::CieOvercast: {
+            const CieOvercastSky sky(*p.horizontalIlluminanceLx);
+            return [sky](const Vec3& w) { return w.z < 0 ? 0.0 : sky.luminance(w); };
+        }
+        case SkyModelType::Uniform: {
+            const double l = *p.luminanceNits;
+            return [l](const Vec3& w) { return w.z < 0 ? 0.0 : l; };
+        }
+        case SkyModelType::Preetham:
+            if (!sunUp) break;
+            return [sky = PreethamSky(p.turbidity, i.sunDirection)](const Vec3& w) {
+                return w.z < 0 ? 0.0 : luminance(sky.row(w.z).rgb(w));
+            };
+        case SkyModelType::CieGeneral:
+            if (!sunUp) break;
+            return [sky = CieGeneralSky(p.cieSkyType, i.sunDirection, *p.horizontalIlluminanceLx)](const Vec3& w) {
+                return w.z < 0 ? 0.0 : sky.luminance(w);
+            };
+        case SkyModelType::Perez:
+            if (!sunUp) break;
+            return [sky = PerezAllWeatherSky(perezConditionOf(p, i), i.sunDirection)](const Vec3& w) { return sky.luminance(w); };
+    }
+    return [](const Vec3&) { return 0.0; };
+}
+
 DaylightEnvironment buildDaylight(const DaylightParams& p, const Site& site, const DaylightBakeOptions& options) {
     const std::vector<DaylightInstant> instants = daylightInstants(p, site);
     SkyMap map(options.width, options.height);
@@ -201,6 +287,16 @@ DaylightEnvironment buildDaylight(const DaylightParams& p, const Site& site, con
                 PreethamSky sky(p.turbidity, i.sunDirection);
                 map.accumulate([&](double z) { return [row = sky.row(z)](const Vec3& w) { return row.rgb(w); }; },
                                weight, ss, 0, skyRows);
+            } else if (p.model == SkyModelType::Perez) {
+                const PerezSkyCondition c = perezConditionOf(p, i);
+                if (c.lit && c.diffuseHorizontalLx > 0) {  // an unlit hour leaves its share dark
+                    const PerezAllWeatherSky sky(c, i.sunDirection);
+                    map.accumulate(
+                        [&](double z) {
+                            return [row = sky.row(z)](const Vec3& w) { double l = row.luminance(w); return Vec3(l, l, l); };
+                        },
+                        weight, ss, 0, skyRows);
+                }
             } else {
                 CieGeneralSky sky(p.cieSkyType, i.sunDirection, *p.horizontalIlluminanceLx);
                 map.accumulate(
