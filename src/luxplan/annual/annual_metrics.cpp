@@ -131,8 +131,8 @@ std::string annualText(const AnnualSeries& series) {
     auto number = [](double v) { return std::isfinite(v) ? fixedDigits(v, 1) : std::string("-"); };
     std::string out;
     char line[256];
-    std::snprintf(line, sizeof line, "%-24s%8s%12s%12s%9s%9s%9s%9s%9s\n", "sampler", "hours", "mean", "in range %", "sDA %",
-                  "ASE %", "UDI<100", "UDI ok", "UDI>3k");
+    std::snprintf(line, sizeof line, "%-24s%8s%12s%12s%9s%9s%12s%12s%12s\n", "sampler", "hours", "mean", "in range %", "sDA %",
+                  "ASE %", "UDI <100 %", "100-3000 %", ">3000 %");
     out += line;
     for (const AnnualSampler& s : series.samplers) {
         const AnnualMetrics m = annualMetrics(s, series);
@@ -140,7 +140,7 @@ std::string annualText(const AnnualSeries& series) {
                       percent(m.inRange).c_str());
         out += line;
         if (m.planar) {
-            std::snprintf(line, sizeof line, "%9s%9s%9s%9s%9s", percent(m.sda).c_str(), percent(m.ase).c_str(),
+            std::snprintf(line, sizeof line, "%9s%9s%12s%12s%12s", percent(m.sda).c_str(), percent(m.ase).c_str(),
                           percent(m.udi[0]).c_str(), percent(m.udi[1]).c_str(), percent(m.udi[2]).c_str());
             out += line;
         }
@@ -148,7 +148,8 @@ std::string annualText(const AnnualSeries& series) {
     }
     out += std::to_string(series.hours.size()) + " hours";
     if (!series.hours.empty()) out += " from " + series.hours.front().str() + " to " + series.hours.back().str();
-    out += "; sDA300/50% and ASE1000,250h (IES LM-83-12), UDI shares of point-hours <100, 100-3000, >3000 lx\n";
+    out += "\nmean in the sampler's unit (lx for planar samplers); sDA300/50% and ASE1000,250h of IES LM-83-12 over "
+           "the uncovered points; UDI: shares of point-hours below 100, in 100-3000, above 3000 lx\n";
     return out;
 }
 
