@@ -48,14 +48,14 @@ Image renderTemporalMap(const AnnualSampler& sampler, const std::vector<DateTime
     const int plotW = f.days * f.dayWidth, plotH = 24 * f.hourHeight;
     Image image(f.left + plotW + legendWidth, f.top + plotH + bottom, kWhite);
 
-    const std::string title = options.title.empty() ? sampler.name : options.title;
+    const size_t measured = std::min(hours.size(), sampler.values.size());
+    const std::string title = options.title.empty() ? sampler.name + ", " + std::to_string(measured) + " hours" : options.title;
     LabelFont(18).draw(image, f.left, 4, title, kBlack);
 
     // Every cell grey, then each measured hour in its colour.
     image.fillRect(f.left, f.top, f.left + plotW, f.top + plotH, kUnmeasuredColor);
     const FalseColor colors = options.colors ? *options.colors : temporalMapColors(sampler);
-    const size_t n = std::min(hours.size(), sampler.values.size());
-    for (size_t i = 0; i < n; ++i) {
+    for (size_t i = 0; i < measured; ++i) {
         const double v = sampler.values[i];
         if (!std::isfinite(v)) continue;
         const int day = std::min(dayOfYear(hours[i]), f.days);

@@ -17,7 +17,7 @@ inline constexpr Rgb kUnmeasuredColor{205, 205, 205};  // hours not in the serie
 struct TemporalMapOptions {
     int dayWidth = 2;      // pixels per day
     int hourHeight = 8;    // pixels per hour
-    std::string title;     // default: the sampler's name
+    std::string title;     // default: the sampler's name and its number of hours
     std::string unit;      // above the legend (e.g. "lx")
     std::optional<FalseColor> colors;  // default: temporalMapColors(sampler)
 };
