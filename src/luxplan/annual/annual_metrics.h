@@ -19,7 +19,8 @@ namespace luxplan {
 // analysis points that "meet or exceed" 300 lx for "at least 50%" of the analysis hours;
 // ASE1000,250 the share of points that "exceed" 1000 lx of direct sunlight for "more
 // than 250 hours". Honeybee counts the same way (value >= 300, share >= 50%; value >
-// 1000, hours > 250).
+// 1000, hours > 250). No blinds are modelled: LM-83's sDA (2.2.6) closes them in hours
+// when more than 2% of the points get more than 1000 lx of direct sun.
 inline constexpr double kSdaIlluminance = 300;   // lx, inclusive (>=)
 inline constexpr double kSdaTimeShare = 0.5;     // of the hours, inclusive (>=)
 inline constexpr double kAseIlluminance = 1000;  // lx of direct sun, exclusive (>)
