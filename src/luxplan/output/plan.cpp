@@ -2,6 +2,7 @@
 // that colours its floor.
 #include <luxplan/output/plan.h>
 
+#include <cmath>
 #include <cstdio>
 
 #include <luxplan/core/estimator.h>
@@ -556,6 +557,24 @@ void drawWorkPlaneLegend(Image& image, const PlanFrame& f, const IlluminanceGrid
     labels.reserve(lx - 50, ly - 14, image.width(), sy + textHeight(text) + 2);
 }
 
+// PlanData::cells: each quad in its value's colour, or the hatch grey without one.
+void drawPlanCells(Image& image, const PlanFrame& f, const PlanCells& cells) {
+    for (size_t k = 0; k < cells.quads.size(); ++k) {
+        std::vector<Vec2> poly;
+        for (const Vec3& p : cells.quads[k]) poly.push_back(f.map(p));
+        const double v = k < cells.values.size() ? cells.values[k] : std::nan("");
+        image.fillPolygon(poly, std::isfinite(v) ? cells.colors.color(v) : kHatchColor);
+    }
+}
+
+// The cells' legend where the work plane's goes.
+void drawCellsLegend(Image& image, const PlanFrame& f, const PlanCells& cells, LabelPlacer& labels) {
+    const int lx = int(f.roomHi.x + f.wall + 62), ly = int(f.roomLo.y + 30);
+    const int lh = std::min(300, std::max(60, int(f.roomHi.y - f.roomLo.y) - 60));
+    drawLegend(image, cells.colors, lx, ly, 16, lh, cells.unit);
+    labels.reserve(lx - 50, ly - 14, image.width(), ly + lh + 10);
+}
+
 }  // namespace
 
 Image renderPlan(const Scene& scene, const Layout& layout, const PlanOptions& options, const PlanData& data,
@@ -568,7 +587,8 @@ Image renderPlan(const Scene& scene, const Layout& layout, const PlanOptions& op
     f.margin = std::max(40, options.margin);
     const int titleHeight = options.title.empty() ? 0 : 24;
     const bool hasMap = data.workPlane && !data.workPlane->values.empty();
-    const int legendWidth = hasMap ? 150 : 0;
+    const bool hasCells = data.cells && !data.cells->quads.empty();
+    const int legendWidth = hasMap || hasCells ? 150 : 0;
     const Vec3 size = f.bounds.size();
     const int planW = int(std::ceil(size.x * s));
     f.planH = int(std::ceil(size.y * s));
@@ -601,6 +621,7 @@ Image renderPlan(const Scene& scene, const Layout& layout, const PlanOptions& op
         drawWorkPlane(image, f, g, falseColor, free);
         if (options.contours) contourLabels = drawContours(image, f, g, falseColor, free, options.labelHeight);
     }
+    if (hasCells) drawPlanCells(image, f, *data.cells);
     if (room) drawOpenings(image, f, *room);
     const std::vector<PendingLabel> staticLabels = drawStaticItems(image, f, scene, options);
     const std::vector<PendingLabel> entityLabels = drawFurniture(image, f, scene, world, options);
@@ -608,7 +629,10 @@ Image renderPlan(const Scene& scene, const Layout& layout, const PlanOptions& op
     const std::vector<PendingLabel> samplerLabels = drawSamplers(image, f, scene, world, data, options);
 
     LabelPlacer labels(image, labelFont);
-    if (hasMap) drawWorkPlaneLegend(image, f, *data.workPlane, falseColor, free, labels);
+    if (hasCells)
+        drawCellsLegend(image, f, *data.cells, labels);
+    else if (hasMap)
+        drawWorkPlaneLegend(image, f, *data.workPlane, falseColor, free, labels);
 
     // Labels last, so nothing covers them, and none over another: sampler results
     // first (they may go further from their samplers, with a leader), then names and

@@ -4,6 +4,7 @@
 // contours, a legend centred on the targets and Em, Emin, Emax and U0.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -67,15 +68,26 @@ struct PlanOptions {
     std::optional<FalseColor> colors;  // default: planFalseColor of the work plane
 };
 
+// Coloured quadrilaterals on the floor in place of the work-plane map, with their own
+// legend (e.g. the annual plan's share of hours in range at each sampler point).
+struct PlanCells {
+    std::vector<std::array<Vec3, 4>> quads;  // world corners, in order around the quad
+    std::vector<double> values;              // one per quad; NaN: hatched (no value, e.g. covered)
+    FalseColor colors;
+    std::string unit;                        // above the legend
+};
+
 // What was measured for the layout (all optional).
 struct PlanData {
     std::optional<std::vector<SamplerResult>> samplers;  // measureSamplers(...).samplers
     std::optional<IlluminanceGrid> workPlane;
+    std::optional<PlanCells> cells;  // drawn over the work plane, if both are given
 };
 
 // The plan at PlanOptions::pixelsPerMetre, +y up, with a scale bar, a north arrow
 // (Site::northDeg) and, when a work-plane grid is given, its isolux contours, its
-// legend and its Em, Emin, Emax and U0 on the right. Samplers are green when they meet
+// legend and its Em, Emin, Emax and U0 on the right (PlanData::cells: the cells
+// instead, with their legend). Samplers are green when they meet
 // their targets, red otherwise, grey when no results are given; with results, a table
 // under the plan gives each work plane's (planar sampler's) Em, Emin, Emax and U0.
 // A label drawn on the plan: its text and its box (pixels, the background's edges).
