@@ -21,6 +21,8 @@
 #include "daylight_progress.h"
 #include "option_checks.h"
 #include "shared_options.h"
+#include <luxplan/annual/annual_metrics.h>
+#include <luxplan/annual/scene_year.h>
 #include <luxplan/checks/scene_warnings.h>
 #include <luxplan/constraints/geometry_cost.h>
 #include <luxplan/constraints/penalty.h>
@@ -45,6 +47,7 @@ nlohmann::json bound(double v) { return std::isfinite(v) ? nlohmann::json(v) : n
 struct MeasureArgs : SharedArgs {
     bool json = false, daylightFactor = false;
     std::string at;  // ISO 8601: one instant of daylight instead of the period
+    bool annual = false;  // every occupied hour of the period with the sun up, by daylight coefficients
 };
 
 // The tracing settings as measure applies them (its own defaults where the scene's
@@ -201,6 +204,43 @@ void runDaylightFactor(const MeasureArgs& args, const Scene& scene, const Layout
               << " per point), " << df.measured.rays.closest + df.measured.rays.shadow << " rays in " << seconds << " s\n";
 }
 
+// The year at the samplers `which` (daylight coefficients, annual/scene_year.h), at the
+// measurement's paths and seed; progress on stderr every 5 s once it has run that long.
+// A sampler whose points are no single sensors is said and left out.
+AnnualSeries measureYear(const Scene& scene, const EmbreeScene& rt, const std::vector<size_t>& which, int paths,
+                         uint64_t seed, const std::string& what) {
+    std::optional<DaylightCoefficients> dc;
+    try {
+        dc.emplace(sceneYear(scene));
+    } catch (const std::runtime_error& e) {
+        throw std::runtime_error(what + ": " + e.what());
+    }
+    const PathTracer basis(rt, &dc->basis(), DaylightCoefficients::tracing());
+    auto last = std::chrono::steady_clock::now();
+    std::mutex lock;
+    const bool tty = isatty(STDERR_FILENO);
+    auto progress = [&](size_t done, size_t total) {
+        const std::lock_guard<std::mutex> guard(lock);
+        const auto now = std::chrono::steady_clock::now();
+        if (done < total && now - last < std::chrono::seconds(5)) return;
+        last = now;
+        if (tty || done < total)
+            std::cerr << (tty ? "\r" : "") << what << ": " << done << " of " << total << " points traced ("
+                      << dc->hours().size() << " hours)" << (tty ? (done < total ? "\033[K" : "\033[K\n") : "\n") << std::flush;
+    };
+    AnnualSeries series = dc->measure(basis, which, paths, seed, progress);
+    for (size_t k : which) {
+        bool measured = false;
+        for (const AnnualSampler& a : series.samplers) measured = measured || a.name == scene.samplers[k].name;
+        if (!measured)
+            std::cerr << scene.file.string() << ": " << what << ": sampler \"" << scene.samplers[k].name << "\" ("
+                      << scene.samplers[k].type->name()
+                      << ") has no hourly values: its points are no single sensors (planar, volume and cylindrical "
+                         "samplers are)\n";
+    }
+    return series;
+}
+
 void runMeasure(const MeasureArgs& args) {
     auto start = std::chrono::steady_clock::now();
     Scene scene = loadSceneWithSettings(args);
@@ -250,6 +290,20 @@ void runMeasure(const MeasureArgs& args) {
         result = measureSamplers(tracer, options);
     }
     options.pathsDone = nullptr;  // the progress's counter is gone
+    // The year: with --annual every sampler's, else the annual goals' (their terms read it).
+    std::optional<AnnualSeries> year;
+    double yearSeconds = 0;
+    if (args.annual || !annualGoalSamplers(scene).empty()) {
+        std::vector<size_t> which = annualGoalSamplers(scene);
+        if (args.annual) {
+            which.clear();
+            for (size_t k = 0; k < scene.samplers.size(); ++k) which.push_back(k);
+        }
+        const auto yearStart = std::chrono::steady_clock::now();
+        year = measureYear(scene, rt, which, pathsPerPoint, options.seed, args.annual ? "--annual" : "annual goals");
+        yearSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - yearStart).count();
+        setAnnualInRange(scene, *year, result.samplers);
+    }
     // The objective of Eq. 1 for this layout, as optimize reports it (report.json's C).
     const double lighting = lightingCostOfResults(scene, result.samplers);
     const double lightingError = lightingCostError(scene, result.samplers);
@@ -294,6 +348,10 @@ void runMeasure(const MeasureArgs& args) {
                               {"geometric_rules_pass", !geometry.rejected},
                               {"seconds", seconds}};
         if (!args.at.empty()) out["at"] = atReported;
+        if (year && args.annual) {
+            addAnnualJson(out, *year);
+            out["annual_seconds"] = yearSeconds;
+        }
         std::cout << out.dump(2) << "\n";
         return;
     }
@@ -327,6 +385,9 @@ void runMeasure(const MeasureArgs& args) {
     std::cout << std::fixed << std::setprecision(2) << result.paths << " paths (" << (options.adaptive ? "adaptive, at most " : "")
               << options.pathsPerPoint << " per point), "
               << result.rays.closest + result.rays.shadow << " rays in " << seconds << " s\n";
+    if (year && args.annual)
+        std::cout << "\n" << annualText(*year) << std::fixed << std::setprecision(2) << "the year: " << year->hours.size()
+                  << " hours (occupied, the sun up) from daylight coefficients in " << yearSeconds << " s\n";
 }
 
 }  // namespace
@@ -367,10 +428,15 @@ void registerMeasureCommand(CLI::App& app, int& threads) {
     auto* at = cmd->add_option("--at", args->at,
                                "One instant of daylight (ISO 8601 with its UTC offset, e.g. 2026-03-20T16:30+02:00) instead "
                                "of the scene's period averaged");
+    auto* annual = cmd->add_flag("--annual", args->annual,
+                                 "Every occupied hour of the daylight's period with the sun up (a weather file's year), "
+                                 "from daylight coefficients: each sampler's hourly values, in-range share, sDA, ASE, UDI")
+                       ->excludes(at);
     cmd->add_flag("--daylight-factor", args->daylightFactor,
                   "Each planar sampler's mean daylight factor (%): its illuminance under the CIE standard overcast "
                   "sky over the open horizontal plane's, the luminaires off (the scene's own daylight not used)")
-        ->excludes(at);
+        ->excludes(at)
+        ->excludes(annual);
     cmd->callback([args] { namingScene(args->scene, [&] { runMeasure(*args); }); });
 }
 

@@ -77,6 +77,13 @@ private:
 
 }  // namespace
 
+std::vector<DaylightInstant> annualHours(const DaylightParams& params, const Site& site) {
+    std::vector<DaylightInstant> out;
+    for (const DaylightInstant& i : daylightInstants(params, site))
+        if (i.time && i.hasSunPosition && i.sunAltitudeDeg > 0 && occupiedAt(params.occupied, *i.time)) out.push_back(i);
+    return out;
+}
+
 DaylightCoefficients::DaylightCoefficients(std::vector<DaylightInstant> hours,
                                            const std::function<SkyLuminance(size_t hour)>& skyOf,
                                            const DaylightCoefficientOptions& options)
@@ -98,7 +105,7 @@ DaylightCoefficients::DaylightCoefficients(std::vector<DaylightInstant> hours,
 
     // Each hour's patch luminances: the mean over n x n directions equal in solid angle,
     // and the ground's from the light on the open horizontal plane, as the baked sky's.
-    const int patches = sky_.count(), n = std::max(2, 8 / sky_.subdivision());
+    const int patches = sky_.count(), n = std::max(2, 4 / sky_.subdivision());
     luminance_.assign(hours_.size(), std::vector<double>(size_t(patches), 0.0));
     parallelFor(hours_.size(), [&](size_t h) {
         const SkyLuminance sky = skyOf(h);

@@ -5,6 +5,8 @@
 #include <luxplan/daylight/perez_sky.h>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 
 namespace luxplan {
 namespace {
@@ -156,19 +158,26 @@ PerezAllWeatherSky::PerezAllWeatherSky(const PerezSkyCondition& condition, const
     if (!condition.lit || !(condition.diffuseHorizontalLx > 0)) return;
     // Horizontal illuminance of the relative distribution: midpoint rule in (cos theta, phi)
     // (equal solid angle cells), phi measured from the sun's azimuth over [0, pi] and doubled
-    // (the distribution is symmetric about the sun's vertical plane). 256 x 256 cells resolve
-    // the circumsolar peak (its scale 1/|d| is at least 7 deg) to about 1e-4.
+    // (the distribution is symmetric about the sun's vertical plane). 128 x 128 cells resolve
+    // the circumsolar peak (its scale 1/|d| is at least 7 deg) to a few 1e-4; the gradation
+    // is one per row and the columns' sines one per sky, since a year builds thousands.
     const double sr = std::hypot(sun_.x, sun_.y);
     const Vec3 u = sr > 1e-12 ? Vec3(sun_.x / sr, sun_.y / sr, 0) : Vec3(1, 0, 0), v(-u.y, u.x, 0);
-    const int nz = 256, nphi = 256;
+    constexpr int nz = 128, nphi = 128;
+    static const std::array<Vec2, nphi> columns = [] {
+        std::array<Vec2, nphi> c{};
+        for (int j = 0; j < nphi; ++j) c[size_t(j)] = {std::cos(kPi * (j + 0.5) / nphi), std::sin(kPi * (j + 0.5) / nphi)};
+        return c;
+    }();
     double sum = 0;
     for (int i = 0; i < nz; ++i) {
-        const double z = (i + 0.5) / nz, r = std::sqrt(1 - z * z);
-        for (int j = 0; j < nphi; ++j) {
-            const double phi = kPi * (j + 0.5) / nphi;
-            const Vec3 w = u * (r * std::cos(phi)) + v * (r * std::sin(phi)) + Vec3(0, 0, z);
-            sum += relativeLuminance(w) * z;
+        const double z = (i + 0.5) / nz, r = std::sqrt(1 - z * z), g = gradation(z);
+        double row = 0;
+        for (const Vec2& c : columns) {
+            const Vec3 w = u * (r * c.x) + v * (r * c.y) + Vec3(0, 0, z);
+            row += std::max(0.0, g * indicatrix(w));
         }
+        sum += row * z;
     }
     const double relativeIlluminance = sum * (1.0 / nz) * (2 * kPi / nphi);
     if (relativeIlluminance > 0) scale_ = condition.diffuseHorizontalLx / relativeIlluminance;

@@ -1,0 +1,38 @@
+#include <luxplan/annual/scene_year.h>
+
+#include <stdexcept>
+
+#include <luxplan/annual/annual_metrics.h>
+
+namespace luxplan {
+
+DaylightCoefficients sceneYear(const Scene& scene) {
+    if (!scene.daylight) throw std::runtime_error("the scene has no \"daylight\": an annual measurement needs its hours");
+    const DaylightParams& d = *scene.daylight;
+    std::vector<DaylightInstant> hours = annualHours(d, scene.site);
+    if (hours.empty())
+        throw std::runtime_error("no occupied hour with the sun above the horizon in the daylight's period "
+                                 "(its \"from\"/\"to\" and \"occupied\")");
+    DaylightCoefficientOptions options;
+    options.groundReflectance = d.groundReflectance;
+    return DaylightCoefficients(
+        hours, [&d, &hours](size_t h) -> SkyLuminance { return skyLuminanceAt(d, hours[h]); }, options);
+}
+
+std::vector<size_t> annualGoalSamplers(const Scene& scene) {
+    std::vector<size_t> out;
+    for (size_t k = 0; k < scene.samplers.size(); ++k)
+        if (scene.samplers[k].annual) out.push_back(k);
+    return out;
+}
+
+void setAnnualInRange(const Scene& scene, const AnnualSeries& series, std::vector<SamplerResult>& results) {
+    for (const AnnualSampler& a : series.samplers)
+        for (size_t k = 0; k < scene.samplers.size() && k < results.size(); ++k)
+            if (scene.samplers[k].name == a.name) {
+                results[k].annualInRange = annualMetrics(a, series).inRange;
+                results[k].annualHours = int(series.hours.size());
+            }
+}
+
+}  // namespace luxplan
