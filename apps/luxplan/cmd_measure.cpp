@@ -371,7 +371,7 @@ void runMeasure(const MeasureArgs& args) {
         // A statistics goal's line, under its sampler's columns (U0 is a ratio).
         for (size_t i = 1; i < row.terms().size(); ++i) {
             const LightingTerm& t = row.terms()[i];
-            const bool ratio = t.statistic == Statistic::U0;
+            const bool ratio = t.statistic == Statistic::U0 || t.statistic == Statistic::AnnualInRange;
             std::cout << std::left << std::setw(24) << ("    " + std::string(statisticNames().name(t.statistic)))
                       << std::setw(12) << "" << std::right << std::fixed << std::setprecision(ratio ? 3 : 1) << std::setw(12)
                       << t.value << std::setw(10) << t.standardError << std::setw(8) << (ratio ? "" : s.type->unit())

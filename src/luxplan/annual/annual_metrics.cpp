@@ -115,6 +115,12 @@ void addAnnualJson(nlohmann::json& measureJson, const AnnualSeries& series) {
             annual["ase"] = annualNumber(m.ase);
             annual["udi"] = udi;
             annual["points_in_range"] = annualNumbers(m.pointsInRange);
+            // Each point's hourly values (null for a covered point), as Radiance's and
+            // Honeybee's annual results give them.
+            nlohmann::json points = nlohmann::json::array();
+            for (const std::vector<double>& p : s.points)
+                points.push_back(p.empty() ? nlohmann::json(nullptr) : annualNumbers(p));
+            annual["point_values"] = points;
             // The contract's "planar samplers add sda, ase, udi" read both ways: inside
             // "annual" and beside it.
             (*object)["sda"] = annual["sda"];

@@ -598,7 +598,7 @@ void samplerTable(std::ostringstream& out, const Scene& scene, const std::vector
         for (size_t k = 0; k < rows.size(); ++k)
             for (size_t i = 1; presented[k] && i < presented[k]->terms().size(); ++i) {
                 const LightingTerm& t = presented[k]->terms()[i];
-                const int digits = t.statistic == Statistic::U0 ? 2 : 1;
+                const int digits = t.statistic == Statistic::U0 || t.statistic == Statistic::AnnualInRange ? 2 : 1;
                 const GoalStatus status = goalStatus(t.penalty == 0, t.value, t.standardError, t.targetMin, t.targetMax);
                 out << "<tr>" << cell(escapeHtml(scene.samplers[k].name)) << cell(statisticNames().name(t.statistic))
                     << "<td class=\"num\">" << number(t.value, digits) << "</td>" << cell(range(t.targetMin, t.targetMax, digits))
