@@ -215,7 +215,6 @@ AnnualSeries measureYear(const Scene& scene, const EmbreeScene& rt, const std::v
     } catch (const std::runtime_error& e) {
         throw std::runtime_error(what + ": " + e.what());
     }
-    const PathTracer basis(rt, &dc->basis(), DaylightCoefficients::tracing());
     auto last = std::chrono::steady_clock::now();
     std::mutex lock;
     const bool tty = isatty(STDERR_FILENO);
@@ -228,7 +227,7 @@ AnnualSeries measureYear(const Scene& scene, const EmbreeScene& rt, const std::v
             std::cerr << (tty ? "\r" : "") << what << ": " << done << " of " << total << " points traced ("
                       << dc->hours().size() << " hours)" << (tty ? (done < total ? "\033[K" : "\033[K\n") : "\n") << std::flush;
     };
-    AnnualSeries series = dc->measure(basis, which, paths, seed, progress);
+    AnnualSeries series = measureYearAt(*dc, rt, which, paths, seed, progress);
     for (size_t k : which) {
         bool measured = false;
         for (const AnnualSampler& a : series.samplers) measured = measured || a.name == scene.samplers[k].name;

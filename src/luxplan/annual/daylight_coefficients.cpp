@@ -38,8 +38,8 @@ DaylightEnvironment basisSky(const std::vector<Vec3>& sunBins) {
 class PathTally final : public DaylightTally {
 public:
     PathTally(const SkyPatches& sky, const SkyPatches& sunPatches, const std::vector<int>& binOfPatch,
-              const std::vector<Vec3>& sunBins)
-        : sky_(sky), sunPatches_(sunPatches), binOfPatch_(binOfPatch), sunBins_(sunBins) {}
+              const std::vector<Vec3>& sunBins, std::vector<BasisEntry>& entries)
+        : sky_(sky), sunPatches_(sunPatches), binOfPatch_(binOfPatch), sunBins_(sunBins), entries_(entries) {}
     void add(int source, const Vec3& towards, int depth, double value) override {
         if (value == 0) return;
         if (source == LightBudget::kSky) {
@@ -48,12 +48,6 @@ public:
             entries_.push_back({sky_.count() + nearestBin(towards), value});
         }
     }
-    void clear() { entries_.clear(); }
-    struct Entry {
-        int basis;
-        double value;
-    };
-    const std::vector<Entry>& entries() const { return entries_; }
 
 private:
     // The disk the direction lies in: its patch's, unless the disk reaches over the
@@ -72,7 +66,7 @@ private:
     const SkyPatches& sunPatches_;
     const std::vector<int>& binOfPatch_;
     const std::vector<Vec3>& sunBins_;
-    std::vector<Entry> entries_;
+    std::vector<BasisEntry>& entries_;
 };
 
 }  // namespace
@@ -132,89 +126,111 @@ PathTracerOptions DaylightCoefficients::tracing() {
 
 bool DaylightCoefficients::supports(const PlacedSampler& placed) { return placed.items() > 0 && placed.sensorOf(0) != nullptr; }
 
-PointCoefficients DaylightCoefficients::coefficients(const PathTracer& tracer, const PlacedSampler& placed, size_t sampler,
-                                                     int item, int paths, uint64_t seed) const {
-    const int bases = sky_.count() + int(sunBinDirections_.size());
-    paths = std::max(1, paths);
-    std::vector<double> sums(size_t(bases), 0.0);
-    PathTally tally(sky_, sunPatches_, binOfPatch_, sunBinDirections_);
+PathSamples::Sequence DaylightCoefficients::sequenceOf(size_t sampler, int item, uint64_t seed) {
+    return PathSamples::Sequence(hashValues({seed, kCoefficientTag, uint64_t(sampler), uint64_t(item)}));
+}
+
+bool DaylightCoefficients::tracePath(const PathTracer& tracer, const PlacedSampler& placed, const PathSamples::Sequence& sequence,
+                                     size_t sampler, int item, int path, uint64_t seed, std::vector<BasisEntry>& entries,
+                                     RayStats& stats, PathFootprint* footprint) const {
+    entries.clear();
+    PathTally tally(sky_, sunPatches_, binOfPatch_, sunBinDirections_, entries);
     PathParams params;
     params.daylight = &tally;
+    params.footprint = footprint;
+    Rng rng(hashValues({seed, kCoefficientTag, uint64_t(sampler), uint64_t(item), uint64_t(path)}));
+    PathSamples samples(rng, sequence, uint32_t(path));
+    PathContributions out(item);
+    placed.sample(tracer, item, samples, stats, params, out);
+    if (out.finite()) return true;
+    entries.clear();  // dropped, as the estimator drops it
+    return false;
+}
+
+PointCoefficients DaylightCoefficients::coefficients(const PathTracer& tracer, const PlacedSampler& placed, size_t sampler,
+                                                     int item, int paths, uint64_t seed) const {
+    paths = std::max(1, paths);
+    PointCoefficients c = emptyCoefficients();
+    std::vector<BasisEntry> entries;
     RayStats stats;
-    const PathSamples::Sequence sequence(hashValues({seed, kCoefficientTag, uint64_t(sampler), uint64_t(item)}));
+    const PathSamples::Sequence sequence = sequenceOf(sampler, item, seed);
     for (int p = 0; p < paths; ++p) {
-        tally.clear();
-        Rng rng(hashValues({seed, kCoefficientTag, uint64_t(sampler), uint64_t(item), uint64_t(p)}));
-        PathSamples samples(rng, sequence, uint32_t(p));
-        PathContributions out(item);
-        placed.sample(tracer, item, samples, stats, params, out);
-        if (!out.finite()) continue;  // dropped, as the estimator drops it
-        for (const PathTally::Entry& e : tally.entries()) sums[size_t(e.basis)] += e.value;
+        tracePath(tracer, placed, sequence, sampler, item, p, seed, entries, stats, nullptr);
+        add(entries, c);
     }
-    PointCoefficients c;
-    c.sky.assign(sums.begin(), sums.begin() + sky_.count());
-    c.sun.assign(sums.begin() + sky_.count(), sums.end());
-    for (double& v : c.sky) v /= paths;
-    for (double& v : c.sun) v /= paths;
+    scale(c, paths);
     // The sun straight at the point, for each hour's own position.
     const std::unique_ptr<Sensor> sensor = placed.sensorOf(item);
-    c.direct.assign(hours_.size(), 0.0);
     for (size_t h = 0; h < hours_.size(); ++h)
         if (hours_[h].sunUp()) c.direct[h] = tracer.directSun(*sensor, hours_[h].sunDirection, stats);
     return c;
 }
 
-AnnualSeries DaylightCoefficients::measure(const PathTracer& tracer, const std::vector<size_t>& which, int paths,
-                                           uint64_t seed, const std::function<void(size_t, size_t)>& progress) const {
-    const Scene& scene = tracer.rayTracer().scene();
+PointCoefficients DaylightCoefficients::emptyCoefficients() const {
+    PointCoefficients c;
+    c.sky.assign(size_t(sky_.count()), 0.0);
+    c.sun.assign(sunBinDirections_.size(), 0.0);
+    c.direct.assign(hours_.size(), 0.0);
+    return c;
+}
+
+void DaylightCoefficients::add(std::span<const BasisEntry> entries, PointCoefficients& c) const {
+    const int patches = sky_.count();
+    for (const BasisEntry& e : entries)
+        if (e.basis < patches) c.sky[size_t(e.basis)] += e.value;
+        else c.sun[size_t(e.basis - patches)] += e.value;
+}
+
+void DaylightCoefficients::scale(PointCoefficients& c, int paths) {
+    for (double& v : c.sky) v /= paths;
+    for (double& v : c.sun) v /= paths;
+}
+
+void DaylightCoefficients::hourly(const PointCoefficients& c, std::vector<double>& values, std::vector<double>& direct) const {
+    const size_t hours = hours_.size();
+    const int patches = sky_.count();
+    values.assign(hours, 0.0);
+    direct.assign(hours, 0.0);
+    for (size_t h = 0; h < hours; ++h) {
+        const std::vector<double>& L = luminance_[h];
+        double v = 0;
+        for (int p = 0; p < patches; ++p) v += c.sky[size_t(p)] * L[size_t(p)];
+        if (hourBins_[h] >= 0) {
+            const double En = hours_[h].sunNormalIlluminanceLx;
+            direct[h] = En * c.direct[h];
+            v += En * c.sun[size_t(hourBins_[h])] + direct[h];
+        }
+        values[h] = v;
+    }
+}
+
+std::vector<DaylightCoefficients::Point> DaylightCoefficients::points(const Scene& scene, const PathTracer& tracer,
+                                                                      const std::vector<size_t>& which,
+                                                                      std::vector<std::unique_ptr<PlacedSampler>>& placed) {
+    std::vector<Point> out;
+    placed.clear();
+    for (size_t k : which) {
+        std::unique_ptr<PlacedSampler> p = placeSampler(scene.samplers[k], tracer);
+        if (supports(*p))
+            for (int i = 0; i < p->items(); ++i)
+                if (!p->covered(i)) out.push_back({k, placed.size(), i});
+        placed.push_back(std::move(p));
+    }
+    return out;
+}
+
+AnnualSeries DaylightCoefficients::series(const Scene& scene, const std::vector<size_t>& which,
+                                          const std::vector<std::unique_ptr<PlacedSampler>>& placed,
+                                          const std::vector<Point>& points, std::vector<std::vector<double>>& values,
+                                          std::vector<std::vector<double>>& direct) const {
     const size_t hours = hours_.size();
     AnnualSeries out;
     for (const DaylightInstant& h : hours_) out.hours.push_back(h.time.value_or(DateTime{}));
-
-    struct Work {
-        size_t sampler;  // in `placed`
-        int item;
-    };
-    std::vector<Work> work;
-    std::vector<std::unique_ptr<PlacedSampler>> placed;
-    std::vector<size_t> kept;
-    for (size_t k : which) {
-        std::unique_ptr<PlacedSampler> p = placeSampler(scene.samplers[k], tracer);
-        if (!supports(*p)) continue;
-        for (int i = 0; i < p->items(); ++i)
-            if (!p->covered(i)) work.push_back({placed.size(), i});
-        placed.push_back(std::move(p));
-        kept.push_back(k);
-    }
-
-    // Each point's hours, from its coefficients.
-    std::vector<std::vector<double>> values(work.size()), direct(work.size());
-    std::atomic<size_t> done{0};
-    const int patches = sky_.count();
-    parallelFor(work.size(), [&](size_t w) {
-        const Work& job = work[w];
-        const PointCoefficients c = coefficients(tracer, *placed[job.sampler], kept[job.sampler], job.item, paths, seed);
-        values[w].assign(hours, 0.0);
-        direct[w].assign(hours, 0.0);
-        for (size_t h = 0; h < hours; ++h) {
-            const std::vector<double>& L = luminance_[h];
-            double v = 0;
-            for (int p = 0; p < patches; ++p) v += c.sky[size_t(p)] * L[size_t(p)];
-            if (hourBins_[h] >= 0) {
-                const double En = hours_[h].sunNormalIlluminanceLx;
-                direct[w][h] = En * c.direct[h];
-                v += En * c.sun[size_t(hourBins_[h])] + direct[w][h];
-            }
-            values[w][h] = v;
-        }
-        const size_t finished = ++done;
-        if (progress) progress(finished, work.size());
-    });
-
     // Each sampler: its points' mean per hour (the covered ones left out).
     size_t w = 0;
     for (size_t s = 0; s < placed.size(); ++s) {
-        const LightSamplerSpec& spec = scene.samplers[kept[s]];
+        if (!supports(*placed[s])) continue;
+        const LightSamplerSpec& spec = scene.samplers[which[s]];
         AnnualSampler a;
         a.name = spec.name;
         a.type = spec.type->name();
@@ -222,19 +238,38 @@ AnnualSeries DaylightCoefficients::measure(const PathTracer& tracer, const std::
         a.planar = a.type == "planar";
         a.values.assign(hours, 0.0);
         const int items = placed[s]->items();
-        std::vector<std::vector<double>> points(static_cast<size_t>(items)), sun(static_cast<size_t>(items));
+        std::vector<std::vector<double>> pointValues(static_cast<size_t>(items)), sun(static_cast<size_t>(items));
         int counted = 0;
-        for (; w < work.size() && work[w].sampler == s; ++w) {
+        for (; w < points.size() && points[w].placed == s; ++w) {
             ++counted;
             for (size_t h = 0; h < hours; ++h) a.values[h] += values[w][h];
-            points[size_t(work[w].item)] = std::move(values[w]);
-            sun[size_t(work[w].item)] = std::move(direct[w]);
+            pointValues[size_t(points[w].item)] = std::move(values[w]);
+            sun[size_t(points[w].item)] = std::move(direct[w]);
         }
         for (double& v : a.values) v = counted > 0 ? v / counted : 0;
-        if (a.planar) a.points = std::move(points), a.directSun = std::move(sun);
+        if (a.planar) a.points = std::move(pointValues), a.directSun = std::move(sun);
         out.samplers.push_back(std::move(a));
     }
     return out;
+}
+
+AnnualSeries DaylightCoefficients::measure(const PathTracer& tracer, const std::vector<size_t>& which, int paths,
+                                           uint64_t seed, const std::function<void(size_t, size_t)>& progress,
+                                           size_t* measured) const {
+    const Scene& scene = tracer.rayTracer().scene();
+    std::vector<std::unique_ptr<PlacedSampler>> placed;
+    const std::vector<Point> work = points(scene, tracer, which, placed);
+    if (measured) *measured = work.size();
+    // Each point's hours, from its coefficients.
+    std::vector<std::vector<double>> values(work.size()), direct(work.size());
+    std::atomic<size_t> done{0};
+    parallelFor(work.size(), [&](size_t w) {
+        const Point& job = work[w];
+        hourly(coefficients(tracer, *placed[job.placed], job.sampler, job.item, paths, seed), values[w], direct[w]);
+        const size_t finished = ++done;
+        if (progress) progress(finished, work.size());
+    });
+    return series(scene, which, placed, work, values, direct);
 }
 
 }  // namespace luxplan

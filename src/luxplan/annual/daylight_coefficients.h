@@ -12,6 +12,7 @@
 
 #include <functional>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -19,6 +20,7 @@
 #include <luxplan/annual/sky_patches.h>
 #include <luxplan/daylight/daylight.h>
 #include <luxplan/lightsamplers/sampler_type.h>
+#include <luxplan/pathtracer/path_samples.h>
 #include <luxplan/pathtracer/path_tracer.h>
 #include <luxplan/scene/layout.h>
 #include <luxplan/scene/scene.h>
@@ -46,6 +48,13 @@ struct PointCoefficients {
     std::vector<double> sky, sun, direct;
 };
 
+// What one path brought from one basis: index < patches a sky patch's, else sun bin
+// (index - patches)'s.
+struct BasisEntry {
+    int basis;
+    double value;
+};
+
 class DaylightCoefficients {
 public:
     // The basis for these hours (their suns set the sun bins) and each hour's patch
@@ -63,14 +72,45 @@ public:
     // that are no single sensors per point, as directional, ugr and dgp, are left out:
     // supports()), where the tracer's layout puts them, `paths` paths per point.
     // `progress(done, total)` is told as points finish.
+    // `points`, if given, is told how many points were measured.
     AnnualSeries measure(const PathTracer& tracer, const std::vector<size_t>& which, int paths, uint64_t seed,
-                         const std::function<void(size_t, size_t)>& progress = {}) const;
+                         const std::function<void(size_t, size_t)>& progress = {}, size_t* points = nullptr) const;
     // Whether a sampler type gets coefficients (each item one sensor).
     static bool supports(const PlacedSampler& placed);
 
-    // One point's coefficients (for tests).
+    // One point's coefficients: `paths` paths (tracePath), summed in order and divided
+    // by their count, and the direct sun per hour.
     PointCoefficients coefficients(const PathTracer& tracer, const PlacedSampler& placed, size_t sampler, int item,
                                    int paths, uint64_t seed) const;
+
+    // The parts of coefficients() and measure(), for an incremental measurement
+    // (coefficient_cache.h) that gives the same numbers bit for bit.
+    // A point to measure: sampler index `sampler` (in Scene::samplers), placed as
+    // placed[placed], its item `item`.
+    struct Point {
+        size_t sampler, placed;
+        int item;
+    };
+    // The uncovered points of the samplers `which` that supports() takes, sampler after
+    // sampler, as the tracer's layout places them (`placed`: one per `which`).
+    static std::vector<Point> points(const Scene& scene, const PathTracer& tracer, const std::vector<size_t>& which,
+                                     std::vector<std::unique_ptr<PlacedSampler>>& placed);
+    static PathSamples::Sequence sequenceOf(size_t sampler, int item, uint64_t seed);
+    // Path `path` of the point: its light by basis in `entries` (in the order the path
+    // brought it), its rays in `footprint` if given. False, with no entries, for a path
+    // the estimator drops (not finite).
+    bool tracePath(const PathTracer& tracer, const PlacedSampler& placed, const PathSamples::Sequence& sequence,
+                   size_t sampler, int item, int path, uint64_t seed, std::vector<BasisEntry>& entries, RayStats& stats,
+                   PathFootprint* footprint) const;
+    PointCoefficients emptyCoefficients() const;  // sized, zero
+    void add(std::span<const BasisEntry> entries, PointCoefficients& c) const;
+    static void scale(PointCoefficients& c, int paths);  // the sums of `paths` paths to means
+    // The point's value and its direct-sun part at each hour.
+    void hourly(const PointCoefficients& c, std::vector<double>& values, std::vector<double>& direct) const;
+    // The series of the points' hourly values (moved from), as measure() assembles it.
+    AnnualSeries series(const Scene& scene, const std::vector<size_t>& which,
+                        const std::vector<std::unique_ptr<PlacedSampler>>& placed, const std::vector<Point>& points,
+                        std::vector<std::vector<double>>& values, std::vector<std::vector<double>>& direct) const;
 
     const std::vector<DaylightInstant>& hours() const { return hours_; }
     const SkyPatches& skyPatches() const { return sky_; }

@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include <luxplan/annual/annual_metrics.h>
+#include <luxplan/rt/embree_scene.h>
 
 namespace luxplan {
 
@@ -17,6 +18,12 @@ DaylightCoefficients sceneYear(const Scene& scene) {
     options.groundReflectance = d.groundReflectance;
     return DaylightCoefficients(
         hours, [&d, &hours](size_t h) -> SkyLuminance { return skyLuminanceAt(d, hours[h]); }, options);
+}
+
+AnnualSeries measureYearAt(const DaylightCoefficients& year, const EmbreeScene& rt, const std::vector<size_t>& which,
+                           int paths, uint64_t seed, const std::function<void(size_t, size_t)>& progress) {
+    const PathTracer basis(rt, &year.basis(), DaylightCoefficients::tracing());
+    return year.measure(basis, which, paths, seed, progress);
 }
 
 std::vector<size_t> annualGoalSamplers(const Scene& scene) {

@@ -14,6 +14,11 @@ namespace luxplan {
 // what is missing: no daylight, or no occupied hour with the sun up in its period.
 DaylightCoefficients sceneYear(const Scene& scene);
 
+// The year's hours at the samplers `which`, where `rt`'s layout puts them: a tracer
+// under the year's basis sky on `rt` (DaylightCoefficients::measure).
+AnnualSeries measureYearAt(const DaylightCoefficients& year, const EmbreeScene& rt, const std::vector<size_t>& which,
+                           int paths, uint64_t seed, const std::function<void(size_t, size_t)>& progress = {});
+
 // The samplers with an annual goal (LightSamplerSpec::annual), in scene order.
 std::vector<size_t> annualGoalSamplers(const Scene& scene);
 

@@ -30,6 +30,7 @@
 #include <span>
 #include <vector>
 
+#include <luxplan/incremental/entity_clusters.h>
 #include <luxplan/incremental/footprint_geometry.h>
 #include <luxplan/lightsamplers/path_source.h>
 #include <luxplan/lightsamplers/sampler_type.h>
@@ -144,8 +145,7 @@ private:
 
     const Scene& scene_;
     size_t maxSegments_;
-    std::vector<std::vector<Bounds3>> localClusters_;  // per entity: its triangles' and luminaires', entity frame
-    std::vector<std::vector<BoxedTriangles>> clusterTriangles_;  // per entity, per cluster
+    EntityClusters clusters_;
     // Where moves happen: the room's box with a margin (rays to the sky leave it, and
     // their parts outside never meet a move inside), between the lowest and the highest
     // point of what can move; everywhere without a room. A move outside it is still

@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include <luxplan/annual/scene_year.h>
 #include <luxplan/constraints/penalty.h>
 #include <luxplan/core/rng.h>
 #include <luxplan/json/fields.h>
@@ -18,6 +19,11 @@ PathTracedLighting::PathTracedLighting(const Scene& scene, const DaylightEnviron
     : scene_(scene), rt_(scene, initialLayout(scene)), tracer_(rt_, daylight, searchTracing),
       reportTracer_(rt_, daylight, reportTracing), options_(options), cache_(scene) {
     for (const LightSamplerSpec& s : scene.samplers) hasGlareSurveys_ = hasGlareSurveys_ || s.type->surveysSources();
+    if (const std::vector<size_t> annual = annualGoalSamplers(scene); !annual.empty()) {
+        year_ = std::make_unique<const DaylightCoefficients>(sceneYear(scene));
+        yearTracer_ = std::make_unique<PathTracer>(rt_, &year_->basis(), DaylightCoefficients::tracing());
+        yearCache_ = std::make_unique<CoefficientCache>(scene, *year_, annual, options.pathsPerPoint, options.seed);
+    }
 }
 
 PathTracedLighting::~PathTracedLighting() noexcept {
@@ -28,12 +34,14 @@ PathTracedLighting::~PathTracedLighting() noexcept {
 }
 
 void PathTracedLighting::commit() {
+    if (yearCache_) yearCache_->commit();
     settleCache();
     cacheUpdate_.run([this] { cache_.commit(); });
     cacheUpdating_ = true;
 }
 
 void PathTracedLighting::revert() {
+    if (yearCache_) yearCache_->discard();
     settleCache();
     cacheUpdate_.run([this] { cache_.discard(); });
     cacheUpdating_ = true;
@@ -85,6 +93,7 @@ double PathTracedLighting::measure(PathTracer& tracer, const std::vector<Transfo
     tracer.updateLayout();
     if (glareTracer) glareTracer->updateLayout();
     last_ = measureSamplers(tracer, options, source, glareTracer);
+    measureYear(options, source != nullptr);
     ++evaluations_;
     rays_ += last_.rays;
     reusedPaths_ += last_.reusedPaths;
@@ -96,6 +105,22 @@ double PathTracedLighting::measure(PathTracer& tracer, const std::vector<Transfo
     tracedPaths_ += last_.paths - last_.reusedPaths;
     if (out) out->samplers = last_.samplers;
     return scene_.samplers.empty() ? 0.0 : lightingCostOfResults(scene_, last_.samplers, margin);
+}
+
+void PathTracedLighting::measureYear(const MeasureOptions& options, bool cached) {
+    if (!year_) return;
+    yearTracer_->updateLayout();
+    size_t points = 0;
+    const AnnualSeries series =
+        cached ? yearCache_->measure(*yearTracer_)
+               : year_->measure(*yearTracer_, yearCache_->samplers(), options.pathsPerPoint, options.seed, {}, &points);
+    setAnnualInRange(scene_, series, last_.samplers);
+    if (cached) {
+        tracedPaths_ += yearCache_->tracedPaths();
+        reusedPaths_ += yearCache_->reusedPaths();
+    } else {
+        tracedPaths_ += uint64_t(options.pathsPerPoint) * points;
+    }
 }
 
 LightingNotes PathTracedLighting::notes() const {

@@ -4,6 +4,10 @@
 
 #include <tbb/task_group.h>
 
+#include <memory>
+#include <optional>
+
+#include <luxplan/annual/coefficient_cache.h>
 #include <luxplan/incremental/checked_paths.h>
 #include <luxplan/lightsamplers/light_samplers.h>
 #include <luxplan/optimizer/lighting.h>
@@ -15,6 +19,10 @@ public:
     // `daylight` may be null (night). Every evaluation uses the same seed: common random
     // numbers, so that the difference between two layouts' costs carries less noise
     // than either cost (the paths differ only where the geometry does).
+    // A scene with annual goals (LightSamplerSpec::annual) gets its year (sceneYear) here:
+    // each measurement adds the goals' shares of hours in range from daylight
+    // coefficients at the same paths and seed, the search's kept between layouts
+    // (CoefficientCache).
     // `searchTracing` for the search's evaluations, `reportTracing` for the independent
     // measurements and, in the search too, for the glare surveys (ugr and dgp samplers):
     // the sunlit patches, say, cost the search more than they save it, but lower the
@@ -66,6 +74,8 @@ public:
     // Paths over all evaluations: traced, and read from the path cache.
     uint64_t tracedPaths() const override { return tracedPaths_; }
     uint64_t reusedPaths() const { return reusedPaths_; }
+    // The scene's year, when it has annual goals (else null).
+    const DaylightCoefficients* year() const { return year_.get(); }
     RayStats rays() const { return rays_; }
 
 private:
@@ -73,6 +83,9 @@ private:
     double measure(PathTracer& tracer, const std::vector<Transform>& world, const MeasureOptions& options,
                    PathSource* source, LightingBreakdown* out, PathTracer* glareTracer = nullptr, double margin = 0);
     void settleCache();  // waits for the cache's commit() or revert() under way
+    // The annual goals' shares of hours in range, into last_ (no annual goal: nothing);
+    // through the coefficient cache for the search's evaluations.
+    void measureYear(const MeasureOptions& options, bool cached);
 
     const Scene& scene_;
     EmbreeScene rt_;
@@ -94,6 +107,10 @@ private:
     RayStats rays_;
     uint64_t tracedPaths_ = 0, reusedPaths_ = 0;
     CacheCheck check_;
+    // The annual goals' (a scene without any: all null).
+    std::unique_ptr<const DaylightCoefficients> year_;
+    std::unique_ptr<PathTracer> yearTracer_;  // under year_'s basis sky, on rt_
+    std::unique_ptr<CoefficientCache> yearCache_;
 };
 
 }  // namespace luxplan

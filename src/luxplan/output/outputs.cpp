@@ -4,10 +4,12 @@
 
 #include <chrono>
 
+#include <luxplan/annual/scene_year.h>
 #include <luxplan/constraints/geometry_cost.h>
 #include <luxplan/lightsamplers/light_budget.h>
 #include <luxplan/core/error.h>
 #include <luxplan/daylight/daylight.h>
+#include <luxplan/output/annual_plan.h>
 #include <luxplan/output/gltf_export.h>
 #include <luxplan/output/plan.h>
 #include <luxplan/output/plot.h>
@@ -201,6 +203,15 @@ RunOutputs writeRunOutputs(const std::filesystem::path& folder, const Scene& sce
                                 options.cellPaths, options.seed);
     };
 
+    // A scene with annual goals: its year, whose shares in range the goals' terms read
+    // and whose pictures show the final layout's year.
+    const std::vector<size_t> annualGoals = annualGoalSamplers(scene);
+    std::optional<DaylightCoefficients> year;
+    if (!annualGoals.empty()) year.emplace(sceneYear(scene));
+    auto measureAnnualGoals = [&](std::vector<SamplerResult>& results) {
+        if (year) setAnnualInRange(scene, measureYearAt(*year, rt, annualGoals, options.samplerPaths, options.seed), results);
+    };
+
     // The final layout: samplers, work plane, view, glTF.
     PlanData finalData, initialData;
     if (fromResult) {
@@ -209,6 +220,16 @@ RunOutputs writeRunOutputs(const std::filesystem::path& folder, const Scene& sce
         steps.begin("measuring " + std::to_string(scene.samplers.size()) + " samplers at " +
                     std::to_string(options.samplerPaths) + " paths per point");
         out.samplers = measureSamplers(tracer, measure).samplers;
+        measureAnnualGoals(out.samplers);
+    }
+    if (year && options.plan && !steps.stopped()) {
+        steps.begin("measuring the year's " + std::to_string(year->hours().size()) + " hours (daylight coefficients)");
+        std::vector<size_t> all(scene.samplers.size());
+        for (size_t k = 0; k < all.size(); ++k) all[k] = k;
+        for (const std::filesystem::path& f :
+             writeAnnualPictures(folder, scene, finalLayout, measureYearAt(*year, rt, all, options.samplerPaths, options.seed)))
+            steps.wrote(f);
+        steps.timed("the year's pictures");
     }
     if (!scene.samplers.empty()) finalData.samplers = out.samplers;
     if (!fromResult && !scene.samplers.empty()) steps.timed("samplers (" + options.finalLabel + ")");
@@ -242,7 +263,10 @@ RunOutputs writeRunOutputs(const std::filesystem::path& folder, const Scene& sce
         steps.begin("measuring the " + options.initialLabel + " layout for the comparison");
         rt.setLayout(initialLayout);
         tracer.updateLayout();
-        if (!scene.samplers.empty()) initialData.samplers = measureSamplers(tracer, measure).samplers;
+        if (!scene.samplers.empty()) {
+            initialData.samplers = measureSamplers(tracer, measure).samplers;
+            measureAnnualGoals(*initialData.samplers);
+        }
         if (grids) initialData.workPlane = workPlane();
         steps.timed("samplers and work plane (" + options.initialLabel + ")");
     }

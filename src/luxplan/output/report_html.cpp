@@ -75,7 +75,9 @@ constexpr const char* kImageCaptions[] = {
     "The start layout and the shown layout side by side (same colour scale).",
     "Path-traced view (luminance tone mapped, colour from what each pixel sees).",
     "The same view in false colour of luminance (cd/m2, logarithmic).",
-    "Convergence: current cost (grey) and best cost so far (blue) per iteration."};
+    "Convergence: current cost (grey) and best cost so far (blue) per iteration.",
+    "The year: each task point's share of the occupied hours with the sun up whose illuminance lies in its sampler's "
+    "target band (daylight coefficients under each hour's sky from the weather file)."};
 static_assert(std::size(kImageCaptions) == std::size(kReportImages));
 
 // Notes on kReportFiles, in its order.
@@ -214,6 +216,21 @@ void pictures(std::ostringstream& out, const std::filesystem::path& folder) {
         figs << "<figure><a href=\"" << escapeHtml(file) << "\"><img src=\"" << pictureDataUri(folder / file)
              << "\" alt=\"" << escapeHtml(kImageCaptions[i]) << "\"></a><figcaption>" << escapeHtml(kImageCaptions[i])
              << "</figcaption></figure>\n";
+    }
+    std::vector<std::filesystem::path> maps;
+    std::error_code ec;
+    for (const auto& entry : std::filesystem::directory_iterator(folder, ec)) {
+        const std::string name = entry.path().filename().string();
+        if (name.starts_with("temporal_map_") && name.ends_with(".png") && entry.is_regular_file()) maps.push_back(entry.path());
+    }
+    std::sort(maps.begin(), maps.end());
+    for (const std::filesystem::path& map : maps) {
+        const std::string name = map.filename().string();
+        const std::string caption = "Temporal map of " + name.substr(13, name.size() - 17) +
+                                    ": its value in each occupied hour of the year, day of the year across, hour of the day "
+                                    "up, in false colour.";
+        figs << "<figure><a href=\"" << escapeHtml(name) << "\"><img src=\"" << pictureDataUri(map) << "\" alt=\""
+             << escapeHtml(caption) << "\"></a><figcaption>" << escapeHtml(caption) << "</figcaption></figure>\n";
     }
     if (!figs.str().empty()) out << "<h2>Pictures</h2>\n" << figs.str();
     std::ostringstream files;

@@ -59,7 +59,9 @@ std::string missAdvice(const Scene& scene, const LightSamplerSpec& sampler, doub
 // The pictures and files the page refers to, relative to its folder, in page order;
 // the page links each one only if it exists in the folder when the page is written.
 inline constexpr const char* kReportImages[] = {"plan.png", "plan_initial_vs_optimized.png", "render.png", "render_luminance.png",
-                                               "convergence.png"};
+                                               "convergence.png", "annual_plan.png"};
+// ... and after them each sampler's temporal map of the year (output/annual_plan.h),
+// temporal_map_<sampler>.png, in name order.
 inline constexpr const char* kReportFiles[] = {"scene.glb", "layout.json", "report.json", "trace.csv"};
 
 // Text with &, <, >, " and ' replaced by character references.

@@ -131,7 +131,10 @@ double PathTracer::transmittance(const Vec3& origin, const Vec3& w, double tMax,
 }
 
 
-double PathTracer::directSun(const Sensor& sensor, const Vec3& towardsSun, RayStats& stats) const {
+double PathTracer::directSun(const Sensor& sensor, const Vec3& towardsSun, RayStats& stats, PathFootprint* footprint) const {
+    // The whole ray in the footprint, whatever the answer: what moves onto it may change
+    // it (a desk over the point seals it, a chair shades it).
+    if (footprint) footprint->add(sensor.position(), towardsSun, 0, kInf);
     if (sensor.hidesSources() || sealedAt(sensor.position())) return 0;
     const double response = sensor.response(towardsSun);
     if (!(response > 0)) return 0;

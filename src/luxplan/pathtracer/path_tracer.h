@@ -197,8 +197,9 @@ public:
     // The light a sun of unit normal illuminance (1 lx) along unit `towardsSun` sends
     // straight to the sensor, nothing scattered: its response there times what lets the
     // sun through (panes; 0 behind anything opaque), along the disk's centre. The direct
-    // sun of daylight coefficients, per hour without noise.
-    double directSun(const Sensor& sensor, const Vec3& towardsSun, RayStats& stats) const;
+    // sun of daylight coefficients, per hour without noise. `footprint`, if given, gets
+    // the ray from the sensor towards the sun.
+    double directSun(const Sensor& sensor, const Vec3& towardsSun, RayStats& stats, PathFootprint* footprint = nullptr) const;
 
 private:
     // The lights are strategies (light_strategy.h) that read the tracer's parts.
