@@ -284,10 +284,12 @@ void runMeasure(const MeasureArgs& args) {
     if (lightRoulette > 0) options.lightFloors = lightSampleFloors(tracer, lightRoulette, options.seed);
     options.lowDiscrepancy = settings.lowDiscrepancy;
     MeasureResult result;
+    const auto samplersStart = std::chrono::steady_clock::now();
     {
         MeasureProgress progress(options, (unsigned long long)(samplerPoints(scene)) * (unsigned long long)(pathsPerPoint));
         result = measureSamplers(tracer, options);
     }
+    const double samplersSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - samplersStart).count();
     options.pathsDone = nullptr;  // the progress's counter is gone
     // The year: with --annual every sampler's, else the annual goals' (their terms read it).
     std::optional<AnnualSeries> year;
@@ -350,6 +352,7 @@ void runMeasure(const MeasureArgs& args) {
         if (year && args.annual) {
             addAnnualJson(out, *year);
             out["annual_seconds"] = yearSeconds;
+            out["samplers_seconds"] = samplersSeconds;  // the one measurement's, beside the year's
         }
         std::cout << out.dump(2) << "\n";
         return;

@@ -826,7 +826,7 @@ Seeds loadSeeds(const std::filesystem::path& sourceDir) {
             if (!doc.is_object() || !doc.contains("luxplan")) continue;
             bool ok = true;
             for (const Node& n : nodes(doc)) {
-                if ((n.key == "photometry" || n.key == "mesh") && doc.at(n.ptr).is_string()) {
+                if ((n.key == "photometry" || n.key == "mesh" || n.key == "weather") && doc.at(n.ptr).is_string()) {
                     const std::string ref = doc.at(n.ptr);
                     if (ref.find('/') != std::string::npos || !std::filesystem::is_regular_file(p.parent_path() / ref)) ok = false;
                     else s.files[ref] = readFile(p.parent_path() / ref);

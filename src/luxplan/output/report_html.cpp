@@ -643,7 +643,10 @@ void hourTable(std::ostringstream& out, const Scene& scene, const std::vector<Re
                 out << cell("&ndash;");
                 continue;
             }
-            const SamplerRow row(scene.samplers[k], h.samplers[k]);
+            // An hour is judged by the goals of an instant: the annual goal is the year's.
+            LightSamplerSpec instantGoals = scene.samplers[k];
+            instantGoals.annual.reset();
+            const SamplerRow row(instantGoals, h.samplers[k]);
             const GoalStatus status = samplerStatus(row);
             met += row.met();
             out << "<td class=\"num " << status.cls << "\">" << number(h.samplers[k].value, 1) << "</td>";
