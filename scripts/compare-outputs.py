@@ -139,7 +139,8 @@ def main():
     parser.add_argument("--iterations", type=int, default=100, help="optimize's iterations")
     args = parser.parse_args()
 
-    scenes = args.scenes or bundled_scenes()
+    # Each --scenes argument is a file or a glob (quoted, so that the shell leaves it).
+    scenes = [s for arg in args.scenes or [] for s in (sorted(glob.glob(arg)) or [arg])] or bundled_scenes()
     differing = 0
     with tempfile.TemporaryDirectory(prefix="compare-outputs-") as tmp:
         for scene in scenes:
