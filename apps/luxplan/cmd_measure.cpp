@@ -21,6 +21,7 @@
 #include "daylight_progress.h"
 #include "option_checks.h"
 #include "shared_options.h"
+#include <luxplan/api/measure.h>
 #include <luxplan/annual/annual_metrics.h>
 #include <luxplan/annual/scene_year.h>
 #include <luxplan/checks/scene_warnings.h>
@@ -59,34 +60,6 @@ PathTracerOptions measureTracing(const TracingSettings& s) {
     return tracing;
 }
 const char* samplingName(const TracingSettings& s) { return s.lowDiscrepancy ? "sobol" : "random"; }
-
-// The scene's daylight at one instant (--at) instead of its period's average.
-DaylightParams daylightAt(const Scene& scene, const std::string& at) {
-    if (!scene.daylight)
-        throw std::runtime_error("--at " + at + ": the scene has no \"daylight\" to evaluate at an instant");
-    std::string why;
-    auto t = parseIso8601(at, &why);
-    if (!t) throw std::runtime_error("--at " + why);
-    DaylightParams d = *scene.daylight;
-    d.from = *t;
-    d.to.reset();
-    if (d.weather) {
-        // The file's hour that contains the time (its month, day and hour in the file's
-        // time zone, the year ignored), placed and reported at its middle.
-        const WeatherFile& w = *d.weather;
-        const std::vector<size_t> hours = weatherHoursIn(w, *t, std::nullopt);
-        if (hours.empty())
-            throw std::runtime_error("--at " + at + ": no hour of " + w.file.string() + " contains it");
-        const WeatherHour& h = w.hours[hours.front()];
-        for (auto [value, what] : {std::pair{h.directNormalWm2, "direct normal"}, std::pair{h.diffuseHorizontalWm2, "diffuse horizontal"}})
-            if (std::isnan(value))
-                throw FileError(w.file.string(), std::to_string(h.line),
-                                "--at " + at + ": the " + what + " irradiance of that hour (" + w.middleOf(h).str() +
-                                    ") is missing (the file's code 9999)");
-        d.from = w.middleOf(h);
-    }
-    return d;
-}
 
 // The measurement's progress on stderr, a line every 5 s once it has run that long:
 // on a terminal, or for a large measurement (kLargeMeasurementPaths) wherever stderr
@@ -204,50 +177,36 @@ void runDaylightFactor(const MeasureArgs& args, const Scene& scene, const Layout
               << " per point), " << df.measured.rays.closest + df.measured.rays.shadow << " rays in " << seconds << " s\n";
 }
 
-// The year at the samplers `which` (daylight coefficients, annual/scene_year.h), at the
-// measurement's paths and seed; progress on stderr every 5 s once it has run that long.
-// A sampler whose points are no single sensors is said and left out.
-AnnualSeries measureYear(const Scene& scene, const EmbreeScene& rt, const std::vector<size_t>& which, int paths,
-                         uint64_t seed, const std::string& what) {
-    std::optional<DaylightCoefficients> dc;
-    try {
-        dc.emplace(sceneYear(scene));
-    } catch (const std::runtime_error& e) {
-        throw std::runtime_error(what + ": " + e.what());
-    }
-    auto last = std::chrono::steady_clock::now();
-    std::mutex lock;
-    const bool tty = isatty(STDERR_FILENO);
-    auto progress = [&](size_t done, size_t total) {
-        const std::lock_guard<std::mutex> guard(lock);
-        const auto now = std::chrono::steady_clock::now();
-        if (done < total && now - last < std::chrono::seconds(5)) return;
-        last = now;
-        if (tty || done < total)
-            std::cerr << (tty ? "\r" : "") << what << ": " << done << " of " << total << " points traced ("
-                      << dc->hours().size() << " hours)" << (tty ? (done < total ? "\033[K" : "\033[K\n") : "\n") << std::flush;
+// The year's progress on stderr every 5 s once it has run that long (on a terminal, one
+// line rewritten).
+std::function<void(const std::string&, size_t, size_t, size_t)> yearProgressOnStderr() {
+    struct State {
+        std::chrono::steady_clock::time_point last = std::chrono::steady_clock::now();
+        std::mutex lock;
     };
-    AnnualSeries series = measureYearAt(*dc, rt, which, paths, seed, progress);
-    for (size_t k : which) {
-        bool measured = false;
-        for (const AnnualSampler& a : series.samplers) measured = measured || a.name == scene.samplers[k].name;
-        if (!measured)
-            std::cerr << scene.file.string() << ": " << what << ": sampler \"" << scene.samplers[k].name << "\" ("
-                      << scene.samplers[k].type->name()
-                      << ") has no hourly values: its points are no single sensors (planar, volume and cylindrical "
-                         "samplers are)\n";
-    }
-    return series;
+    auto state = std::make_shared<State>();
+    const bool tty = isatty(STDERR_FILENO);
+    return [state, tty](const std::string& what, size_t done, size_t total, size_t hours) {
+        const std::lock_guard<std::mutex> guard(state->lock);
+        const auto now = std::chrono::steady_clock::now();
+        if (done < total && now - state->last < std::chrono::seconds(5)) return;
+        state->last = now;
+        if (tty || done < total)
+            std::cerr << (tty ? "\r" : "") << what << ": " << done << " of " << total << " points traced (" << hours
+                      << " hours)" << (tty ? (done < total ? "\033[K" : "\033[K\n") : "\n") << std::flush;
+    };
 }
+
+void printMeasureTable(const api::MeasureOutcome& m);
 
 void runMeasure(const MeasureArgs& args) {
     auto start = std::chrono::steady_clock::now();
     Scene scene = loadSceneWithSettings(args);
     printSceneWarnings(scene);
-    const TracingSettings settings = scene.optimizer;
-    if (scene.optimizer.flatScene) scene = flattenScene(scene).scene;
-    Layout layout = args.layout.empty() ? initialLayout(scene) : io::readLayout(args.layout, scene);
     if (args.daylightFactor) {
+        const TracingSettings settings = scene.optimizer;
+        if (scene.optimizer.flatScene) scene = flattenScene(scene).scene;
+        const Layout layout = args.layout.empty() ? initialLayout(scene) : io::readLayout(args.layout, scene);
         // It measures every point at a fixed count, every light sample traced.
         if (settings.adaptive) throw CLI::ValidationError("--daylight-factor", "excludes the setting adaptive (true)");
         if (settings.lightRoulette.value_or(0) > 0)
@@ -256,108 +215,37 @@ void runMeasure(const MeasureArgs& args) {
         runDaylightFactor(args, scene, layout, start);
         return;
     }
-    // The report's count: one number per quantity, whichever command gives it.
-    const int pathsPerPoint = args.paths > 0 ? args.paths : scene.optimizer.reportPathsPerPoint;
-    // Said before the daylight's bake, the first thing that takes time.
-    warnLargeMeasurement(scene, pathsPerPoint, "measuring");
-    std::optional<DaylightEnvironment> daylight;
-    std::string atReported = args.at;  // a weather file's hour is reported at its middle
-    if (!args.at.empty()) {
-        Scene instant = scene;
-        instant.daylight = daylightAt(scene, args.at);
-        if (instant.daylight->weather) atReported = instant.daylight->from->str();
-        // The same warning as a scene whose period is that instant: after sunset.
-        for (const Diagnostic& w : darkDaylight(instant))
-            std::cerr << scene.file.string() << ": --at " << args.at << ": warning: " << w.message << "\n";
-        daylight = bakeDaylight(*instant.daylight, scene.site);
-    } else if (scene.daylight) {
-        daylight = bakeDaylight(*scene.daylight, scene.site);
-    }
-    EmbreeScene rt(scene, layout);
-    PathTracer tracer(rt, daylight ? &*daylight : nullptr, measureTracing(settings));
-    MeasureOptions options;
-    options.pathsPerPoint = pathsPerPoint;
-    warnFewPaths(scene, options.pathsPerPoint, args.paths > 0);
-    options.seed = args.seed.value_or(scene.optimizer.seed);
-    options.adaptive = settings.adaptive;
-    const double lightRoulette = settings.lightRoulette.value_or(0);
-    if (lightRoulette > 0) options.lightFloors = lightSampleFloors(tracer, lightRoulette, options.seed);
-    options.lowDiscrepancy = settings.lowDiscrepancy;
-    MeasureResult result;
-    const auto samplersStart = std::chrono::steady_clock::now();
-    {
-        MeasureProgress progress(options, (unsigned long long)(samplerPoints(scene)) * (unsigned long long)(pathsPerPoint));
-        result = measureSamplers(tracer, options);
-    }
-    const double samplersSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - samplersStart).count();
-    options.pathsDone = nullptr;  // the progress's counter is gone
-    // The year: with --annual every sampler's, else the annual goals' (their terms read it).
-    std::optional<AnnualSeries> year;
-    double yearSeconds = 0;
-    if (args.annual || !annualGoalSamplers(scene).empty()) {
-        std::vector<size_t> which = annualGoalSamplers(scene);
-        if (args.annual) {
-            which.clear();
-            for (size_t k = 0; k < scene.samplers.size(); ++k) which.push_back(k);
-        }
-        const auto yearStart = std::chrono::steady_clock::now();
-        year = measureYear(scene, rt, which, pathsPerPoint, options.seed, args.annual ? "--annual" : "annual goals");
-        yearSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - yearStart).count();
-        setAnnualInRange(scene, *year, result.samplers);
-    }
-    // The objective of Eq. 1 for this layout, as optimize reports it (report.json's C).
-    const double lighting = lightingCostOfResults(scene, result.samplers);
-    const double lightingError = lightingCostError(scene, result.samplers);
-    const GeometryResult geometry = GeometryEvaluator(scene).evaluate(worldTransforms(scene, layout));
-    const double w = scene.objective.lightingWeight;
-    const double cost = scene.objective.cost(lighting, geometry.cost);
-    double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-
+    api::MeasureRequest request;
+    request.layoutFile = args.layout;
+    request.paths = args.paths;
+    request.seed = args.seed;
+    request.at = args.at;
+    request.annual = args.annual;
+    request.started = start;
+    api::MeasureHooks hooks;
+    hooks.warning = [](const std::string& line) { std::cerr << line << "\n"; };
+    hooks.bake = [](const DaylightParams& d, const Site& site) { return bakeDaylight(d, site); };
+    hooks.watchSamplers = [](MeasureOptions& options, unsigned long long total) {
+        return std::static_pointer_cast<void>(std::make_shared<MeasureProgress>(options, total));
+    };
+    hooks.yearProgress = yearProgressOnStderr();
+    const api::MeasureOutcome m = api::measure(std::move(scene), request, hooks);
     if (args.json) {
-        nlohmann::json samplers = nlohmann::json::array();
-        for (size_t k = 0; k < scene.samplers.size(); ++k) {
-            const LightSamplerSpec& s = scene.samplers[k];
-            const SamplerResult& r = result.samplers[k];
-            const SamplerRow row(s, r);
-            nlohmann::json sampler = {{"name", s.name},
-                                      {"type", s.type->name()},
-                                      {"unit", s.type->unit()},
-                                      {"value", r.value},
-                                      {"std_error", r.standardError},
-                                      {"target", {bound(s.targetMin), bound(s.targetMax)}},
-                                      {"penalty", row.penalty()},
-                                      {"points", r.points},
-                                      {"point_std_errors", r.pointErrors}};
-            sampler.update(nlohmann::json(row.detailsJson()));
-            // The points furniture covers (null in `points`), for every sampler with point statistics.
-            if (s.type->hasPointStatistics()) sampler["covered"] = r.covered;
-            // Only when it happened, so that the usual output stays as it was.
-            if (r.droppedNonFinite > 0) sampler["dropped_nonfinite"] = r.droppedNonFinite;
-            if (options.adaptive) sampler["paths_per_point"] = r.pathsPerPoint;
-            if (!options.lightFloors.empty()) sampler["light_floor"] = options.lightFloors[k];
-            samplers.push_back(sampler);
-        }
-        nlohmann::json out = {{"samplers", samplers},
-                              {"paths_per_point", options.pathsPerPoint},
-                              {"adaptive", options.adaptive}, {"sampling", samplingName(settings)}, {"sun_patches", tracer.samplesSunPatches()},
-                              {"exterior_sun", tracer.samplesExteriorSun()},
-                              {"light_roulette", lightRoulette},
-                              {"seed", options.seed},
-                              {"maintenance_factor", scene.maintenanceFactor},
-                              {"L", lighting}, {"L_std_error", lightingError},
-                              {"G", geometry.cost}, {"C", cost}, {"C_std_error", w * lightingError},
-                              {"geometric_rules_pass", !geometry.rejected},
-                              {"seconds", seconds}};
-        if (!args.at.empty()) out["at"] = atReported;
-        if (year && args.annual) {
-            addAnnualJson(out, *year);
-            out["annual_seconds"] = yearSeconds;
-            out["samplers_seconds"] = samplersSeconds;  // the one measurement's, beside the year's
-        }
-        std::cout << out.dump(2) << "\n";
+        std::cout << api::measureJson(m).dump(2) << "\n";
         return;
     }
-    if (!args.at.empty()) std::cout << "daylight at " << args.at << " (one instant, not the scene's period)\n";
+    printMeasureTable(m);
+}
+
+void printMeasureTable(const api::MeasureOutcome& m) {
+    const Scene& scene = m.scene;
+    const MeasureOptions& options = m.options;
+    const MeasureResult& result = m.result;
+    const std::optional<AnnualSeries>& year = m.year;
+    const double w = scene.objective.lightingWeight, cost = m.cost, lighting = m.lighting, lightingError = m.lightingError;
+    const GeometryResult& geometry = m.geometry;
+    const double seconds = m.seconds, yearSeconds = m.yearSeconds;
+    if (!m.request.at.empty()) std::cout << "daylight at " << m.request.at << " (one instant, not the scene's period)\n";
     std::cout << maintainedLine(scene);
     std::cout << std::left << std::setw(24) << "sampler" << std::setw(12) << "type" << std::right << std::setw(12)
               << "value" << std::setw(10) << "+-" << std::setw(8) << "unit" << std::setw(22) << "target" << std::setw(10)
@@ -387,7 +275,7 @@ void runMeasure(const MeasureArgs& args) {
     std::cout << std::fixed << std::setprecision(2) << result.paths << " paths (" << (options.adaptive ? "adaptive, at most " : "")
               << options.pathsPerPoint << " per point), "
               << result.rays.closest + result.rays.shadow << " rays in " << seconds << " s\n";
-    if (year && args.annual)
+    if (year && m.request.annual)
         std::cout << "\n" << annualText(*year) << std::fixed << std::setprecision(2) << "the year: " << year->hours.size()
                   << " hours (occupied, the sun up) from daylight coefficients in " << yearSeconds << " s\n";
 }
@@ -395,30 +283,11 @@ void runMeasure(const MeasureArgs& args) {
 }  // namespace
 
 void warnFewPaths(const Scene& scene, int paths, bool fromOption) {
-    if (paths >= 2 || scene.samplers.empty()) return;
-    const std::string source = fromOption ? "--paths " + std::to_string(paths)
-                                          : scene.file.string() + ": /optimizer/report_paths_per_point: " + std::to_string(paths);
-    std::string message = "warning: " + source + ": one path per point gives no standard error (reported as 0, "
-                          "n/a in measure's table)";
-    for (const LightSamplerSpec& s : scene.samplers)
-        if (std::string(s.type->name()) == "directional") {
-            message += ", and directional sampler \"" + s.name + "\" reads the plain max of its strata, which errs high "
-                       "(its brightest stratum is measured with paths it was not chosen by from 2 paths per point on)";
-            break;
-        }
-    std::cerr << message << "\n";
-}
-
-long long samplerPoints(const Scene& scene) {
-    long long points = 0;
-    for (const LightSamplerSpec& s : scene.samplers) points += s.type->place(Transform())->items();
-    return points;
+    if (const std::string w = api::fewPathsWarning(scene, paths, fromOption); !w.empty()) std::cerr << w << "\n";
 }
 
 void warnLargeMeasurement(const Scene& scene, int pathsPerPoint, const std::string& what) {
-    if (scene.samplers.empty()) return;
-    const std::string warning = largeMeasurementWarning(what, samplerPoints(scene), int(scene.samplers.size()), pathsPerPoint);
-    if (!warning.empty()) std::cerr << scene.file.string() << ": " << warning << "\n";
+    if (const std::string w = api::largeMeasurementNote(scene, pathsPerPoint, what); !w.empty()) std::cerr << w << "\n";
 }
 
 void registerMeasureCommand(CLI::App& app, int& threads) {

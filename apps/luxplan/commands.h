@@ -36,8 +36,6 @@ void printSceneWarnings(const Scene& scene);
 // /optimizer/paths_per_point) leave the samplers without a standard error and a
 // directional sampler without its cross-fitted choice: fewer than 2.
 void warnFewPaths(const Scene& scene, int paths, bool fromOption);
-// The points of the scene's samplers, all of them (a covered point counts too).
-long long samplerPoints(const Scene& scene);
 // A warning on stderr before a large measurement (optimizer/progress_line.h:
 // points x paths per point above kLargeMeasurementPaths): "FILE: warning: <what> N
 // points (S samplers) x P paths per point = X paths, ...".

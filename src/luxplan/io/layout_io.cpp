@@ -96,7 +96,13 @@ Layout readLayout(const std::filesystem::path& file, const Scene& scene) {
     sink.file = file.string();
     auto text = readInputFile(sink, file, limits::kMaxJsonFileBytes);
     if (!text) throw SceneError(sink.diagnostics);
-    auto parsed = parseJson(*text, sink);
+    return readLayoutText(*text, file.string(), scene);
+}
+
+Layout readLayoutText(const std::string& text, const std::string& name, const Scene& scene) {
+    DiagnosticSink sink;
+    sink.file = name;
+    auto parsed = parseJson(text, sink);
     if (!parsed) throw SceneError(sink.diagnostics);
     const Json& root = *parsed;
     Layout layout;

@@ -18,5 +18,7 @@ void writeLayout(const std::filesystem::path& file, const Scene& scene, const La
 // Reads a layout for `scene`: entities it names take its placement, the others keep
 // the scene's. Throws SceneError (all problems, FILE: /json/path: message).
 Layout readLayout(const std::filesystem::path& file, const Scene& scene);
+// The same from a layout file's text, its problems named by `name` as by a file.
+Layout readLayoutText(const std::string& text, const std::string& name, const Scene& scene);
 
 }  // namespace luxplan::io
