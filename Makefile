@@ -5,7 +5,7 @@ JOBS ?= $(shell nproc)
 DEMO_SCENE ?= scenes/demo/daylit-office.json
 DEMO_OUT ?= out/demo
 
-.PHONY: all deps configure build demo test sanitize fuzz bench clean
+.PHONY: all deps configure build demo python test sanitize fuzz bench clean
 
 all: build
 
@@ -23,6 +23,11 @@ build: configure
 demo: configure
 	cmake --build $(BUILD) -j $(JOBS) --target luxplan_cli
 	./scripts/demo.sh $(BUILD)/luxplan $(DEMO_SCENE) $(DEMO_OUT)
+
+# The Python module luxplan into $(BUILD)/python (docs/python.md):
+# PYTHONPATH=$(BUILD)/python /usr/bin/python3 -c "import luxplan".
+python: configure
+	cmake --build $(BUILD) -j $(JOBS) --target luxplan_python
 
 # The whole suite in Release, then the sanitizer tree (what .ci/run calls).
 test: build

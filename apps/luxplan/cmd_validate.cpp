@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "commands.h"
+#include <luxplan/api/scene.h>
 #include <luxplan/checks/scene_warnings.h>
 #include <luxplan/constraints/constraint_type.h>
 #include <luxplan/daylight/weather.h>
@@ -109,10 +110,7 @@ void printSummary(const Scene& s, std::ostream& out) {
 }  // namespace
 
 void printSceneWarnings(const Scene& scene) {
-    for (Diagnostic w : sceneWarnings(scene)) {
-        w.message = "warning: " + w.message;
-        std::cerr << w.str() << "\n";
-    }
+    for (const std::string& line : api::sceneWarnings(scene)) std::cerr << line << "\n";
 }
 
 void registerValidateCommand(CLI::App& app) {

@@ -5,27 +5,21 @@
 
 #include <CLI/CLI.hpp>
 
+#include <luxplan/api/scene.h>
 #include <luxplan/core/error.h>
 #include <luxplan/scene/scene.h>
 
 namespace luxplan::cli {
 
-// Runs a command on the scene file `scene`: an exception that names no file (a
-// library's, or a problem found after loading) is reported as SCENE: /: message, so
-// that every refusal names its file. Scene errors, I/O errors (which name their file)
-// and CLI11's exits pass unchanged.
+// Runs a command on the scene file `scene` (api::namingScene): an exception that names
+// no file is reported as SCENE: /: message; CLI11's exits pass unchanged too.
 template <class Fn>
 void namingScene(const std::string& scene, Fn&& fn) {
     try {
-        fn();
-    } catch (const SceneError&) {
-        throw;
-    } catch (const IoError&) {
-        throw;
-    } catch (const CLI::Error&) {
-        throw;
-    } catch (const std::exception& e) {
-        throw SceneError({{scene, "", e.what()}});
+        api::namingScene(scene, std::forward<Fn>(fn),
+                         [](const std::exception& e) { return dynamic_cast<const CLI::Error*>(&e) != nullptr; });
+    } catch (const api::UsageError& e) {
+        throw CLI::ValidationError(e.option(), e.problem());
     }
 }
 

@@ -5,6 +5,7 @@
 
 #include "commands.h"
 #include "option_checks.h"
+#include <luxplan/api/scene.h>
 #include <luxplan/io/scene_loader.h>
 
 namespace luxplan::cli {
@@ -17,20 +18,6 @@ std::string withoutPrefix(const std::string& problem) {
     const std::string prefix = "--set ";
     return problem.rfind(prefix, 0) == 0 ? problem.substr(prefix.size()) : problem;
 }
-
-// The --set values read alone, or a usage error naming the first one wrong.
-std::vector<io::SettingOverride> parsedSettings(const std::vector<std::string>& texts) {
-    std::vector<io::SettingOverride> settings;
-    for (const std::string& text : texts) {
-        try {
-            settings.push_back(io::parseSetting(text));
-        } catch (const std::invalid_argument& e) {
-            throw CLI::ValidationError("--set " + text, e.what());
-        }
-    }
-    return settings;
-}
-
 
 const char* const kAdvanced = "Advanced options";
 
@@ -78,12 +65,11 @@ void addSharedOptions(CLI::App* cmd, SharedArgs& args, int& threads, const std::
 }
 
 Scene loadSceneWithSettings(const SharedArgs& args) {
-    io::LoadOptions options;
-    options.settings = parsedSettings(args.settings);
-    // Each was checked alone when parsed; here the keys that exclude each other.
-    const std::vector<std::string> problems = io::settingProblems(options.settings);
-    if (!problems.empty()) throw CLI::ValidationError("--set", withoutPrefix(problems.front()));
-    return io::loadScene(args.scene, options);
+    try {
+        return api::loadScene(args.scene, args.settings);
+    } catch (const api::UsageError& e) {
+        throw CLI::ValidationError(e.option(), e.problem());
+    }
 }
 
 void registerSettingsCommand(CLI::App& app) {
