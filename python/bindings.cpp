@@ -1,8 +1,15 @@
 // The compiled part of the Python module luxplan (luxplan/__init__.py wraps it): scenes
-// loaded as the CLI loads them, and measure's JSON as the CLI prints it, as text that
-// json.loads reads into the same numbers. The GIL is released while the engine runs.
+// loaded as the CLI loads them, measure's JSON and optimize's report.json and layout.json
+// as the CLI writes them, as text that json.loads reads into the same numbers. The GIL
+// is released while the engine runs.
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <cmath>
+#include <mutex>
 #include <optional>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <pybind11/pybind11.h>
@@ -10,6 +17,8 @@
 #include <tbb/global_control.h>
 
 #include <luxplan/api/measure.h>
+#include <luxplan/api/optimize.h>
+#include <luxplan/optimizer/progress_line.h>
 #include <luxplan/api/scene.h>
 #include <luxplan/io/layout_io.h>
 
@@ -58,6 +67,93 @@ public:
         return py::make_tuple(text, said);
     }
 
+    // The search, and its files in `out` if given: (report.json's text, layout.json's
+    // text, the warnings it said). `progress` (or None) is called with a dict every
+    // progress step; Ctrl-C stops the search with its best layout so far. The engine runs
+    // on a thread of its own while this one, without the GIL, waits for it and looks for
+    // signals every 0.1 s (Python runs signal handlers on the main thread only).
+    py::tuple optimize(const std::optional<std::string>& out, int iterations, std::optional<uint64_t> seed, int threads,
+                       int paths, int suggestions, const std::optional<std::string>& startFile,
+                       const std::optional<std::string>& startText, bool pictures, bool pdf, py::object progress) const {
+        api::OptimizeRequest request;
+        request.iterations = iterations;
+        request.seed = seed;
+        request.paths = paths;
+        request.suggestions = suggestions;
+        request.startFile = startFile.value_or("");
+        request.startText = startText;
+        std::atomic<bool> cancel{false};
+        std::mutex lock;
+        std::condition_variable finished;
+        bool done = false;
+        std::vector<std::string> said;
+        std::exception_ptr failure;
+        py::object raisedType, raisedValue;  // what the progress callback raised (under the GIL)
+        std::string report, layout;
+
+        api::OptimizeHooks hooks;
+        hooks.warning = hooks.note = [&](const std::string& line) {
+            const std::lock_guard<std::mutex> guard(lock);
+            said.push_back(line);
+        };
+        hooks.cancel = &cancel;
+        if (!progress.is_none())
+            hooks.progress = [&](const Progress& p) {
+                py::gil_scoped_acquire gil;
+                try {
+                    progress(py::dict("iteration"_a = p.iteration, "iterations"_a = p.iterations, "current"_a = p.current,
+                                      "best"_a = std::isfinite(p.best) ? py::object(py::float_(p.best)) : py::object(py::none()),
+                                      "temperature"_a = p.temperature, "feasible"_a = p.feasible, "seconds"_a = p.seconds,
+                                      "eta_seconds"_a = p.etaSeconds, "line"_a = progressLine(p)));
+                } catch (py::error_already_set& e) {
+                    if (!raisedType) raisedType = e.type(), raisedValue = e.value();
+                    cancel = true;
+                }
+            };
+        std::thread engine([&] {
+            try {
+                const auto limit = threadLimit(threads);
+                api::namingScene(path_, [&] {
+                    if (out) api::checkOutputFolder(*out);
+                    const std::unique_ptr<api::OptimizeRun> run = api::optimize(*scene_, request, hooks);
+                    report = api::reportText(*run);
+                    layout = api::layoutText(*run);
+                    if (out) api::writeOutputs(*run, *out);
+                    if (out && pictures && !cancel) api::writePictures(*run, *out, 0, pdf, &cancel);
+                });
+            } catch (...) {
+                failure = std::current_exception();
+            }
+            const std::lock_guard<std::mutex> guard(lock);
+            done = true;
+            finished.notify_all();
+        });
+        {
+            py::gil_scoped_release released;
+            std::unique_lock<std::mutex> waiting(lock);
+            while (!finished.wait_for(waiting, std::chrono::milliseconds(100), [&] { return done; })) {
+                waiting.unlock();
+                {
+                    py::gil_scoped_acquire gil;
+                    if (PyErr_CheckSignals() != 0) {
+                        // KeyboardInterrupt (or a handler's own exception): the search stops with
+                        // its best so far, which is returned; the exception is not raised.
+                        PyErr_Clear();
+                        cancel = true;
+                    }
+                }
+                waiting.lock();
+            }
+        }
+        engine.join();
+        if (raisedType) {
+            PyErr_SetObject(raisedType.ptr(), raisedValue.ptr());
+            throw py::error_already_set();
+        }
+        if (failure) std::rethrow_exception(failure);
+        return py::make_tuple(report, layout, said);
+    }
+
 private:
     std::string path_;
     std::shared_ptr<const Scene> scene_;
@@ -101,5 +197,7 @@ PYBIND11_MODULE(_core, m) {
         .def_property_readonly("warnings", &python::PyScene::warnings)
         .def("initial_layout", &python::PyScene::initialLayout)
         .def("measure", &python::PyScene::measure, "layout_file"_a, "layout_text"_a, "paths"_a, "seed"_a, "threads"_a, "at"_a,
-             "annual"_a);
+             "annual"_a)
+        .def("optimize", &python::PyScene::optimize, "out"_a, "iterations"_a, "seed"_a, "threads"_a, "paths"_a,
+             "suggestions"_a, "start_file"_a, "start_text"_a, "pictures"_a, "pdf"_a, "progress"_a);
 }

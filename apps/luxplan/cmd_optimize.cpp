@@ -22,6 +22,7 @@
 #include "option_checks.h"
 #include "shared_options.h"
 #include "picture_progress.h"
+#include <luxplan/api/optimize.h>
 #include <luxplan/core/atomic_file.h>
 #include <luxplan/core/error.h>
 #include <luxplan/daylight/daylight.h>
@@ -73,9 +74,6 @@ struct OptimizeArgs : SharedArgs {
     bool noPdf = false, noPictures = false;
 };
 
-// optimize's default light roulette floor in the search (the setting light_roulette).
-constexpr double kSearchLightRoulette = 0.2;
-
 // One status line, redrawn in place on a terminal, printed every few seconds
 // otherwise; and once, the moment the first layout passes the rules (the cost then
 // starts to include the light).
@@ -98,33 +96,6 @@ void showProgress(const Progress& p, bool tty, bool& feasibleSeen) {
     std::cerr << (tty ? "\r" : "") << line << (tty ? "\033[K" : "\n") << std::flush;
 }
 
-// Fails now, not after the search, when the output folder cannot take files.
-void checkOutputFolder(const std::filesystem::path& folder) {
-    std::error_code ec;
-    std::filesystem::create_directories(folder, ec);
-    if (ec) throw IoError(folder.string() + ": cannot create the output folder (" + ec.message() + ")");
-    const std::filesystem::path probe = folder / ".luxplan-write-check";
-    writeFileAtomically(probe, "");
-    std::filesystem::remove(probe, ec);
-}
-
-// snapshots.json (the setting snapshots): the best layout at each checkpoint of the run,
-// in the scene the search ran on (the flattened one in a flat run: measure with flat
-// true reads it).
-void writeSnapshots(const std::filesystem::path& file, const Scene& scene, const OptimizerResult& result) {
-    nlohmann::json list = nlohmann::json::array();
-    for (const Snapshot& s : result.snapshots)
-        list.push_back({{"iteration", s.iteration},
-                        {"seconds", s.seconds},
-                        {"lighting_evaluations", s.lightingEvaluations},
-                        {"search_C", std::isfinite(s.searchCost) ? nlohmann::json(s.searchCost) : nlohmann::json(nullptr)},
-                        {"feasible", s.feasible},
-                        {"layout", nlohmann::json::parse(io::layoutToJson(scene, s.best))}});
-    nlohmann::json j = {{"scene", scene.name}, {"seed", result.options.seed}, {"flat", result.options.hierarchy == Hierarchy::Flat},
-                        {"iterations", result.iterations}, {"snapshots", list}};
-    writeFileAtomically(file, j.dump(1) + "\n");
-}
-
 // check_cache's verdict: every reused path traced again, and what differed.
 void printCacheCheck(const Scene& scene, const CacheCheck& check) {
     if (check.differing == 0) {
@@ -145,88 +116,37 @@ void printCacheCheck(const Scene& scene, const CacheCheck& check) {
     }
 }
 
-// The settings the run uses: the scene's (--set over them), then the command line's,
-// the report's and the selection's counts not below the search's, and the optional ones
-// at optimize's defaults (report.json's "settings").
-OptimizerSettings runSettings(const OptimizeArgs& args, const OptimizerSettings& scene) {
-    OptimizerSettings s = scene;
-    if (args.iterations >= 0) s.iterations = args.iterations;
-    if (args.seed) s.seed = *args.seed;
-    if (args.suggestions > 0) s.suggestions = args.suggestions;
-    if (args.paths > 0) s.pathsPerPoint = s.searchPathsPerPoint = args.paths;
-    s.reportPathsPerPoint = std::max(s.reportPathsPerPoint, s.searchPathsPerPoint);
-    s.selectionPathsPerPoint = std::max(s.selectionPathsPerPoint, s.searchPathsPerPoint);
-    s.sunPatches = s.sunPatches.value_or(SunPatchUse::Report);
-    s.lightRoulette = s.lightRoulette.value_or(kSearchLightRoulette);
-    return s;
-}
-
-// The path-traced lighting term (null without samplers): the search's measurements
-// at `measure`'s paths, the report's and the selection's at theirs.
-std::unique_ptr<PathTracedLighting> makeLighting(const Scene& scene, const DaylightEnvironment* daylight,
-                                                 const TracingSettings& tracingSettings, const MeasureOptions& measure,
-                                                 int reportPaths, int selectionPaths) {
-    if (scene.samplers.empty()) return nullptr;
-    PathTracerOptions search, report;
-    search.sunPatches = tracingSettings.samplesSunPatches(SunPatchUse::Report, true);
-    report.sunPatches = tracingSettings.samplesSunPatches(SunPatchUse::Report, false);
-    search.exteriorSun = report.exteriorSun = tracingSettings.exteriorSun;
-    auto lighting = std::make_unique<PathTracedLighting>(scene, daylight, measure, search, report);
-    lighting->setReportPaths(reportPaths);        // the result's report and the suggestions'
-    lighting->setSelectionPaths(selectionPaths);  // confirmations and the candidates' re-measures
-    lighting->setIncremental(!tracingSettings.fullEvaluation);
-    lighting->setCheckCache(tracingSettings.checkCache);
-    lighting->setFreshNoise(tracingSettings.freshNoise);
-    lighting->setLightRoulette(*tracingSettings.lightRoulette);
-    return lighting;
-}
-
-// The start (its draws said on stderr while none passes the rules) and the run, its
-// progress on stderr unless quiet; `start` receives the start layout.
-OptimizerResult search(Optimizer& optimizer, bool quiet, Layout& start) {
-    bool tty = !quiet && isatty(STDERR_FILENO);
-    bool drew = false;
-    auto lastLine = std::chrono::steady_clock::now();
-    auto drawing = [&](int drawn, int most) {
+// The run's progress on stderr unless quiet: the start's draws while none passes the
+// rules, the progress line, and the stop by a signal.
+api::OptimizeHooks progressHooks(bool quiet) {
+    api::OptimizeHooks hooks;
+    hooks.warning = [](const std::string& line) { std::cerr << line << "\n"; };
+    if (!quiet) hooks.note = [](const std::string& line) { std::cerr << line << "\n"; };
+    hooks.bake = [quiet](const DaylightParams& d, const Site& site) { return bakeDaylight(d, site, quiet); };
+    hooks.cancel = &interrupted;
+    if (quiet) return hooks;
+    struct State {
+        bool tty = isatty(STDERR_FILENO), drew = false, feasibleSeen = false;
+        std::chrono::steady_clock::time_point lastLine = std::chrono::steady_clock::now();
+    };
+    auto state = std::make_shared<State>();
+    hooks.drawing = [state](int drawn, int most) {
         // A start that keeps failing the geometric rules (furniture that cannot fit):
         // its draws can take seconds in all. Without a terminal, a line every 5 s.
-        if (!tty && drew && std::chrono::steady_clock::now() - lastLine < std::chrono::seconds(5)) return;
-        lastLine = std::chrono::steady_clock::now();
-        drew = true;
-        std::cerr << (tty ? "\r" : "") << "drawing a start layout: " << drawn << " of at most " << most
-                  << " draws, none within the geometric rules' hard limits yet" << (tty ? "\033[K" : "\n") << std::flush;
+        if (!state->tty && state->drew && std::chrono::steady_clock::now() - state->lastLine < std::chrono::seconds(5)) return;
+        state->lastLine = std::chrono::steady_clock::now();
+        state->drew = true;
+        std::cerr << (state->tty ? "\r" : "") << "drawing a start layout: " << drawn << " of at most " << most
+                  << " draws, none within the geometric rules' hard limits yet" << (state->tty ? "\033[K" : "\n")
+                  << std::flush;
     };
-    optimizer.initialize(quiet ? std::function<void(int, int)>() : drawing);
-    if (drew && tty) std::cerr << "\n";
-    start = optimizer.current();  // the comparison picture's left side
-    ProgressCallback progress;
-    // The start within every rule's limit: no "by iteration N: a layout keeps every rule" line.
-    bool feasibleSeen = !optimizer.currentEvaluation().rejected;
-    if (!quiet) progress = [tty, &feasibleSeen](const Progress& p) { showProgress(p, tty, feasibleSeen); };
-    OptimizerResult result = optimizer.run(progress, &interrupted);
-    if (tty) std::cerr << "\n";
-    if (result.stop == StopReason::Cancelled) std::cerr << "interrupted: writing the best layout found so far\n";
-    return result;
-}
-
-// layout.json (and the suggestions) in the scene file's hierarchy, so that --layout
-// reads them back; in a flat run layout_flat.json keeps every object's own placement
-// (measure --set flat=true).
-void writeLayouts(const std::filesystem::path& out, const Scene& original, const Scene& scene,
-                  const std::optional<FlatScene>& flattened, const OptimizerResult& result) {
-    if (flattened) {
-        io::writeLayout(out / "layout_flat.json", scene, result.best);
-        io::writeLayout(out / "layout.json", original, hierarchicalLayoutOf(original, *flattened, result.best));
-    } else {
-        io::writeLayout(out / "layout.json", scene, result.best);
-    }
-    if (!result.suggestions.empty()) std::filesystem::create_directories(out / "suggestions");
-    for (size_t i = 0; i < result.suggestions.size(); ++i) {
-        const Layout& layout = result.suggestions[i].layout;
-        const std::filesystem::path file = out / suggestionFile(i);
-        if (flattened) io::writeLayout(file, original, hierarchicalLayoutOf(original, *flattened, layout));
-        else io::writeLayout(file, scene, layout);
-    }
+    hooks.started = [state](const Optimizer& optimizer) {
+        if (state->drew && state->tty) std::cerr << "\n";
+        // The start within every rule's limit: no "by iteration N: a layout keeps every rule" line.
+        state->feasibleSeen = !optimizer.currentEvaluation().rejected;
+    };
+    hooks.progress = [state](const Progress& p) { showProgress(p, state->tty, state->feasibleSeen); };
+    return hooks;
 }
 
 // The run in words on stdout: its cost, the goals and rules held, each target missed.
@@ -276,25 +196,13 @@ void printSummary(const Scene& scene, const OptimizerResult& result, int reportP
 }
 
 // The pictures, scene.glb, report.html and report.pdf, said on stdout.
-void writePictures(const OptimizeArgs& args, const Scene& scene, const OptimizerSettings& settings, const Layout& start,
-                   const OptimizerResult& result, const DaylightEnvironment* daylight) {
-    OutputOptions pictures;
-    pictures.seed = result.options.seed;
-    pictures.samplerPaths = settings.reportPathsPerPoint;  // the start's too, as the result's
-    pictures.tracing.sunPatches = settings.samplesSunPatches(SunPatchUse::Report, false);
-    pictures.tracing.exteriorSun = settings.exteriorSun;
-    pictures.initialLabel = "start";
+void writePictures(const OptimizeArgs& args, const api::OptimizeRun& run) {
     // A (second) stop signal from now on skips the pictures still to make.
     interrupted.store(false);
-    pictures.cancel = &interrupted;
-    if (args.spp > 0) pictures.renderSamplesPerPixel = args.spp;
-    pictures.pdf = !args.noPdf;
-    RunOutputs outputs;
-    {
-        std::cout.flush();  // the summary before the pictures' progress on stderr, also in a log
-        PictureProgress progress(pictures);
-        outputs = writeRunOutputs(args.out, scene, start, result.best, &result, daylight, pictures);
-    }
+    std::cout.flush();  // the summary before the pictures' progress on stderr, also in a log
+    const RunOutputs outputs = api::writePictures(run, args.out, args.spp, !args.noPdf, &interrupted, [](OutputOptions& o) {
+        return std::static_pointer_cast<void>(std::make_shared<PictureProgress>(o));
+    });
     if (outputs.files.empty() && outputs.cancelled) {
         std::cout << "  pictures: stopped before the first was written\n";
     } else {
@@ -308,66 +216,30 @@ void writePictures(const OptimizeArgs& args, const Scene& scene, const Optimizer
 int runOptimize(const OptimizeArgs& args) {
     // From the start, so that a signal during loading still ends in written outputs.
     StopSignals stopSignals;
-    const Scene original = loadSceneWithSettings(args);
-    const OptimizerSettings settings = runSettings(args, original.optimizer);
-    const TracingSettings& tracingSettings = settings;
+    Scene original = loadSceneWithSettings(args);
     printSceneWarnings(original);
-    checkOutputFolder(args.out);
-    // Before the daylight's bake: each layout's measurement and the report's.
-    warnLargeMeasurement(original, settings.searchPathsPerPoint, "the search measures each layout at");
-    warnLargeMeasurement(original, settings.reportPathsPerPoint, "the report measures the final layout at");
-    std::optional<DaylightEnvironment> daylight;
-    if (original.daylight) daylight = bakeDaylight(*original.daylight, original.site, args.quiet);
+    api::checkOutputFolder(args.out);
+    api::OptimizeRequest request;
+    request.iterations = args.iterations;
+    request.paths = args.paths;
+    request.suggestions = args.suggestions;
+    request.seed = args.seed;
+    request.startFile = args.start;
+    const std::unique_ptr<api::OptimizeRun> run = api::optimize(std::move(original), request, progressHooks(args.quiet));
+    const OptimizerResult& result = run->result;
+    if (!args.quiet && isatty(STDERR_FILENO)) std::cerr << "\n";
+    if (result.stop == StopReason::Cancelled) std::cerr << "interrupted: writing the best layout found so far\n";
 
-    OptimizerOptions options = optimizerOptions(settings);
-    // Flat: the same furniture without groups, kept together by cohesion constraints.
-    std::optional<FlatScene> flattened;
-    if (options.hierarchy == Hierarchy::Flat) {
-        flattened = flattenScene(original);
-        if (!args.quiet)
-            std::cerr << "flat: " << flattened->scene.entities.size() << " objects without groups, "
-                      << flattened->cohesionConstraints << " cohesion constraints\n";
-    }
-    const Scene& scene = flattened ? flattened->scene : original;
-    if (!args.start.empty()) {
-        // The designer's own layout (readLayout names the file and entry of any error:
-        // an unknown or fixed entity, a pose outside its regions).
-        const Layout given = io::readLayout(args.start, original);
-        options.start = StartFrom::Given;
-        options.startLayout = flattened ? flatLayoutOf(original, *flattened, given) : given;
-    }
-
-    MeasureOptions measure;
-    measure.pathsPerPoint = settings.searchPathsPerPoint;
-    warnFewPaths(original, measure.pathsPerPoint, args.paths > 0);
-    measure.seed = options.seed;
-    measure.adaptive = !tracingSettings.fixedPaths;
-    measure.lowDiscrepancy = tracingSettings.lowDiscrepancy;
-    measure.choiceError = false;  // the search's stops do not read it; its report's measurements do
-    // The report's count for the result (measure's default: report.json and `measure
-    // --layout --seed` give one number); the selection's, far fewer, for the confirmations
-    // and the candidates' re-measures (issue 58). Neither below the search's.
-    const int reportPaths = settings.reportPathsPerPoint;
-    const int selectionPaths = settings.selectionPathsPerPoint;
-    std::unique_ptr<PathTracedLighting> lighting =
-        makeLighting(scene, daylight ? &*daylight : nullptr, tracingSettings, measure, reportPaths, selectionPaths);
-
-    // With lighting weight 0 the chain never calls it, but the result's report does.
-    Optimizer optimizer(scene, options, lighting.get());
-    Layout start;
-    OptimizerResult result = search(optimizer, args.quiet, start);
-
-    writeOptimizerOutputs(args.out, scene, result, io::settingsJson(settings));
-    if (!result.snapshots.empty()) writeSnapshots(std::filesystem::path(args.out) / "snapshots.json", scene, result);
-    writeLayouts(args.out, original, scene, flattened, result);
-    printSummary(scene, result, reportPaths);
+    api::writeOutputs(*run, args.out);
+    printSummary(run->scene(), result, run->settings.reportPathsPerPoint);
     std::cout << "\n  wrote " << args.out << "/layout.json, report.json, trace.csv\n";
-    if (!args.noPictures) writePictures(args, scene, settings, start, result, daylight ? &*daylight : nullptr);
-    if (lighting)
+    if (!args.noPictures) writePictures(args, *run);
+    if (const PathTracedLighting* lighting = run->lighting.get()) {
         std::cout << "  lighting: " << lighting->evaluations() << " evaluations, "
                   << lighting->rays().closest + lighting->rays().shadow << " rays, " << lighting->tracedPaths()
                   << " paths traced, " << lighting->reusedPaths() << " reused from earlier layouts\n";
-    if (lighting && tracingSettings.checkCache) printCacheCheck(scene, lighting->cacheCheck());
+        if (run->settings.checkCache) printCacheCheck(run->scene(), lighting->cacheCheck());
+    }
     return result.stop == StopReason::Cancelled || interrupted.load() ? stopSignal.load() : 0;
 }
 

@@ -1,9 +1,12 @@
-"""luxplan from Python: load a scene and measure it as `luxplan measure --json` does.
+"""luxplan from Python: load a scene, measure it as `luxplan measure --json` does and
+optimize it as `luxplan optimize` does.
 
     import luxplan
     scene = luxplan.Scene("scenes/paper/fig4-presenter.json")
     m = scene.measure(paths=256, seed=3)
     m["C"], m["samplers"][0]["value"], m.point_values["presenter"]
+    r = scene.optimize(iterations=500, seed=1)
+    r["C"], r["layout"]
 
 Results are the CLI's JSON objects as dicts (the same keys and numbers, bit for bit);
 errors are SceneError (every problem: file, JSON path, message), IoError and
@@ -94,6 +97,39 @@ class Scene:
         for line in said:
             warnings.warn(line, SceneWarning, stacklevel=2)
         return Measurement(json.loads(text))
+
+    def optimize(self, out=None, iterations=None, seed=None, threads=None, paths=None, pictures=False, progress=None,
+                 suggestions=None, start=None, pdf=True):
+        """What `luxplan optimize SCENE -o OUT` writes, with --iterations, --seed, --threads,
+        --paths, --suggestions and --start: report.json's content as a dict, its
+        ["layout"] the result (layout.json's content). With `out`, the files are written
+        there too (`pictures`: the pictures, scene.glb, report.html and, with `pdf`,
+        report.pdf). `progress(dict)` is called at each progress step (iteration,
+        iterations, current, best, temperature, feasible, seconds, eta_seconds, line); an
+        exception it raises stops the search and is raised. Ctrl-C stops the search and
+        returns the best layout so far (its "stop_reason" is "cancelled")."""
+        _whole("iterations", iterations, 0)
+        _whole("seed", seed, 0, 2**64 - 1)
+        _whole("threads", threads, 0)
+        _whole("paths", paths, 1)
+        _whole("suggestions", suggestions, 1, 50)
+        if pictures and out is None:
+            raise ValueError("pictures need an output folder (out)")
+        if progress is not None and not callable(progress):
+            raise TypeError("progress must be callable")
+        start_file = start_text = None
+        if isinstance(start, dict):
+            start_text = json.dumps(start)
+        elif start is not None:
+            start_file = os.fspath(start)
+        report, layout, said = self._scene.optimize(
+            None if out is None else os.fspath(out), -1 if iterations is None else iterations, seed, threads or 0,
+            paths or 0, suggestions or 0, start_file, start_text, bool(pictures), bool(pdf), progress)
+        for line in said:
+            warnings.warn(line, SceneWarning, stacklevel=2)
+        result = json.loads(report)
+        result["layout"] = json.loads(layout)
+        return result
 
 
 def read_layout(path):
