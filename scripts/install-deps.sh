@@ -2,7 +2,8 @@
 # Installs what luxplan builds and tests with: Debian 12 packages (the C++ libraries,
 # Chromium for the report's browser test and report.pdf, poppler-utils to read
 # report.pdf back in the tests, DejaVu fonts for the plan's labels, Python for
-# scripts/ and the Python module (pybind11, numpy, pytest: python/, docs/python.md), Node.js and npm where they are missing), then the report viewer's and the
+# scripts/ and the Python module (pybind11, numpy, pytest, dask.distributed: python/,
+# docs/python.md), Node.js and npm where they are missing), then the report viewer's and the
 # glTF validator's npm packages (web/package-lock.json) into web/node_modules.
 # Idempotent: what is already present is skipped, so a second run does nothing and
 # needs no network.
@@ -18,7 +19,7 @@ packages=(
   chromium poppler-utils
   fonts-dejavu-core
   python3
-  pybind11-dev python3-dev python3-numpy python3-pytest
+  pybind11-dev python3-dev python3-numpy python3-pytest python3-distributed
 )
 # Node.js may come from elsewhere than Debian (a newer release); only install Debian's
 # when there is none.

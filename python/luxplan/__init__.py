@@ -18,10 +18,11 @@ import warnings
 
 import numpy as np
 
+from ._batch import JobError, batch
 from ._core import IoError, SceneError, UsageError
 from ._core import Scene as _CoreScene
 
-__all__ = ["Scene", "Measurement", "SceneError", "IoError", "UsageError", "SceneWarning", "read_layout", "write_layout"]
+__all__ = ["Scene", "Measurement", "batch", "JobError", "SceneError", "IoError", "UsageError", "SceneWarning", "read_layout", "write_layout"]
 
 
 class SceneWarning(UserWarning):
