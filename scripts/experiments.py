@@ -3,14 +3,19 @@
 every result with a seed no search used, and writes docs/experiments.md.
 
     scripts/experiments.py [--luxplan build/luxplan] [--out out/experiments]
-                           [--jobs N] [--only fig6,fig7,fig8,fig9,fig10] [--doc docs/experiments.md]
+                           [--jobs N] [--scheduler ADDRESS] [--only fig6,fig7,fig8,fig9,fig10]
+                           [--doc docs/experiments.md]
 
 Every table of docs/experiments.md comes from this script: run it again to
 regenerate them (runs already in OUT are reused, so a second call only re-measures
-and rewrites; delete OUT to start afresh). Each search runs single-threaded, JOBS
-(default: the number of cores) at a time; times are the wall time of each process,
-so they grow when JOBS exceeds the idle cores. With --only, the other experiments are
-read from OUT if there, and left out of the page otherwise.
+and rewrites; delete OUT to start afresh). The searches and measurements run through
+the Python module's luxplan.batch (docs/python.md; build it with `make python`) on a
+dask.distributed cluster: a LocalCluster of JOBS single-threaded workers (default: the
+number of cores), or the scheduler at ADDRESS (`dask scheduler`, with `dask worker`s on
+other machines). Each search runs single-threaded, JOBS at a time; times are each
+job's wall time as the client sees it, so they grow when JOBS exceeds the idle cores.
+The plans (plan.png) are drawn by the CLI, --luxplan. With --only, the other
+experiments are read from OUT if there, and left out of the page otherwise.
 
   fig6   hierarchical against the groupless flat baseline (--set flat=true), 16 seeds, on the three
          hierarchy scenes: the best-so-far layout (optimize --set snapshots=N) re-measured
@@ -23,7 +28,7 @@ read from OUT if there, and left out of the page otherwise.
   fig10  the event hall by day and by night, 4 seeds each: dance-floor occupancy and
          the smallest gap between tables.
 
-Standard library only.
+The standard library, the module luxplan (from build/python) and dask.distributed.
 """
 import argparse
 import concurrent.futures
@@ -48,42 +53,65 @@ REMEASURE_OFFSET = 500000  # independent seeds: the run's seed + this (the searc
 # ---------------------------------------------------------------- running luxplan
 
 class Runner:
-    def __init__(self, luxplan, out, jobs):
+    """The experiments' jobs on a dask.distributed cluster through luxplan.batch, JOBS
+    submitted at a time (one per worker); the CLI for the plans' pictures."""
+
+    def __init__(self, luxplan, out, jobs, scheduler=None):
         self.luxplan, self.out, self.jobs = luxplan, out, jobs
         self.pool = concurrent.futures.ThreadPoolExecutor(max_workers=jobs)
+        sys.path.insert(0, os.path.join(os.path.dirname(luxplan), "python"))
+        import distributed
+        global luxplan_module
+        import luxplan as luxplan_module
+        if scheduler:
+            self.cluster, self.client = None, distributed.Client(scheduler)
+        else:
+            self.cluster = distributed.LocalCluster(n_workers=jobs, threads_per_worker=1, processes=True,
+                                                    dashboard_address=":0")
+            self.client = distributed.Client(self.cluster)
 
-    def run(self, args, log=None):
+    def close(self):
+        self.client.close()
+        if self.cluster:
+            self.cluster.close()
+
+    def job(self, job):
+        """One job through luxplan.batch: its result and wall seconds, or RuntimeError."""
+        t0 = time.monotonic()
+        result = luxplan_module.batch([job], self.client)[0]
+        if isinstance(result, luxplan_module.JobError):
+            raise RuntimeError("luxplan %s failed: %s" % (job["command"], result))
+        return result, time.monotonic() - t0
+
+    def run(self, args):
+        """The CLI (the plans' pictures): its stdout and wall seconds."""
         t0 = time.monotonic()
         p = subprocess.run([self.luxplan] + args, capture_output=True, text=True)
-        if log:
-            with open(log, "w") as f:
-                f.write(p.stdout + p.stderr)
         if p.returncode != 0:
             raise RuntimeError("luxplan %s failed (%d):\n%s" % (" ".join(args), p.returncode, p.stderr[-2000:]))
         return p.stdout, time.monotonic() - t0
 
-    def optimize(self, scene, out, seed, extra=()):
-        """optimize once into `out` (kept: a later call reuses it); returns the report."""
+    def optimize(self, scene, out, seed, settings=()):
+        """optimize once into `out` (kept: a later call reuses it), `settings` as --set's
+        KEY=VALUE; returns the report."""
         report = os.path.join(out, "report.json")
         if not os.path.exists(report):
             os.makedirs(out, exist_ok=True)
-            _, wall = self.run(["optimize", scene, "-o", out, "--seed", str(seed), "--threads", "1", "-q",
-                                "--no-pictures"] + list(extra), log=out + ".log")
+            _, wall = self.job({"command": "optimize", "scene": scene, "out": out, "seed": seed, "threads": 1,
+                                "settings": list(settings)})
             with open(os.path.join(out, "wall.json"), "w") as f:
                 json.dump({"wall_seconds": wall}, f)
         return load(report)
 
     def measure(self, scene, layout, seed, paths, flat=False, cache=None):
-        """measure --json of a layout (cached in `cache` when given)."""
+        """measure --json's object of a layout (cached in `cache` when given)."""
         if cache and os.path.exists(cache):
             return load(cache)
-        args = ["measure", scene, "--json", "--seed", str(seed), "--paths", str(paths), "--threads", "1"]
+        job = {"command": "measure", "scene": scene, "seed": seed, "paths": paths, "threads": 1,
+               "settings": ["flat=true"] if flat else []}
         if layout:
-            args += ["--layout", layout]
-        if flat:
-            args += ["--set", "flat=true"]
-        text, _ = self.run(args)
-        result = json.loads(text[text.index("{"):])
+            job["layout"] = layout
+        result, _ = self.job(job)
         if cache:
             write_json(cache, result)
         return result
@@ -166,8 +194,8 @@ def fig6(r, out):
         def one(run):
             mode, seed = run
             folder = os.path.join(out, "fig6", name, "%s-%d" % (mode, seed))
-            extra = ["--set", "snapshots=%d" % SNAPSHOTS] + (["--set", "flat=true"] if mode == "flat" else [])
-            r.optimize(scene, folder, seed, extra)
+            settings = ["snapshots=%d" % SNAPSHOTS] + (["flat=true"] if mode == "flat" else [])
+            r.optimize(scene, folder, seed, settings)
             snaps = load(os.path.join(folder, "snapshots.json"))["snapshots"]
             points = []
             for k, s in enumerate(snaps):
@@ -746,7 +774,8 @@ def commit():
 HEADER = """# Experiments: the paper's section 7 with statistics
 
 Every table on this page is written by `scripts/experiments.py` (run it to regenerate
-them; docs/performance.md has the speed figures). Each search is a plain `luxplan
+them, on this machine or a dask cluster: [python.md](python.md); docs/performance.md has
+the speed figures). Each search is a plain `luxplan
 optimize` at the scene's own settings unless a table says otherwise, and **every cost
 below is an independent measurement** (`luxplan measure --layout` with a seed no
 search used), not the search's own estimate, which is low by the luck of its noise
@@ -776,6 +805,7 @@ def main():
     ap.add_argument("--luxplan", default=os.path.join(ROOT, "build", "luxplan"))
     ap.add_argument("--out", default=os.path.join(ROOT, "out", "experiments"))
     ap.add_argument("--jobs", type=int, default=os.cpu_count() or 1)
+    ap.add_argument("--scheduler", help="a dask scheduler's address (default: a LocalCluster of JOBS workers)")
     ap.add_argument("--only", default=",".join(EXPERIMENTS))
     ap.add_argument("--doc", default=os.path.join(ROOT, "docs", "experiments.md"))
     args = ap.parse_args()
@@ -785,7 +815,7 @@ def main():
             sys.exit("experiments.py: unknown experiment %r (known: %s)" % (x, ", ".join(EXPERIMENTS)))
     if not os.access(args.luxplan, os.X_OK):
         sys.exit("experiments.py: %s is not an executable (build it first: make build)" % args.luxplan)
-    runner = Runner(os.path.abspath(args.luxplan), os.path.abspath(args.out), args.jobs)
+    runner = Runner(os.path.abspath(args.luxplan), os.path.abspath(args.out), args.jobs, args.scheduler)
     page = []
     saved = lambda name: os.path.join(args.out, name + ".json")
     for name, (run, render) in EXPERIMENTS.items():
@@ -804,6 +834,7 @@ def main():
             print("experiments.py: %s done in %.0f s" % (name, time.monotonic() - t0), file=sys.stderr, flush=True)
         if os.path.exists(saved(name)):
             page += render(load(saved(name))["data"])
+    runner.close()
     text = HEADER.format(date=time.strftime("%Y-%m-%d"), provenance=provenance(saved), machine=machine(),
                          jobs=args.jobs) + "\n".join(page)
     tmp = args.doc + ".tmp"
