@@ -79,7 +79,7 @@ std::vector<DaylightInstant> annualHours(const DaylightParams& params, const Sit
 }
 
 DaylightCoefficients::DaylightCoefficients(std::vector<DaylightInstant> hours,
-                                           const std::function<SkyLuminance(size_t hour)>& skyOf,
+                                           const std::function<HourSky(size_t hour)>& skyOf,
                                            const DaylightCoefficientOptions& options)
     : hours_(std::move(hours)), options_(options), sky_(options.skySubdivision), sunPatches_(options.sunSubdivision) {
     // The sun bins: the patches of the finer subdivision that the hours' suns visit,
@@ -102,15 +102,22 @@ DaylightCoefficients::DaylightCoefficients(std::vector<DaylightInstant> hours,
     const int patches = sky_.count(), n = std::max(2, 4 / sky_.subdivision());
     luminance_.assign(hours_.size(), std::vector<double>(size_t(patches), 0.0));
     parallelFor(hours_.size(), [&](size_t h) {
-        const SkyLuminance sky = skyOf(h);
+        const HourSky hour = skyOf(h);
         std::vector<double>& L = luminance_[h];
         double horizontal = 0;
         for (int p = 1; p < patches; ++p) {
             double sum = 0;
             const std::vector<Vec3> dirs = sky_.directions(p, n);
-            for (const Vec3& d : dirs) sum += sky(d);
+            for (const Vec3& d : dirs) sum += hour.luminance(d);
             L[size_t(p)] = sum / double(dirs.size());
             horizontal += L[size_t(p)] * sky_.projectedSolidAngle(p);
+        }
+        if (hour.diffuseHorizontalLx) {
+            // A relative sky: scaled so that its patches give the hour's diffuse
+            // horizontal illuminance on the open plane.
+            const double scale = horizontal > 0 ? *hour.diffuseHorizontalLx / horizontal : 0;
+            for (int p = 1; p < patches; ++p) L[size_t(p)] *= scale;
+            horizontal *= scale;
         }
         const DaylightInstant& i = hours_[h];
         if (i.sunUp()) horizontal += i.sunNormalIlluminanceLx * std::max(0.0, i.sunDirection.z);

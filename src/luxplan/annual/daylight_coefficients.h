@@ -12,6 +12,7 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -36,6 +37,17 @@ struct DaylightCoefficientOptions {
 // One hour's sky: its luminance (cd/m2) in a scene direction above the horizon.
 using SkyLuminance = std::function<double(const Vec3&)>;
 
+// One hour's sky for the coefficients: its luminance, or a relative distribution and the
+// diffuse horizontal illuminance (lx) to scale it to, on the patches' own quadrature (a
+// Perez sky: its normalisation on a fine grid costs more than the rest of a year).
+struct HourSky {
+    HourSky(SkyLuminance sky) : luminance(std::move(sky)) {}  // NOLINT: a luminance is an hour's sky
+    HourSky(SkyLuminance relative, double diffuseHorizontalLx)
+        : luminance(std::move(relative)), diffuseHorizontalLx(diffuseHorizontalLx) {}
+    SkyLuminance luminance;
+    std::optional<double> diffuseHorizontalLx;  // set: `luminance` is relative, scaled to give this
+};
+
 // The hours an annual measurement counts: the instants of the scene's daylight period
 // (every hour of its weather file's period) that are occupied (DaylightParams::occupied)
 // with the sun above the horizon.
@@ -59,7 +71,7 @@ class DaylightCoefficients {
 public:
     // The basis for these hours (their suns set the sun bins) and each hour's patch
     // luminances, `sky(k)` being hour k's sky (layout-free: computed once).
-    DaylightCoefficients(std::vector<DaylightInstant> hours, const std::function<SkyLuminance(size_t hour)>& sky,
+    DaylightCoefficients(std::vector<DaylightInstant> hours, const std::function<HourSky(size_t hour)>& sky,
                          const DaylightCoefficientOptions& options);
 
     // The basis sky the coefficients are traced under, and how (no exterior sun: its

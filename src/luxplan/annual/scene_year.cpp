@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include <luxplan/annual/annual_metrics.h>
+#include <luxplan/daylight/perez_sky.h>
 #include <luxplan/rt/embree_scene.h>
 
 namespace luxplan {
@@ -17,7 +18,19 @@ DaylightCoefficients sceneYear(const Scene& scene) {
     DaylightCoefficientOptions options;
     options.groundReflectance = d.groundReflectance;
     return DaylightCoefficients(
-        hours, [&d, &hours](size_t h) -> SkyLuminance { return skyLuminanceAt(d, hours[h]); }, options);
+        hours,
+        [&d, &hours](size_t h) -> HourSky {
+            const DaylightInstant& i = hours[h];
+            if (d.model == SkyModelType::Perez) {
+                // The relative distribution, normalised on the patches themselves.
+                const PerezSkyCondition condition = perezConditionOf(d, i);
+                if (!condition.lit) return HourSky([](const Vec3&) { return 0.0; });
+                const PerezAllWeatherSky sky(condition, i.sunDirection, false);
+                return HourSky([sky](const Vec3& w) { return sky.relativeLuminance(w); }, condition.diffuseHorizontalLx);
+            }
+            return skyLuminanceAt(d, i);
+        },
+        options);
 }
 
 AnnualSeries measureYearAt(const DaylightCoefficients& year, const EmbreeScene& rt, const std::vector<size_t>& which,

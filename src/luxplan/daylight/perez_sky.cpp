@@ -153,9 +153,9 @@ PerezSkyCondition perezSkyCondition(const PerezSkyInput& in) {
     return c;
 }
 
-PerezAllWeatherSky::PerezAllWeatherSky(const PerezSkyCondition& condition, const Vec3& sunDirection)
+PerezAllWeatherSky::PerezAllWeatherSky(const PerezSkyCondition& condition, const Vec3& sunDirection, bool normalise)
     : k_(condition.coefficients), sun_(normalize(sunDirection)) {
-    if (!condition.lit || !(condition.diffuseHorizontalLx > 0)) return;
+    if (!normalise || !condition.lit || !(condition.diffuseHorizontalLx > 0)) return;
     // Horizontal illuminance of the relative distribution: midpoint rule in (cos theta, phi)
     // (equal solid angle cells), phi measured from the sun's azimuth over [0, pi] and doubled
     // (the distribution is symmetric about the sun's vertical plane). 128 x 128 cells resolve

@@ -75,7 +75,9 @@ PerezSkyCondition perezSkyCondition(const PerezSkyInput& in);
 // and for an unlit condition.
 class PerezAllWeatherSky {
 public:
-    PerezAllWeatherSky(const PerezSkyCondition& condition, const Vec3& sunDirection);
+    // `normalise` false: the relative distribution only (scale() 0, luminance() 0), for a
+    // caller that normalises it on its own quadrature (daylight coefficients' patches).
+    PerezAllWeatherSky(const PerezSkyCondition& condition, const Vec3& sunDirection, bool normalise = true);
     double luminance(const Vec3& w) const;
     double relativeLuminance(const Vec3& w) const;
     double scale() const { return scale_; }  // cd/m2 per unit of relative luminance
