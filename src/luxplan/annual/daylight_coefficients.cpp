@@ -100,10 +100,10 @@ DaylightCoefficients::DaylightCoefficients(std::vector<DaylightInstant> hours,
     // Each hour's patch luminances: the mean over n x n directions equal in solid angle,
     // and the ground's from the light on the open horizontal plane, as the baked sky's.
     const int patches = sky_.count(), n = std::max(2, 4 / sky_.subdivision());
-    luminance_.assign(hours_.size(), std::vector<double>(size_t(patches), 0.0));
+    luminance_.assign(size_t(patches) * hours_.size(), 0.0);
     parallelFor(hours_.size(), [&](size_t h) {
         const HourSky hour = skyOf(h);
-        std::vector<double>& L = luminance_[h];
+        std::vector<double> L(size_t(patches), 0.0);
         double horizontal = 0;
         for (int p = 1; p < patches; ++p) {
             double sum = 0;
@@ -122,6 +122,7 @@ DaylightCoefficients::DaylightCoefficients(std::vector<DaylightInstant> hours,
         const DaylightInstant& i = hours_[h];
         if (i.sunUp()) horizontal += i.sunNormalIlluminanceLx * std::max(0.0, i.sunDirection.z);
         L[0] = options_.groundReflectance * horizontal / kPi;
+        for (int p = 0; p < patches; ++p) luminance_[size_t(p) * hours_.size() + h] = L[size_t(p)];
     });
 }
 
@@ -198,17 +199,20 @@ void DaylightCoefficients::hourly(const PointCoefficients& c, std::vector<double
     const int patches = sky_.count();
     values.assign(hours, 0.0);
     direct.assign(hours, 0.0);
-    for (size_t h = 0; h < hours; ++h) {
-        const std::vector<double>& L = luminance_[h];
-        double v = 0;
-        for (int p = 0; p < patches; ++p) v += c.sky[size_t(p)] * L[size_t(p)];
+    // Patch after patch over every hour (the hours' sums vectorize; each hour still
+    // adds its patches in order, so the sums are those of a loop over the patches).
+    double* v = values.data();
+    for (int p = 0; p < patches; ++p) {
+        const double cp = c.sky[size_t(p)];
+        const double* L = luminance_.data() + size_t(p) * hours;
+        for (size_t h = 0; h < hours; ++h) v[h] += cp * L[h];
+    }
+    for (size_t h = 0; h < hours; ++h)
         if (hourBins_[h] >= 0) {
             const double En = hours_[h].sunNormalIlluminanceLx;
             direct[h] = En * c.direct[h];
-            v += En * c.sun[size_t(hourBins_[h])] + direct[h];
+            v[h] += En * c.sun[size_t(hourBins_[h])] + direct[h];
         }
-        values[h] = v;
-    }
 }
 
 std::vector<DaylightCoefficients::Point> DaylightCoefficients::points(const Scene& scene, const PathTracer& tracer,

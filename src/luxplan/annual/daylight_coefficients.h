@@ -136,7 +136,7 @@ private:
     std::vector<int> binOfPatch_;         // sun patch -> bin (-1: none)
     std::vector<Vec3> sunBinDirections_;  // the basis disks' centres
     std::vector<int> hourBins_;
-    std::vector<std::vector<double>> luminance_;  // [hour][patch], cd/m2 (patch 0: the ground)
+    std::vector<double> luminance_;  // [patch * hours + hour], cd/m2 (patch 0: the ground)
     std::unique_ptr<DaylightEnvironment> basis_;
 };
 
