@@ -9,6 +9,7 @@ back into the client's. A worker lost mid-job costs a rerun (the scheduler resch
 the task from its spec, which holds the files); a job that fails comes back as a
 JobError in its place.
 """
+import hashlib
 import json
 import os
 import shutil
@@ -72,13 +73,15 @@ def _referenced(scene_path):
 
 
 def _bundle(scene, kwargs):
-    """The files a job needs, {absolute path: bytes}, and its kwargs with layouts read
-    (a layout or start given as a file travels as its content)."""
+    """The files a job needs: the scene's ({absolute path: bytes}, shared by the jobs of
+    one scene), the job's own (a layout or start given as a file), and its kwargs with
+    those paths made absolute."""
     files = {}
     for path in [os.path.abspath(scene)] + _referenced(scene):
         if os.path.isfile(path) and path not in files:
             with open(path, "rb") as f:
                 files[path] = f.read()
+    own = {}
     kwargs = dict(kwargs)
     for key in ("layout", "start"):
         value = kwargs.get(key)
@@ -86,9 +89,9 @@ def _bundle(scene, kwargs):
             path = os.path.abspath(os.fspath(value))
             if os.path.isfile(path):
                 with open(path, "rb") as f:
-                    files[path] = f.read()
+                    own[path] = f.read()
             kwargs[key] = path
-    return files, kwargs
+    return files, own, kwargs
 
 
 def _unstaged(value, replacements):
@@ -105,7 +108,8 @@ def _unstaged(value, replacements):
 
 
 def _run_job(spec, files):
-    """On a worker: the job in a folder of its own. ("ok", result, {path in out: bytes})
+    """On a worker: the job in a folder of its own, with the scene's `files` and the
+    job's own (spec["files"]). ("ok", result, {path in out: bytes})
     or ("error", kind, message, diagnostics)."""
     import luxplan  # the worker's own import
 
@@ -116,7 +120,7 @@ def _run_job(spec, files):
     replacements = [(staged + os.path.dirname(spec["scene_abs"]) + os.sep, given_folder + os.sep if given_folder else ""),
                     (staged + spec["scene_abs"], given), (staged, "")]
     try:
-        for path, data in files.items():
+        for path, data in list(files.items()) + list(spec.get("files", {}).items()):
             target = staged + path
             os.makedirs(os.path.dirname(target), exist_ok=True)
             with open(target, "wb") as f:
@@ -146,6 +150,12 @@ def _run_job(spec, files):
         return ("error", type(e).__name__, _unstaged(str(e), replacements), diagnostics)
     finally:
         shutil.rmtree(root, ignore_errors=True)
+
+
+def _files(files):
+    """A bundle of files as a task of its own: computed again from its spec (which holds
+    the bytes) if the worker that holds it is lost."""
+    return files
 
 
 def batch(jobs, client=None, retries=0):
@@ -181,16 +191,27 @@ def batch(jobs, client=None, retries=0):
             scene = os.fspath(scene)
             if not os.path.isfile(scene):
                 raise FileNotFoundError(f"{scene}: cannot open the file")
-            files, kwargs = _bundle(scene, kwargs)
+            files, own, kwargs = _bundle(scene, kwargs)
             specs.append((i, {"command": command, "scene": scene, "scene_abs": os.path.abspath(scene),
-                              "settings": job.get("settings"), "kwargs": kwargs, "out": kwargs.get("out")}, files))
+                              "settings": job.get("settings"), "kwargs": kwargs, "out": kwargs.get("out"), "files": own},
+                          files))
         except Exception as e:  # noqa: BLE001: a job that cannot start is its result
             results[i] = JobError(i, str(job.get("scene")) if isinstance(job, dict) else "?",
                                   str(job.get("command")) if isinstance(job, dict) else "?", type(e).__name__, str(e))
 
     def run(c):
-        futures = [(i, spec, c.submit(_run_job, spec, files, pure=False, retries=retries, key=f"luxplan-{i}-{os.urandom(4).hex()}"))
-                   for i, spec, files in specs]
+        # One bundle per distinct set of files (the jobs of one scene share it), sent once.
+        bundles = {}
+        futures = []
+        for i, spec, files in specs:
+            digest = hashlib.sha1()
+            for path in sorted(files):
+                digest.update(path.encode() + b"\0" + hashlib.sha1(files[path]).digest())
+            key = digest.hexdigest()
+            if key not in bundles:
+                bundles[key] = c.submit(_files, files, pure=False, key=f"luxplan-files-{key}-{os.urandom(4).hex()}")
+            futures.append((i, spec, c.submit(_run_job, spec, bundles[key], pure=False, retries=retries,
+                                              key=f"luxplan-{i}-{os.urandom(4).hex()}")))
         for i, spec, future in futures:
             try:
                 outcome = future.result()

@@ -57,7 +57,15 @@ def test_files_travel_and_outputs_come_back(client, tmp_path):
         {"command": "measure", "scene": "scenes/photometry/downlights.json", "paths": 8, "seed": 2},
         {"command": "optimize", "scene": PRESENTER, "iterations": 100, "paths": 4, "seed": 9, "out": str(out)},
     ]
-    year, downlights, optimized = luxplan.batch(jobs, client)
+    layout = luxplan.Scene(PRESENTER).initial_layout()
+    name = next(iter(layout["entities"]))
+    layout["entities"][name]["position"][0] += 0.4
+    layout_file = tmp_path / "moved.json"
+    luxplan.write_layout(layout, layout_file)
+    jobs.append({"command": "measure", "scene": PRESENTER, "layout": str(layout_file), "paths": 4, "seed": 5})
+    year, downlights, optimized, moved = luxplan.batch(jobs, client)
+    assert without_times(moved) == cli_json("measure", PRESENTER, "--layout", str(layout_file), "--paths", "4", "--seed", "5",
+                                            "--json")
     assert without_times(year) == cli_json("measure", jobs[0]["scene"], "--at", at, "--paths", "8", "--seed", "2", "--json")
     assert without_times(downlights) == cli_json("measure", jobs[1]["scene"], "--paths", "8", "--seed", "2", "--json")
     assert optimized["file"] == PRESENTER  # the client's path, not the worker's

@@ -49,7 +49,8 @@ def test_a_job_runs_where_its_files_are_gone(tmp_path):
     folder = tmp_path / "client"
     path = write_scene(folder)
     want = without_times(luxplan.Scene(path).measure(paths=8, seed=3))
-    files, kwargs = _batch._bundle(str(path), {"paths": 8, "seed": 3})
+    files, own, kwargs = _batch._bundle(str(path), {"paths": 8, "seed": 3})
+    assert own == {}
     assert sorted(os.path.relpath(p, folder) for p in files) == \
         ["ies/downlight.ies", "models/bar.obj", "models/block.bin", "models/block.gltf", "scene.json"]
     shutil.rmtree(folder)  # the worker has only what the job carries
@@ -66,7 +67,7 @@ def test_an_error_names_the_clients_files(tmp_path):
     (folder / "ies" / "downlight.ies").write_text("not an IES file\n")
     with pytest.raises(Exception) as caught:
         luxplan.Scene(path)
-    files, kwargs = _batch._bundle(str(path), {})
+    files, _, kwargs = _batch._bundle(str(path), {})
     spec = {"command": "measure", "scene": str(path), "scene_abs": os.path.abspath(path), "settings": None,
             "kwargs": kwargs, "out": None}
     status, kind, message, _ = _batch._run_job(spec, files)
