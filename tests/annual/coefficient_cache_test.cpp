@@ -35,6 +35,21 @@ Scene office(test::TempDir& dir) {
     return io::loadScene(dir.write("office.json", s.dump(1)));
 }
 
+// The scene in a ray tracer and a tracer under the year's basis, moved to a layout.
+struct Placed {
+    Placed(const Scene& s, const DaylightCoefficients& year)
+        : scene(s), rt(s, initialLayout(s)), tracer(rt, &year.basis(), DaylightCoefficients::tracing()) {}
+    void place(const Layout& layout) {
+        const std::vector<Transform> world = worldTransforms(scene, layout);
+        for (size_t i = 0; i < world.size(); ++i) rt.setEntityTransform(int(i), world[i]);
+        rt.commit();
+        tracer.updateLayout();
+    }
+    const Scene& scene;
+    EmbreeScene rt;
+    PathTracer tracer;
+};
+
 bool same(const AnnualSeries& a, const AnnualSeries& b) {
     if (a.samplers.size() != b.samplers.size()) return false;
     auto equal = [](const std::vector<double>& x, const std::vector<double>& y) {
@@ -63,14 +78,9 @@ TEST(CoefficientCache, GivesTheNumbersFromScratchOverAChainOfMoves) {
     CoefficientCache cache(scene, year, which, kPaths, kSeed);
 
     Layout layout = initialLayout(scene);
-    EmbreeScene rt(scene, layout);
-    PathTracer tracer(rt, &year.basis(), DaylightCoefficients::tracing());
-    auto place = [&](const Layout& l) {
-        const std::vector<Transform> world = worldTransforms(scene, l);
-        for (size_t i = 0; i < world.size(); ++i) rt.setEntityTransform(int(i), world[i]);
-        rt.commit();
-        tracer.updateLayout();
-    };
+    Placed placed(scene, year);
+    PathTracer& tracer = placed.tracer;
+    auto place = [&](const Layout& l) { placed.place(l); };
     ASSERT_TRUE(same(cache.measure(tracer), year.measure(tracer, which, kPaths, kSeed)));
     EXPECT_EQ(cache.reusedPaths(), 0u);
     cache.commit();
@@ -112,19 +122,14 @@ TEST(CoefficientCache, AFloorPointCoveredAndUncoveredIsTracedAgain) {
     const std::vector<size_t> which = {1};
     CoefficientCache cache(scene, year, which, 16, 3);
     Layout layout = initialLayout(scene);
-    EmbreeScene rt(scene, layout);
-    PathTracer tracer(rt, &year.basis(), DaylightCoefficients::tracing());
-    auto place = [&](const Layout& l) {
-        const std::vector<Transform> world = worldTransforms(scene, l);
-        for (size_t i = 0; i < world.size(); ++i) rt.setEntityTransform(int(i), world[i]);
-        rt.commit();
-        tracer.updateLayout();
-    };
-    for (const std::pair<double, double> at : {std::pair{1.2, 4.4}, {3.0, 2.5}, {1.2, 1.0}, {3.0, 2.5}, {4.5, 4.0}}) {
+    Placed placed(scene, year);
+    PathTracer& tracer = placed.tracer;
+    auto place = [&](const Layout& l) { placed.place(l); };
+    for (const auto& [x, y] : {std::pair{1.2, 4.4}, {3.0, 2.5}, {1.2, 1.0}, {3.0, 2.5}, {4.5, 4.0}}) {
         Layout next = layout;
-        next.placements[1].position.x = at.first, next.placements[1].position.y = at.second;
+        next.placements[1].position.x = x, next.placements[1].position.y = y;
         place(next);
-        EXPECT_TRUE(same(cache.measure(tracer), year.measure(tracer, which, 16, 3))) << at.first << ", " << at.second;
+        EXPECT_TRUE(same(cache.measure(tracer), year.measure(tracer, which, 16, 3))) << x << ", " << y;
         cache.commit();
         layout = next;
     }

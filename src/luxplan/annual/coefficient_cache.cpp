@@ -9,16 +9,6 @@
 #include <luxplan/rt/embree_scene.h>
 
 namespace luxplan {
-namespace {
-
-// As the path cache's (incremental/path_cache.cpp): Embree traces in float and pane
-// crossings step 0.1 mm off the line, so a moved box is widened well above both.
-constexpr double kMargin = 1e-3, kRelativeMargin = 1e-6;
-
-bool same(const Transform& a, const Transform& b) { return a.m == b.m && a.t.x == b.t.x && a.t.y == b.t.y && a.t.z == b.t.z; }
-
-}  // namespace
-
 CoefficientCache::CoefficientCache(const Scene& scene, const DaylightCoefficients& year, std::vector<size_t> which,
                                    int paths, uint64_t seed)
     : scene_(scene), year_(year), which_(std::move(which)), paths_(std::max(1, paths)), seed_(seed), clusters_(scene) {}
@@ -122,22 +112,11 @@ AnnualSeries CoefficientCache::measure(const PathTracer& tracer) {
     for (size_t i = 0; i < entities; ++i) pendingWorld_[i] = rt.worldFromEntity(int(i));
 
     // What moved since the committed layout.
-    moved_.clear();
-    movedUnion_ = Bounds3();
-    emittersMoved_ = false;
-    std::vector<char> entityMoved(entities, 0);
-    if (hasCommitted_)
-        for (size_t i = 0; i < entities; ++i) {
-            if (same(world_[i], pendingWorld_[i])) continue;
-            entityMoved[i] = 1;
-            for (const Transform* world : {&world_[i], &pendingWorld_[i]}) {
-                if (clusters_.boxes(i).empty()) continue;
-                PlacedBoxes b(*world, clusters_.boxes(i), kMargin, kRelativeMargin, &clusters_.triangles(i));
-                movedUnion_.extend(b.worldBounds());
-                moved_.push_back(std::move(b));
-            }
-            if (!scene_.entities[i].emitters.empty()) emittersMoved_ = true;
-        }
+    Move move = clusters_.moveBetween(scene_, hasCommitted_ ? world_ : std::vector<Transform>{}, pendingWorld_);
+    moved_ = std::move(move.boxes);
+    movedUnion_ = move.bounds;
+    emittersMoved_ = move.emittersMoved;
+    const std::vector<char>& entityMoved = move.entityMoved;
     movedFilter_ = SegmentBoxFilter(movedUnion_);
 
     std::vector<std::unique_ptr<PlacedSampler>> placed;

@@ -80,7 +80,32 @@ void clusterParts(const TriangleMesh& mesh, std::vector<Bounds3>& out, std::vect
     for (auto& [first, triangles] : parts) clusterBounds(mesh, triangles, 0, triangles.size(), 2, out, outTriangles);
 }
 
+bool sameTransform(const Transform& a, const Transform& b) {
+    return a.m == b.m && a.t.x == b.t.x && a.t.y == b.t.y && a.t.z == b.t.z;
+}
+
+constexpr double kMargin = 1e-3, kRelativeMargin = 1e-6;
+
 }  // namespace
+
+Move EntityClusters::moveBetween(const Scene& scene, const std::vector<Transform>& before,
+                                 const std::vector<Transform>& after) const {
+    Move move;
+    move.entityMoved.assign(after.size(), 0);
+    if (before.size() != after.size()) return move;
+    for (size_t i = 0; i < after.size(); ++i) {
+        if (sameTransform(before[i], after[i])) continue;
+        move.entityMoved[i] = 1;
+        for (const Transform* world : {&before[i], &after[i]}) {
+            if (boxes_[i].empty()) continue;
+            PlacedBoxes b(*world, boxes_[i], kMargin, kRelativeMargin, &triangles_[i]);
+            move.bounds.extend(b.worldBounds());
+            move.boxes.push_back(std::move(b));
+        }
+        if (!scene.entities[i].emitters.empty()) move.emittersMoved = true;
+    }
+    return move;
+}
 
 EntityClusters::EntityClusters(const Scene& scene) : boxes_(scene.entities.size()), triangles_(scene.entities.size()) {
     for (size_t i = 0; i < scene.entities.size(); ++i) {

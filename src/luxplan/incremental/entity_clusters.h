@@ -12,6 +12,16 @@
 
 namespace luxplan {
 
+// What changed from one layout to another: per entity whether its world transform
+// changed, the boxes of every moved entity's clusters at its old and its new pose, their
+// union, and whether a luminaire moved.
+struct Move {
+    std::vector<char> entityMoved;
+    std::vector<PlacedBoxes> boxes;  // refer to the EntityClusters' boxes
+    Bounds3 bounds;
+    bool emittersMoved = false;
+};
+
 class EntityClusters {
 public:
     explicit EntityClusters(const Scene& scene);
@@ -19,6 +29,11 @@ public:
     // own frame, and per box the triangles it bounds (none for a luminaire's).
     const std::vector<Bounds3>& boxes(size_t entity) const { return boxes_[entity]; }
     const std::vector<BoxedTriangles>& triangles(size_t entity) const { return triangles_[entity]; }
+
+    // The move from `before` to `after` (world transforms per entity; `before` empty:
+    // nothing moved). Boxes are widened by 1 mm and 1e-6 of the largest coordinate: Embree
+    // traces in float and pane crossings step 0.1 mm off the line.
+    Move moveBetween(const Scene& scene, const std::vector<Transform>& before, const std::vector<Transform>& after) const;
 
 private:
     std::vector<std::vector<Bounds3>> boxes_;

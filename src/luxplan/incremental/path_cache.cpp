@@ -12,14 +12,9 @@
 namespace luxplan {
 namespace {
 
-bool same(const Transform& a, const Transform& b) { return a.m == b.m && a.t.x == b.t.x && a.t.y == b.t.y && a.t.z == b.t.z; }
 
-
-// Embree traces in float and pane crossings step 0.1 mm off the line: a margin well
-// above both, growing with the coordinates.
-constexpr double kMargin = 1e-3, kRelativeMargin = 1e-6;
 constexpr float kInfF = std::numeric_limits<float>::infinity();
-constexpr double kBoxPad = 1e-4;      // over the clipping's rounding (moved boxes carry kMargin)
+constexpr double kBoxPad = 1e-4;      // over the clipping's rounding (moved boxes carry 1 mm: EntityClusters::moveBetween)
 constexpr double kReachMargin = 0.5;  // m around the room's box: where moves happen (reach_)
 constexpr double kHeightPad = 0.01;   // m around the heights of what moves, far over moved boxes' margin
 
@@ -85,22 +80,11 @@ void PathCache::begin(const EmbreeScene& rt, const std::vector<int>& workSampler
         streams_ = streams;
     }
 
-    moved_.clear();
-    movedUnion_ = Bounds3();
-    emittersMoved_ = false;
-    std::vector<char> entityMoved(entities, 0);
-    if (hasCommitted_)
-        for (size_t i = 0; i < entities; ++i) {
-            if (same(world_[i], newWorld_[i])) continue;
-            entityMoved[i] = 1;
-            for (const Transform* world : {&world_[i], &newWorld_[i]}) {
-                if (clusters_.boxes(i).empty()) continue;
-                PlacedBoxes b(*world, clusters_.boxes(i), kMargin, kRelativeMargin, &clusters_.triangles(i));
-                movedUnion_.extend(b.worldBounds());
-                moved_.push_back(std::move(b));
-            }
-            if (!scene_.entities[i].emitters.empty()) emittersMoved_ = true;
-        }
+    Move move = clusters_.moveBetween(scene_, hasCommitted_ ? world_ : std::vector<Transform>{}, newWorld_);
+    moved_ = std::move(move.boxes);
+    movedUnion_ = move.bounds;
+    emittersMoved_ = move.emittersMoved;
+    const std::vector<char>& entityMoved = move.entityMoved;
     movedFilter_ = SegmentBoxFilter(movedUnion_);
     movedInReach_ = movedUnion_.empty() || (reach_.contains(movedUnion_.lo) && reach_.contains(movedUnion_.hi));
     workMoved_.assign(workSampler.size(), 0);
