@@ -33,6 +33,7 @@ json everyKey() {
                 {"inner_iterations", 7},
                 {"nested", true},
                 {"polish_share", 0.3},
+                {"restart_share", 0.4},
                 {"guided", false},
                 {"suggestions", 3},
                 {"margin", 1.5},
@@ -65,6 +66,7 @@ void expectEveryKeySet(const OptimizerSettings& s) {
     EXPECT_EQ(s.innerIterations, 7);
     EXPECT_TRUE(s.nested);
     EXPECT_EQ(s.polishShare, 0.3);
+    EXPECT_EQ(s.restartShare, 0.4);
     EXPECT_FALSE(s.guided);
     EXPECT_EQ(s.suggestions, 3);
     EXPECT_EQ(s.margin, 1.5);

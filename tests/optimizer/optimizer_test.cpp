@@ -436,6 +436,7 @@ TEST_F(OptimizerTest, ThePolishDescendsFromTheBestAndNeverRises) {
     o.stopAtZeroCost = false;
     o.iterations = 2000;
     o.polishShare = 0.25;
+    o.restartShare = 0;  // one cycle: the polish ends the run
     o.traceEvery = 1;
     OptimizerResult r = Optimizer(scene, o, &light).run();
     ASSERT_TRUE(r.feasible);
@@ -462,6 +463,44 @@ TEST_F(OptimizerTest, ThePolishDescendsFromTheBestAndNeverRises) {
     // The polish starts at the best of the chain before it, and ends at the best.
     EXPECT_LE(r.trace.back().current, r.trace[1500].best);
     EXPECT_DOUBLE_EQ(r.trace.back().current, r.trace.back().best);
+}
+
+// Restarts: cycles of 30% of the run (600 of 2000; the last takes the 800 left), each
+// cooling to its own polish (its last 25%), each later one warm again from the
+// polished best at the restart temperature.
+TEST_F(OptimizerTest, RestartsWarmTheChainAgainFromThePolishedBest) {
+    test::DeskLight light(scene);
+    OptimizerOptions o = optimizerOptions(scene);
+    o.stopAtZeroCost = false;
+    o.iterations = 2000;
+    o.polishShare = 0.25;
+    o.restartShare = 0.3;
+    o.restartTemperature = 0.02;
+    o.traceEvery = 1;
+    OptimizerResult r = Optimizer(scene, o, &light).run();
+    ASSERT_TRUE(r.feasible);
+    EXPECT_EQ(r.polishFrom, 1800);  // the last cycle's polish
+    ASSERT_EQ(r.trace.size(), 2001u);
+    auto polishing = [](int i) { return (i > 450 && i <= 600) || (i > 1050 && i <= 1200) || i > 1800; };
+    double before = kInf;
+    for (const TracePoint& t : r.trace) {
+        if (t.iteration == 0) continue;
+        if (!polishing(t.iteration)) {
+            EXPECT_GT(t.temperature, 0) << "iteration " << t.iteration;
+            before = kInf;
+            continue;
+        }
+        EXPECT_EQ(t.temperature, 0) << "iteration " << t.iteration;
+        EXPECT_LE(t.current, before + 1e-15) << "iteration " << t.iteration;
+        before = t.current;
+    }
+    EXPECT_NEAR(r.trace[1].temperature, 0.1, 0.002);  // the first cycle from the schedule's start
+    for (auto [start, cooling] : {std::pair{600, 450}, std::pair{1200, 600}}) {
+        // The polish ended at the best; the next cycle starts there, warm again.
+        EXPECT_DOUBLE_EQ(r.trace[size_t(start)].current, r.trace[size_t(start)].best) << start;
+        EXPECT_NEAR(r.trace[size_t(start) + 1].temperature, 0.02, 0.0005) << start;
+        EXPECT_NEAR(r.trace[size_t(start + cooling)].temperature, 0.001, 1e-4) << start;  // cooled to the end
+    }
 }
 
 // A constant schedule is a plain chain: no polish (the chain tests sample its law).

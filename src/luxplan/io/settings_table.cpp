@@ -163,8 +163,12 @@ const std::vector<SettingKey>& settingKeys() {
         {"nested", "true or false", "", "false", "optimize",
          "object-level proposals move the members of the group just proposed", boolKey("nested", &S::nested)},
         {"polish_share", "number", rangeText(Range::closed(0, 0.9)), "0.2", "optimize",
-         "the run's last share: a zero-temperature polish of the best layout; 0: none",
+         "each cycle's last share: a zero-temperature polish of the best layout; 0: none",
          numberKey("polish_share", &S::polishShare, Range::closed(0, 0.9))},
+        {"restart_share", "number", rangeText(Range::closed(0, 0.5)), "0.3", "optimize",
+         "the schedule and its polish in cycles of this share of the run, each later one from the polished best, "
+         "warm again at a fifth of the start temperature; 0: one cycle",
+         numberKey("restart_share", &S::restartShare, Range::closed(0, 0.5))},
         {"guided", "true or false", "", "true", "optimize",
          "the guided move: placements drawn from a map of where each entity's targets held", boolKey("guided", &S::guided)},
         {"suggestions", "whole number", rangeText(Range::closed(0, 50)), "0", "optimize",

@@ -59,6 +59,8 @@ OptimizerOptions optimizerOptions(const OptimizerSettings& s) {
     o.schedule.end = s.temperatureEnd;
     o.start = s.startFromScene ? StartFrom::Scene : StartFrom::Uniform;
     o.polishShare = s.polishShare;
+    o.restartShare = s.restartShare;
+    o.restartTemperature = s.temperatureStart / 5;
     o.guidedMoves = s.guided;
     o.suggestions = s.suggestions;
     o.marginZ = s.margin;
@@ -88,6 +90,8 @@ Optimizer::Optimizer(const Scene& scene, OptimizerOptions options, LightingEvalu
     check(options_.candidateSeparation.metres >= 0 && options_.candidateSeparation.degrees >= 0,
           "candidate separation must be >= 0");
     check(options_.polishShare >= 0 && options_.polishShare < 1, "polish share must be in [0, 1)");
+    check(options_.restartShare >= 0 && options_.restartShare < 1, "restart share must be in [0, 1)");
+    check(options_.restartTemperature > 0, "restart temperature must be > 0");
     check(options_.suggestions >= 0, "suggestions must be >= 0");
     check(options_.start != StartFrom::Given ||
               (options_.startLayout && options_.startLayout->placements.size() == scene.entities.size()),
@@ -270,14 +274,32 @@ int Optimizer::objectSteps(Rng& rng) const {
     return whole + (rng.uniform() < steps - whole ? 1 : 0);
 }
 
+int Optimizer::cycleEnd() const {
+    const int n = options_.iterations;
+    const int length = int(std::lround(n * options_.restartShare));
+    if (polishSets_.empty() || length < 1 || cycleStart_ + 2 * length > n) return n;
+    return cycleStart_ + length;
+}
+
 int Optimizer::searchIterations() const {
-    if (polishSets_.empty()) return options_.iterations;
-    return options_.iterations - int(std::lround(options_.iterations * options_.polishShare));
+    const int end = cycleEnd();
+    if (polishSets_.empty()) return end;
+    return end - int(std::lround((end - cycleStart_) * options_.polishShare));
+}
+
+void Optimizer::startCycle() {
+    // From the polished best (the current layout), warm again: the chain may leave its
+    // basin for a better one, which the polish alone never does.
+    polishing_ = false;
+    cycleStart_ = iteration_;
+    cycleStartT_ = std::min(options_.schedule.start, options_.restartTemperature);
 }
 
 double Optimizer::temperature() const {
     if (polishing_) return 0.0;
-    const double t = options_.schedule.temperature(iteration_, searchIterations());
+    Schedule cycle = options_.schedule;
+    cycle.start = cycleStartT_;
+    const double t = cycle.temperature(iteration_ - cycleStart_, searchIterations() - cycleStart_);
     if (!options_.noiseAware || options_.schedule.kind == Schedule::Kind::Constant) return t;
     return std::max(t, std::sqrt(noiseVariance_));
 }
@@ -296,6 +318,8 @@ void Optimizer::initialize(const std::function<void(int drawn, int most)>& drawi
     if (lightMap_) lightMap_->clear();
     polishing_ = false;
     polishFrom_ = options_.iterations;
+    cycleStart_ = 0;
+    cycleStartT_ = options_.schedule.start;
     windowProposed_ = windowAccepted_ = progressProposed_ = progressAccepted_ = 0;
     geometry_.revert();
     Rng rng(hashValues({options_.seed, kStreamTag, kStartStream}));
@@ -535,6 +559,7 @@ void Optimizer::step() {
         ++iteration_;
         return;
     }
+    if (polishing_ && iteration_ >= cycleEnd() && cycleEnd() < options_.iterations) startCycle();
     if (!polishing_ && feasible_ && !polishSets_.empty() && iteration_ >= searchIterations()) startPolish();
     if (polishing_) {
         polishStep();

@@ -106,12 +106,19 @@ struct OptimizerOptions {
     // cycle). A level whose moves the cost does not care about (monitors the chain
     // moves freely, 95% accepted) gets fewer; the share stays within [0.1, 0.9].
     bool adaptiveShare = true;
-    // The polish: this share of `iterations` ends the run as a descent from the best
+    // The polish: this share of each cycle (restartShare) ends it as a descent from the best
     // layout at zero temperature (a proposal is kept when C does not rise), with
     // translate and rotate at the fine step scales only and the snap to the room's
     // quarter turns (MoveOptions::polish). The schedule cools over the iterations before
     // it. 0: no polish; a constant schedule (a plain chain) has none either.
     double polishShare = 0.2;
+    // Restarts: the schedule and its polish run in cycles of this share of `iterations`
+    // (the last cycle takes the rest, up to twice that), each later one from the
+    // polished best at restartTemperature, cooling again to the schedule's end. 0: one
+    // cycle, the whole run. Only with a polish. optimizerOptions() sets the temperature
+    // to a fifth of the schedule's start.
+    double restartShare = 0.3;
+    double restartTemperature = 0.02;
     // Suggestions: how many mutually distinct layouts (optimize --suggestions) to keep
     // beside the result, and what distinct means for them (0: none).
     int suggestions = 0;
@@ -229,7 +236,7 @@ struct OptimizerResult {
     // OptimizerOptions::suggestions: distinct layouts, the result first, then the others
     // by their independent measurement (the report's seed), best first.
     std::vector<Candidate> suggestions;
-    int polishFrom = 0;  // the iteration the polish began at (iterations: none)
+    int polishFrom = 0;  // the iteration the last polish began at (iterations: none)
     OptimizerOptions options;
 };
 
@@ -300,7 +307,10 @@ private:
     // evaluated), then the counters, the accepted state and the trace.
     void settle(bool evaluated, bool accept, MoveStats& stats, Layout proposed, Evaluation e);
     void polishStep();
+    // Where this cycle's polish begins, and where the cycle ends (Options::restartShare).
     int searchIterations() const;
+    int cycleEnd() const;
+    void startCycle();
     void refreshCurrent();
     double costError(const Evaluation& e) const;
     // The seed of independent measurement stream `stream`: not the search's.
@@ -365,6 +375,8 @@ private:
     Rng polishRng_{0};
     bool polishing_ = false;
     int polishFrom_ = 0;
+    int cycleStart_ = 0;       // the iteration the schedule's cycle began at
+    double cycleStartT_ = 0;   // ... and its first temperature
     int64_t windowProposed_ = 0, windowAccepted_ = 0;  // since the last trace row
     int64_t progressProposed_ = 0, progressAccepted_ = 0;  // since the last progress callback
     Candidates suggestions_;

@@ -68,6 +68,7 @@ struct SearchSettings {
     double temperatureStart = 0.1, temperatureEnd = 0.001;
     bool startFromScene = false;     // start from the scene's placement instead of uniform draws
     double polishShare = 0.2;        // the run's last share: a zero-temperature polish of the best
+    double restartShare = 0.3;       // the schedule's cycles, each later one from the polished best
     bool guided = true;              // the guided move from the light map (optimizer/light_map.h)
     int suggestions = 0;             // distinct layouts written beside the result (optimize --suggestions)
     double margin = 2;               // the search's margin inside every lighting band, in standard errors
