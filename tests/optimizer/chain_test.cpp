@@ -449,6 +449,7 @@ TEST(Nesting, ObjectProposalsMoveTheMembersOfTheGroupJustProposed) {
     o.innerIterations = 0;  // a: 4 DOF of members over 1 (x only) = 4 steps; b: 2 over 1
     o.start = StartFrom::Scene;
     o.stopAtZeroCost = false;
+    o.polishShare = 0;  // the levels' proposals only (a polish moves any entity)
     Optimizer chain(s, o, &lighting);
     chain.initialize();
     const int a = s.findEntity("a"), b = s.findEntity("b"), lone = s.findEntity("lone");

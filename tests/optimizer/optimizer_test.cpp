@@ -82,9 +82,10 @@ TEST_F(OptimizerTest, LightingOnlyForLayoutsThatPassTheGeometricTest) {
     EXPECT_GT(rejected, 0);  // the room is tight enough that some proposals collide
     EXPECT_GT(screened, 0);  // delayed acceptance: some fail on their rules' change alone
     // The confirmations, the candidates' re-measures and the report's are the rest, and
-    // the polish's measurement of the best it starts from.
-    EXPECT_LT(r.polishFrom, r.iterations);
-    EXPECT_EQ(light.calls, 1 + evaluatedFeasible + r.independentMeasurements + 1);
+    // each polish's measurement of the best it starts from: one per restart cycle (450,
+    // 450 and 600 iterations at restartShare 0.3).
+    EXPECT_EQ(r.polishFrom, 1380);
+    EXPECT_EQ(light.calls, 1 + evaluatedFeasible + r.independentMeasurements + 3);
 }
 
 TEST_F(OptimizerTest, NoLightingHookMeansLZero) {
