@@ -1,17 +1,22 @@
 #!/usr/bin/env python3
 """Families of scenes with planted solutions, and the search's success on them.
 
-    scripts/scene-family.py generate OUTDIR [--count N] [--seed S] [--luxplan build/luxplan]
+    scripts/scene-family.py generate OUTDIR [--count N] [--seed S] [--kind office|lab|hall] [--workstations N]
+                                            [--daylit] [--designer] [--luxplan build/luxplan]
     scripts/scene-family.py run OUTDIR [--seeds 1-10] [--paths 1000] [--threads 2] [--luxplan build/luxplan]
 
 `generate` draws N scenes (offices, labs and halls of varied size, windows, hour,
-reflectances and number of workstations) and plants a solution in each: a layout built
+reflectances and number of workstations; `--kind`, `--workstations` and `--daylit` narrow
+the draw) and plants a solution in each: a layout built
 first (workstations on a grid that keeps every rule: aligned with the room, screens
 facing their chairs, the clearances with margin; each desk turned the quarter where its
 screen reflects least), measured with `luxplan measure` at 2000 paths per point, and
 targets set around what it measured so that it meets them with margin (desks: the band
 [0.8 min, 1.25 max] of the planted desks' means, at least 150 lx wide; screens: 1.3
-times the planted maximum, at least 50 cd/m2). The scene file holds the planted
+times the planted maximum, at least 50 cd/m2; with `--designer`, desks 300-750 lx and
+screens up to 150 cd/m2 as in the demo's daylit office, the planted desks on places
+the survey puts inside that band and the planted layout inside every target by a
+tenth, else the scene is drawn again). The scene file holds the planted
 layout as its entities' positions and the search starts from a uniform draw, so the
 solution is known but not given. Written: OUTDIR/NAME.json and OUTDIR/NAME.planted.json.
 
@@ -35,12 +40,16 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 import generate as g  # noqa: E402  (the paper scenes' building blocks)
 
 REMEASURE_SEED = 990001  # no search uses it: runs use seeds 1..99
+# --designer: the targets of scenes/demo/daylit-office.json, a designer's rather than
+# the planted layout's (desks in lx, screens in cd/m2).
+DESIGNER_DESK, DESIGNER_SCREEN = (300, 750), 150
 PLANT_PATHS = 2000
 
 
-def draw_scene(rng, index):
-    """One scene's geometry, light and furniture, the planted layout as its positions."""
-    kind = ["office", "lab", "hall"][index % 3]
+def draw_scene(rng, index, kind=None, workstations=None, daylit=False):
+    """One scene's geometry, light and furniture, the planted layout as its positions.
+    `kind`, `workstations` and `daylit` (morning or afternoon only) narrow the draw."""
+    kind = kind or ["office", "lab", "hall"][index % 3]
     if kind == "office":
         W, D, H = rng.uniform(7.5, 10.5), rng.uniform(5.5, 7.5), rng.uniform(2.7, 3.0)
         n = rng.choice([4, 5, 6])
@@ -50,6 +59,7 @@ def draw_scene(rng, index):
     else:
         W, D, H = rng.uniform(12.0, 16.0), rng.uniform(8.0, 11.0), rng.uniform(3.2, 4.0)
         n = rng.choice([6, 8])
+    n = workstations or n
     walls = rng.sample(["east", "south", "west", "north"], k=rng.choice([1, 2]))
     glass = rng.choice(["glass", "tinted"])
     openings = []
@@ -60,7 +70,7 @@ def draw_scene(rng, index):
         for k in range(count):
             offset = (k + 0.5) * length / count - width / 2
             openings.append(g.window(wall, round(offset, 2), round(width, 2), material=glass))
-    hour = rng.choice(["morning", "afternoon", "night"])
+    hour = rng.choice(["morning", "afternoon"] if daylit else ["morning", "afternoon", "night"])
     mats = g.materials()
     mats["floor"]["reflectance"] = round(rng.uniform(0.15, 0.4), 2)
     mats["wall"]["reflectance"] = round(rng.uniform(0.5, 0.8), 2)
@@ -89,7 +99,7 @@ def draw_scene(rng, index):
              for c in range(cols) for r in range(rows)]
     scene.update({"geometry": [g.room([round(W, 2), round(D, 2), round(H, 2)], openings)], "luminaires": lum,
                   "objective": {"lighting_weight": 0.5}, "optimizer": g.optimizer(10000)})
-    return scene, cells, min(n, len(cells)), region
+    return scene, cells, n, region
 
 
 def furnish(scene, positions, region):
@@ -123,8 +133,16 @@ def cmd_generate(args):
     os.makedirs(args.out, exist_ok=True)
     rng = random.Random(args.seed)
     made = 0
+    draws = 0
     while made < args.count:
-        room, cells, n, region = draw_scene(rng, made)
+        draws += 1
+        if draws > 50 * args.count:
+            sys.exit(f"scene-family.py: {draws - 1} scenes drawn, {made} of {args.count} could hold a planted solution")
+        room, cells, n, region = draw_scene(rng, made, args.kind, args.workstations, args.daylit)
+        if n > len(cells):
+            if args.workstations:
+                continue  # a room too small for the workstations asked for: drawn again
+            n = len(cells)
         name = room["name"]
         scene_file = os.path.join(args.out, name + ".json")
         layout_file = os.path.join(args.out, name + ".planted.json")
@@ -137,7 +155,17 @@ def cmd_generate(args):
                 json.dump(content, f, indent=1)
         lux = [s["value"] for s in measure(args.luxplan, scene_file, layout_file, 64, 4040, args.threads)["samplers"]
                if s["name"].endswith("task")]
-        darker = sorted(range(len(cells)), key=lambda i: lux[i])[:max(n, int(0.6 * len(cells) + 0.5))]
+        if args.designer:
+            # A designer's targets: the planted desks among the cells the survey puts
+            # well inside the band (a tenth of it each side).
+            lo, hi = DESIGNER_DESK
+            darker = [i for i in range(len(cells)) if lo * 1.1 <= lux[i] <= hi * 0.9]
+            if len(darker) < n:
+                print(f"{name}: {len(darker)} of {len(cells)} places in the desks' band, {n} needed; drawn again",
+                      file=sys.stderr)
+                continue
+        else:
+            darker = sorted(range(len(cells)), key=lambda i: lux[i])[:max(n, int(0.6 * len(cells) + 0.5))]
         scene = furnish(room, [cells[i] for i in sorted(rng.sample(darker, n))], region)
         with open(scene_file, "w") as f:
             json.dump(scene, f, indent=1)
@@ -163,11 +191,19 @@ def cmd_generate(args):
             continue
         desks = [s["value"] for s in m["samplers"] if s["name"].endswith("task")]
         screens = [s["value"] for s in m["samplers"] if s["name"].endswith("glare")]
-        lo, hi = 0.8 * min(desks), 1.25 * max(desks)
-        if hi - lo < 150:
-            mid = (lo + hi) / 2
-            lo, hi = mid - 75, mid + 75
-        glare = max(50.0, 1.3 * max(screens))
+        if args.designer:
+            (lo, hi), glare = DESIGNER_DESK, DESIGNER_SCREEN
+            if not (min(desks) >= lo * 1.1 and max(desks) <= hi * 0.9 and max(screens) <= glare * 0.9):
+                print(f"{name}: the planted layout is not inside the designer's targets with margin (desks "
+                      f"{min(desks):.0f}-{max(desks):.0f} lx, screens up to {max(screens):.0f} cd/m2); drawn again",
+                      file=sys.stderr)
+                continue
+        else:
+            lo, hi = 0.8 * min(desks), 1.25 * max(desks)
+            if hi - lo < 150:
+                mid = (lo + hi) / 2
+                lo, hi = mid - 75, mid + 75
+            glare = max(50.0, 1.3 * max(screens))
         for e in scene["entities"]:
             for c in e["children"]:
                 for s in c.get("samplers", []):
@@ -233,6 +269,12 @@ def main():
     gen.add_argument("--count", type=int, default=6)
     gen.add_argument("--seed", type=int, default=1)
     gen.add_argument("--threads", type=int, default=2)
+    gen.add_argument("--kind", choices=["office", "lab", "hall"], help="every scene of this kind (default: in turn)")
+    gen.add_argument("--workstations", type=int, help="every scene with this many workstations (default: by kind)")
+    gen.add_argument("--daylit", action="store_true", help="morning and afternoon only, no night scenes")
+    gen.add_argument("--designer", action="store_true",
+                     help="a designer's targets (desks 300-750 lx, screens up to 150 cd/m2), the planted layout "
+                          "inside them by a tenth; scenes that cannot hold one are drawn again")
     gen.add_argument("--luxplan", default="build/luxplan")
     run = sub.add_parser("run")
     run.add_argument("out")
