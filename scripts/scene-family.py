@@ -129,6 +129,13 @@ def goals_met(m):
     return met, len(m["samplers"]), m["G"]
 
 
+def discard(*files):
+    """A draw that is drawn again leaves no file behind (run would take it for a scene)."""
+    for f in files:
+        if os.path.exists(f):
+            os.remove(f)
+
+
 def cmd_generate(args):
     os.makedirs(args.out, exist_ok=True)
     rng = random.Random(args.seed)
@@ -163,6 +170,7 @@ def cmd_generate(args):
             if len(darker) < n:
                 print(f"{name}: {len(darker)} of {len(cells)} places in the desks' band, {n} needed; drawn again",
                       file=sys.stderr)
+                discard(scene_file, layout_file)
                 continue
         else:
             darker = sorted(range(len(cells)), key=lambda i: lux[i])[:max(n, int(0.6 * len(cells) + 0.5))]
@@ -188,6 +196,7 @@ def cmd_generate(args):
         m = measure(args.luxplan, scene_file, layout_file, PLANT_PATHS, 4242, args.threads)
         if m["G"] != 0 or not m["geometric_rules_pass"]:
             print(f"{name}: the planted layout breaks a rule (G {m['G']}); drawn again", file=sys.stderr)
+            discard(scene_file, layout_file)
             continue
         desks = [s["value"] for s in m["samplers"] if s["name"].endswith("task")]
         screens = [s["value"] for s in m["samplers"] if s["name"].endswith("glare")]
@@ -197,6 +206,7 @@ def cmd_generate(args):
                 print(f"{name}: the planted layout is not inside the designer's targets with margin (desks "
                       f"{min(desks):.0f}-{max(desks):.0f} lx, screens up to {max(screens):.0f} cd/m2); drawn again",
                       file=sys.stderr)
+                discard(scene_file, layout_file)
                 continue
         else:
             lo, hi = 0.8 * min(desks), 1.25 * max(desks)
