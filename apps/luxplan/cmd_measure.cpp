@@ -121,7 +121,8 @@ void runDaylightFactor(const MeasureArgs& args, const Scene& scene, const Layout
     MeasureOptions options;
     options.pathsPerPoint = args.paths > 0 ? args.paths : scene.optimizer.reportPathsPerPoint;
     // Of the samplers it measures (no directional one).
-    if (options.pathsPerPoint < 2) warnFewPaths(daylightFactorScene(scene).scene, options.pathsPerPoint, args.paths > 0);
+    if (options.pathsPerPoint < 2)
+        warnFewPaths(daylightFactorScene(scene).scene, options.pathsPerPoint, args.paths > 0, "report_paths_per_point");
     options.seed = args.seed.value_or(scene.optimizer.seed);
     options.lowDiscrepancy = scene.optimizer.lowDiscrepancy;
     const DaylightFactorResult df = measureDaylightFactors(scene, layout, options, measureTracing(scene.optimizer));
@@ -282,8 +283,8 @@ void printMeasureTable(const api::MeasureOutcome& m) {
 
 }  // namespace
 
-void warnFewPaths(const Scene& scene, int paths, bool fromOption) {
-    if (const std::string w = api::fewPathsWarning(scene, paths, fromOption); !w.empty()) std::cerr << w << "\n";
+void warnFewPaths(const Scene& scene, int paths, bool fromOption, const std::string& key) {
+    if (const std::string w = api::fewPathsWarning(scene, paths, fromOption, key); !w.empty()) std::cerr << w << "\n";
 }
 
 void warnLargeMeasurement(const Scene& scene, int pathsPerPoint, const std::string& what) {

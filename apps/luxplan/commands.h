@@ -26,10 +26,10 @@ void namingScene(const std::string& scene, Fn&& fn) {
 // Valid, but maybe not what was meant (checks/scene_warnings.h): each on stderr as
 // FILE: /json/path: warning: ..., never failing. validate, measure and optimize say them.
 void printSceneWarnings(const Scene& scene);
-// A warning on stderr where `paths` per point (from --paths, or else the scene's
-// /optimizer/paths_per_point) leave the samplers without a standard error and a
+// A warning on stderr where `paths` per point (from --paths, or else setting `key`,
+// api::fewPathsWarning) leave the samplers without a standard error and a
 // directional sampler without its cross-fitted choice: fewer than 2.
-void warnFewPaths(const Scene& scene, int paths, bool fromOption);
+void warnFewPaths(const Scene& scene, int paths, bool fromOption, const std::string& key);
 // A warning on stderr before a large measurement (optimizer/progress_line.h:
 // points x paths per point above kLargeMeasurementPaths): "FILE: warning: <what> N
 // points (S samplers) x P paths per point = X paths, ...".

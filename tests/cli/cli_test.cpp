@@ -190,6 +190,19 @@ TEST(Cli, OnePathPerPointWarnsThatItHasNoErrorAndNoCrossFittedMax) {
     r = run("optimize " + both.string() + " -o " + (dir.path() / "out").string() + " --paths 1 --iterations 2 -q --no-pictures");
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_NE(r.output.find("warning: --paths 1: one path per point"), std::string::npos) << r.output;
+    // The setting that gave the count, as it was given: --set, or its path in the file
+    // (optimize's search reads paths_per_point, measure report_paths_per_point).
+    r = run("measure " + planar.string() + " --set report_paths_per_point=1 --threads 1");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("warning: --set report_paths_per_point=1: one path per point"), std::string::npos) << r.output;
+    r = run("optimize " + fromFile.string() + " -o " + (dir.path() / "out2").string() + " --iterations 2 -q --no-pictures");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find(fromFile.string() + ": /optimizer/paths_per_point: 1: one path per point"), std::string::npos)
+        << r.output;
+    r = run("optimize " + planar.string() + " -o " + (dir.path() / "out3").string() +
+            " --set paths_per_point=1 --iterations 2 -q --no-pictures");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("warning: --set paths_per_point=1: one path per point"), std::string::npos) << r.output;
 
     // From 2 paths on: errors, and no warning.
     r = run("measure " + both.string() + " --paths 2 --threads 1");

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <luxplan/api/measure.h>
 
 #include <cmath>
@@ -87,10 +88,13 @@ DaylightParams daylightAt(const Scene& scene, const std::string& at) {
     return d;
 }
 
-std::string fewPathsWarning(const Scene& scene, int paths, bool fromOption) {
+std::string fewPathsWarning(const Scene& scene, int paths, bool fromOption, const std::string& key) {
     if (paths >= 2 || scene.samplers.empty()) return "";
-    const std::string source = fromOption ? "--paths " + std::to_string(paths)
-                                          : scene.file.string() + ": /optimizer/report_paths_per_point: " + std::to_string(paths);
+    const bool fromSet = std::find(scene.settingsSet.begin(), scene.settingsSet.end(), key) != scene.settingsSet.end();
+    const std::string n = std::to_string(paths);
+    const std::string source = fromOption ? "--paths " + n
+                               : fromSet  ? "--set " + key + "=" + n
+                                          : scene.file.string() + ": /optimizer/" + key + ": " + n;
     std::string message = "warning: " + source + ": one path per point gives no standard error (reported as 0, "
                           "n/a in measure's table)";
     for (const LightSamplerSpec& s : scene.samplers)
@@ -149,7 +153,7 @@ MeasureOutcome measure(Scene scene, const MeasureRequest& request, const Measure
     PathTracer tracer(rt, daylight ? &*daylight : nullptr, measureTracing(settings));
     MeasureOptions& options = out.options;
     options.pathsPerPoint = pathsPerPoint;
-    say(fewPathsWarning(scene, options.pathsPerPoint, request.paths > 0));
+    say(fewPathsWarning(scene, options.pathsPerPoint, request.paths > 0, "report_paths_per_point"));
     options.seed = request.seed.value_or(scene.optimizer.seed);
     options.adaptive = settings.adaptive;
     out.lightRoulette = settings.lightRoulette.value_or(0);

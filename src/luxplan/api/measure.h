@@ -72,9 +72,11 @@ nlohmann::json measureJson(const MeasureOutcome& outcome);
 DaylightParams daylightAt(const Scene& scene, const std::string& at);
 
 // The warnings `measure` and `optimize` say before they trace (a line each; empty: none).
-// Fewer than 2 paths per point (from --paths if `fromOption`, else the scene's
-// /optimizer/report_paths_per_point) leave the samplers without a standard error.
-std::string fewPathsWarning(const Scene& scene, int paths, bool fromOption);
+// Fewer than 2 paths per point (from --paths if `fromOption`, else setting `key`:
+// report_paths_per_point for measure, paths_per_point for optimize's search, named as
+// --set gave it or at its JSON path in the scene file) leave the samplers without a
+// standard error.
+std::string fewPathsWarning(const Scene& scene, int paths, bool fromOption, const std::string& key);
 // A large measurement (optimizer/progress_line.h's largeMeasurementWarning), naming the scene file.
 std::string largeMeasurementNote(const Scene& scene, int pathsPerPoint, const std::string& what);
 // The points of the scene's samplers, all of them (a covered point counts too).

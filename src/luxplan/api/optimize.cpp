@@ -113,7 +113,7 @@ std::unique_ptr<OptimizeRun> optimize(Scene original, const OptimizeRequest& req
 
     MeasureOptions measure;
     measure.pathsPerPoint = settings.searchPathsPerPoint;
-    say(hooks.warning, fewPathsWarning(scene0, measure.pathsPerPoint, request.paths > 0));
+    say(hooks.warning, fewPathsWarning(scene0, measure.pathsPerPoint, request.paths > 0, "paths_per_point"));
     measure.seed = options.seed;
     measure.adaptive = !tracingSettings.fixedPaths;
     measure.lowDiscrepancy = tracingSettings.lowDiscrepancy;

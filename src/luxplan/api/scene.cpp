@@ -27,7 +27,9 @@ Scene loadScene(const std::string& path, const std::vector<std::string>& setting
     // Each was checked alone when parsed; here the keys that exclude each other.
     const std::vector<std::string> problems = io::settingProblems(options.settings);
     if (!problems.empty()) throw UsageError("--set", withoutPrefix(problems.front()));
-    return io::loadScene(path, options);
+    Scene scene = io::loadScene(path, options);
+    for (const io::SettingOverride& s : options.settings) scene.settingsSet.push_back(s.key);
+    return scene;
 }
 
 std::vector<std::string> sceneWarnings(const Scene& scene) {

@@ -209,6 +209,7 @@ struct Scene {
     OverlapRule overlap;
     Objective objective;
     OptimizerSettings optimizer;
+    std::vector<std::string> settingsSet;  // the "optimizer" keys --set gave, over the file's (messages name them)
 
     // Entity index for a dotted path, or -1.
     int findEntity(const std::string& path) const;
