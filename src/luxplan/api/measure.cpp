@@ -1,6 +1,6 @@
-#include <algorithm>
 #include <luxplan/api/measure.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
