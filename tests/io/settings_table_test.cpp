@@ -35,6 +35,7 @@ json everyKey() {
                 {"polish_share", 0.3},
                 {"restart_share", 0.4},
                 {"guided", false},
+                {"plan_iterations", 321},
                 {"suggestions", 3},
                 {"margin", 1.5},
                 {"adaptive_share", false},
@@ -68,6 +69,7 @@ void expectEveryKeySet(const OptimizerSettings& s) {
     EXPECT_EQ(s.polishShare, 0.3);
     EXPECT_EQ(s.restartShare, 0.4);
     EXPECT_FALSE(s.guided);
+    EXPECT_EQ(s.planIterations, 321);
     EXPECT_EQ(s.suggestions, 3);
     EXPECT_EQ(s.margin, 1.5);
     EXPECT_FALSE(s.adaptiveShare);

@@ -171,6 +171,10 @@ const std::vector<SettingKey>& settingKeys() {
          numberKey("restart_share", &S::restartShare, Range::closed(0, 0.5))},
         {"guided", "true or false", "", "true", "optimize",
          "the guided move: placements drawn from a map of where each entity's targets held", boolKey("guided", &S::guided)},
+        {"plan_iterations", "whole number", rangeText(Range::closed(0, 1000000)), "20000", "optimize",
+         "the planned start: proposals of a chain on the desks' illuminance in the room without its furniture and the "
+         "exact rules, no light traced, whose best is where the search starts (from uniform draws only); 0: the drawn start",
+         intKey("plan_iterations", &S::planIterations, Range::closed(0, 1000000))},
         {"suggestions", "whole number", rangeText(Range::closed(0, 50)), "0", "optimize",
          "distinct layouts written beside the result (optimize --suggestions)",
          intKey("suggestions", &S::suggestions, Range::closed(0, 50))},

@@ -71,6 +71,14 @@ public:
     // marginPenalty); measureIndependently() never does. An evaluator without errors
     // ignores it.
     virtual void setSearchMargin(double z) { (void)z; }
+    // Horizontal illuminance (lx, facing up) at `points` in the room without its movable
+    // furniture (and the luminaires it carries), `paths` paths each from `seed`: the light
+    // surrogate's fields (light_surrogate.h). Commits nothing. Empty: this evaluator
+    // cannot tell, and the chain starts where it was drawn.
+    virtual std::vector<double> emptyRoomIlluminance(const std::vector<Vec3>& points, int paths, uint64_t seed) {
+        (void)points, (void)paths, (void)seed;
+        return {};
+    }
     // The chain accepted (commit) or refused (revert) the layout last evaluated: an
     // evaluator that keeps work between layouts (the path cache) keeps it for the
     // accepted layout only. Evaluations measure against the last committed layout.

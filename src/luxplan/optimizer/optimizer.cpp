@@ -24,7 +24,9 @@ constexpr uint64_t kIndependentTag = 0x696e646570ULL;  // "indep"
 constexpr uint64_t kSelectionStream = 1, kReportStream = 2;
 // The noise floor follows the last ~64 lighting evaluations.
 constexpr double kNoiseMemory = 1.0 / 64;
-constexpr uint64_t kPolishStream = 4;
+constexpr uint64_t kPolishStream = 4, kPlanStream = 5;
+// The light surrogate's cells (m): a desk's task grid spans several.
+constexpr double kSurrogateCell = 0.25;
 // The polish's step scales, times MoveOptions::sigmaFraction: 5%, 1% and 0.25% of a
 // region's extent (7 m: 35 cm, 7 cm, 2 cm).
 constexpr double kPolishScales[] = {0.2, 0.04, 0.01};
@@ -62,6 +64,7 @@ OptimizerOptions optimizerOptions(const OptimizerSettings& s) {
     o.restartShare = s.restartShare;
     o.restartTemperature = s.temperatureStart / 5;
     o.guidedMoves = s.guided;
+    o.planIterations = s.planIterations;
     o.suggestions = s.suggestions;
     o.marginZ = s.margin;
     o.adaptiveShare = s.adaptiveShare;
@@ -93,6 +96,7 @@ Optimizer::Optimizer(const Scene& scene, OptimizerOptions options, LightingEvalu
     check(options_.restartShare >= 0 && options_.restartShare < 1, "restart share must be in [0, 1)");
     check(options_.restartTemperature > 0, "restart temperature must be > 0");
     check(options_.suggestions >= 0, "suggestions must be >= 0");
+    check(options_.planIterations >= 0 && options_.planPaths >= 1, "plan iterations must be >= 0 and plan paths >= 1");
     check(options_.start != StartFrom::Given ||
               (options_.startLayout && options_.startLayout->placements.size() == scene.entities.size()),
           "a given start needs a layout of every entity");
@@ -108,6 +112,11 @@ Optimizer::Optimizer(const Scene& scene, OptimizerOptions options, LightingEvalu
     if (options_.guidedMoves && lighting_ && !scene.samplers.empty() && scene.objective.lightingWeight > 0) {
         lightMap_ = std::make_unique<LightMap>(scene, all, options_.lightMap);
         if (lightMap_->empty()) lightMap_.reset();
+    }
+    if (options_.planIterations > 0 && options_.start == StartFrom::Uniform && lighting_ && !scene.samplers.empty() &&
+        scene.objective.lightingWeight > 0 && options_.schedule.kind == Schedule::Kind::Geometric) {
+        surrogate_ = std::make_unique<LightSurrogate>(scene, kSurrogateCell);
+        if (surrogate_->empty()) surrogate_.reset();
     }
     auto addLevel = [&](const char* name, const std::vector<int>& entities, uint64_t stream) {
         MoveSet moves(scene, entities, options_.moves, lightMap_.get());
@@ -348,6 +357,9 @@ void Optimizer::initialize(const std::function<void(int drawn, int most)>& drawi
             }
         }
     }
+    planned_ = false;
+    if (options_.start == StartFrom::Uniform && surrogate_ && !levels_.empty()) start = plannedStart(std::move(start));
+    if (planned_) cycleStartT_ = std::min(options_.schedule.start, options_.restartTemperature);
     current_ = start;
     if (lighting_) lighting_->revert();
     currentEval_ = evaluate(current_, worldTransforms(*scene_, current_));
@@ -370,6 +382,65 @@ void Optimizer::initialize(const std::function<void(int drawn, int most)>& drawi
     record();
     initialized_ = true;
     startSeconds_ = std::chrono::duration<double>(Clock::now() - started).count();
+}
+
+Layout Optimizer::plannedStart(Layout start) {
+    if (!surrogate_->ready()) {
+        // The room without its furniture, traced once for every run of this optimizer.
+        std::vector<double> lux = lighting_->emptyRoomIlluminance(surrogate_->points(), options_.planPaths,
+                                                                  hashValues({options_.seed, kStreamTag, kPlanStream}));
+        if (lux.empty()) {
+            surrogate_.reset();
+            return start;
+        }
+        surrogate_->setIlluminance(lux);
+    }
+    // Metropolis on C's stand-in, w L_surrogate + (1 - w) G, the rules exact: a rejected
+    // start is repaired first, as the chain's is (step()).
+    const double w = scene_->objective.lightingWeight;
+    Rng rng(hashValues({options_.seed, kStreamTag, kPlanStream}));
+    auto costOf = [&](const std::vector<Transform>& world, double g) { return w * surrogate_->lighting(world) + (1 - w) * g; };
+    std::vector<Transform> world = worldTransforms(*scene_, start);
+    GeometryResult g = geometry_.evaluate(world);
+    geometry_.commit();
+    bool feasible = !g.rejected;
+    double violation = g.violation, cost = feasible ? costOf(world, g.cost) : kInf;
+    Layout best = start;
+    double bestCost = cost;
+    const int n = options_.planIterations;
+    const Schedule& schedule = options_.schedule;
+    for (int i = 0; i < n; ++i) {
+        const double t = schedule.temperature(i, n);
+        const MoveSet& moves = levels_[levels_.size() == 1 ? 0 : rng.uniformInt(uint32_t(levels_.size()))];
+        Layout proposed = start;
+        const Proposal p = moves.propose(proposed, rng);
+        if (!p.valid) continue;
+        world = worldTransforms(*scene_, proposed);
+        const GeometryResult pg = geometry_.evaluate(world);
+        double proposedCost = kInf;
+        bool accept = false;
+        if (!feasible) {
+            accept = !pg.rejected || pg.violation <= violation;
+            if (!pg.rejected) proposedCost = costOf(world, pg.cost);
+        } else if (!pg.rejected) {
+            proposedCost = costOf(world, pg.cost);
+            const double logA = -(proposedCost - cost) / t + p.logHastings;
+            accept = logA >= 0 || rng.uniform() < std::exp(logA);
+        }
+        if (!accept) {
+            geometry_.revert();
+            continue;
+        }
+        geometry_.commit();
+        start = std::move(proposed);
+        feasible = feasible || !pg.rejected;
+        violation = pg.violation, cost = proposedCost;
+        if (feasible && cost < bestCost) best = start, bestCost = cost;
+    }
+    if (!std::isfinite(bestCost)) return start;  // never feasible: the chain repairs it
+    planned_ = true;
+    // The rules' cache stands at the chain's last layout: the caller evaluates `best` from there.
+    return best;
 }
 
 namespace {
@@ -786,6 +857,7 @@ OptimizerResult Optimizer::resultOf(StopReason stop, std::vector<Snapshot> snaps
     r.stop = stop;
     r.feasible = feasible_;
     r.startFeasible = !startEval_.rejected;
+    r.planned = planned_;
     r.levels = stats_;
     r.trace = trace_;
     r.snapshots = std::move(snapshots);

@@ -18,6 +18,7 @@
 #include <luxplan/optimizer/candidates.h>
 #include <luxplan/optimizer/evaluation.h>
 #include <luxplan/optimizer/light_map.h>
+#include <luxplan/optimizer/light_surrogate.h>
 #include <luxplan/optimizer/lighting.h>
 #include <luxplan/optimizer/moves.h>
 #include <luxplan/optimizer/reach.h>
@@ -128,6 +129,14 @@ struct OptimizerOptions {
     // so far (optimizer/light_map.h). Off: the paper's blind moves only.
     bool guidedMoves = true;
     LightMapOptions lightMap;
+    // The planned start (StartFrom::Uniform, a geometric schedule, a lighting hook that
+    // can trace the empty room): from the drawn start, a chain of planIterations proposals
+    // on the light surrogate (optimizer/light_surrogate.h: the desks' illuminance read
+    // from the room without its furniture) and the exact rules, cooling on the schedule,
+    // no light traced; its best is where the traced chain starts, at restartTemperature
+    // as a later cycle does. 0: off (the paper's start).
+    int planIterations = 20000;
+    int planPaths = 64;  // per cell of the surrogate's fields
     // StartFrom::Given's layout (optimize --start): every movable entity placed.
     std::optional<Layout> startLayout;
     // Best-so-far snapshots (OptimizerResult::snapshots) at this many checkpoints,
@@ -228,6 +237,7 @@ struct OptimizerResult {
     StopReason stop = StopReason::Iterations;
     bool feasible = false;       // some layout passed the geometric test
     bool startFeasible = false;  // the start did
+    bool planned = false;        // the start was planned on the light surrogate (OptimizerOptions::planIterations)
     std::vector<LevelStats> levels;
     std::vector<TracePoint> trace;
     std::vector<Snapshot> snapshots;  // OptimizerOptions::snapshots
@@ -291,6 +301,7 @@ private:
     double differenceVariance(const Evaluation& a, const Evaluation& b) const;
     void noteNoise(const Evaluation& proposed);
     // The polish: from the best layout, zero temperature, fine steps (OptimizerOptions::polishShare).
+    Layout plannedStart(Layout start);
     void startPolish();
     // The polish's level of statistics (added on first use).
     LevelStats& polishLevel();
@@ -341,6 +352,8 @@ private:
     OptimizerOptions options_;
     LightingEvaluator* lighting_;
     GeometryEvaluator geometry_;
+    std::unique_ptr<LightSurrogate> surrogate_;  // the planned start's (null: none)
+    bool planned_ = false;                        // this run's chain started from a plan
     std::unique_ptr<LightMap> lightMap_;  // OptimizerOptions::guidedMoves (null: off or nothing to map)
     std::vector<MoveSet> levels_;
     // Nesting: per top-level entity, the index of its members' move set in focusSets_

@@ -4,6 +4,8 @@
 
 #include <luxplan/annual/scene_year.h>
 #include <luxplan/constraints/penalty.h>
+#include <luxplan/core/estimator.h>
+#include <luxplan/core/parallel.h>
 #include <luxplan/core/rng.h>
 #include <luxplan/json/fields.h>
 
@@ -11,13 +13,17 @@ namespace luxplan {
 namespace {
 
 constexpr uint64_t kFreshTag = 0x6672657368ULL;  // "fresh"
+constexpr uint64_t kEmptyRoomTag = 0x656d707479ULL;  // "empty"
+// How far below the floor the movable furniture goes while the empty room is traced:
+// under the room's own floor, no path from inside reaches it.
+constexpr double kOutOfTheWay = 1000;
 
 }  // namespace
 
 PathTracedLighting::PathTracedLighting(const Scene& scene, const DaylightEnvironment* daylight, const MeasureOptions& options,
                                        const PathTracerOptions& searchTracing, const PathTracerOptions& reportTracing)
     : scene_(scene), rt_(scene, initialLayout(scene)), tracer_(rt_, daylight, searchTracing),
-      reportTracer_(rt_, daylight, reportTracing), options_(options), cache_(scene) {
+      reportTracer_(rt_, daylight, reportTracing), searchTracing_(searchTracing), options_(options), cache_(scene) {
     for (const LightSamplerSpec& s : scene.samplers) hasGlareSurveys_ = hasGlareSurveys_ || s.type->surveysSources();
     if (const std::vector<size_t> annual = annualGoalSamplers(scene); !annual.empty()) {
         year_ = std::make_unique<const DaylightCoefficients>(sceneYear(scene));
@@ -76,6 +82,26 @@ double PathTracedLighting::measureIndependently(const Layout& /*layout*/, const 
     independent.lightFloors.clear();  // as `measure` traces
     // Not through the cache: its committed paths are the search's, and stay so.
     return measure(reportTracer_, world, independent, nullptr, out);
+}
+
+std::vector<double> PathTracedLighting::emptyRoomIlluminance(const std::vector<Vec3>& points, int paths, uint64_t seed) {
+    Layout away = initialLayout(scene_);
+    for (size_t e = 0; e < scene_.entities.size(); ++e)
+        if (scene_.entities[e].parent < 0 && scene_.entities[e].movable()) away.placements[e].position.z -= kOutOfTheWay;
+    const EmbreeScene rt(scene_, away);
+    const PathTracer tracer(rt, tracer_.daylight(), searchTracing_);
+    std::vector<double> lux(points.size(), 0.0);
+    paths = std::max(1, paths);
+    parallelFor(points.size(), [&](size_t i) {
+        RayStats stats;
+        MeanEstimator estimate;
+        for (int path = 0; path < paths; ++path) {
+            Rng rng(hashValues({seed, kEmptyRoomTag, uint64_t(i), uint64_t(path)}));
+            estimate.add(tracer.illuminanceSample(points[i], Vec3(0, 0, 1), rng, stats));
+        }
+        lux[i] = estimate.mean();
+    });
+    return lux;
 }
 
 void PathTracedLighting::setLightRoulette(double share) {

@@ -48,6 +48,8 @@ public:
     // numbers are the same either way, incremental/path_cache.h).
     void setIncremental(bool on) { incremental_ = on; }
     void setSearchMargin(double z) override { margin_ = z; }
+    // Traced in a ray tracer of its own, the movable furniture far below the floor.
+    std::vector<double> emptyRoomIlluminance(const std::vector<Vec3>& points, int paths, uint64_t seed) override;
     // Every path the cache reads back is traced again and compared (CheckedPaths): a
     // diagnostic, at the cost of a full evaluation and more.
     void setCheckCache(bool on) { checkCache_ = on; }
@@ -90,6 +92,7 @@ private:
     const Scene& scene_;
     EmbreeScene rt_;
     PathTracer tracer_, reportTracer_;
+    PathTracerOptions searchTracing_;
     bool hasGlareSurveys_ = false;  // a ugr or dgp sampler: the search traces it with reportTracer_
     MeasureOptions options_;
     int reportPaths_ = 0, selectionPaths_ = 0;  // 0: options_.pathsPerPoint

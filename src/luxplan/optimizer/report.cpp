@@ -151,7 +151,8 @@ std::string reportJson(const Scene& scene, const OptimizerResult& r, const RunSe
     const bool startUnlit = !start.lightingEvaluated && !scene.samplers.empty() && scene.objective.lightingWeight > 0;
     j["start"] = {{"C", start.rejected || startUnlit ? Json(nullptr) : json::numberOrNull(start.cost)},
                   {"L", start.lightingEvaluated || scene.samplers.empty() ? json::numberOrNull(start.lighting) : Json(nullptr)},
-                  {"G", start.rejected ? Json(nullptr) : json::numberOrNull(start.geometry)}, {"feasible", r.startFeasible}};
+                  {"G", start.rejected ? Json(nullptr) : json::numberOrNull(start.geometry)}, {"feasible", r.startFeasible},
+                  {"planned", r.planned}};
 
     Json constraints = Json::array();
     Json pairs = Json::array();

@@ -70,6 +70,7 @@ struct SearchSettings {
     double polishShare = 0.2;        // the run's last share: a zero-temperature polish of the best
     double restartShare = 0.3;       // the schedule's cycles, each later one from the polished best
     bool guided = true;              // the guided move from the light map (optimizer/light_map.h)
+    int planIterations = 20000;      // the planned start's proposals on the light surrogate; 0: none
     int suggestions = 0;             // distinct layouts written beside the result (optimize --suggestions)
     double margin = 2;               // the search's margin inside every lighting band, in standard errors
     bool adaptiveShare = true;       // the object level's share by what the levels' proposals yield
