@@ -19,6 +19,19 @@ bool movesWithFurniture(const Scene& scene, int entity) {
 
 // Fields closer than this in height are one field.
 constexpr double kSameHeight = 0.01;
+// A plan aims this share of its band's width inside each finite end (of the bound
+// itself where the band is open): what the surrogate cannot see (the furniture's own
+// shadows and reflections, the cells' interpolation and noise) moves the traced light a
+// few percent, and a plan on the band's edge is outside as often as in.
+constexpr double kPlanMargin = 0.1;
+
+// A term's penalty against its band narrowed by kPlanMargin (Eq. 3 with the term's tolerance).
+double plannedPenalty(const LightingTerm& t) {
+    const bool lo = std::isfinite(t.targetMin), hi = std::isfinite(t.targetMax);
+    const double width = lo && hi ? t.targetMax - t.targetMin : lo ? std::abs(t.targetMin) : hi ? std::abs(t.targetMax) : 0;
+    const double m = kPlanMargin * width;
+    return penalty(t.value, lo ? t.targetMin + m : t.targetMin, hi ? t.targetMax - m : t.targetMax, t.tolerance, kLightingStiffness);
+}
 
 }  // namespace
 
@@ -113,7 +126,7 @@ double LightSurrogate::lighting(const std::vector<Transform>& world) const {
         r.pointErrors.assign(r.points.size(), 0.0);
         for (double x : r.points) r.value += x;
         r.value /= double(std::max<size_t>(1, r.points.size()));
-        for (const LightingTerm& t : lightingTerms(scene_->samplers[size_t(k)], r)) sum += t.weight * t.penalty;
+        for (const LightingTerm& t : lightingTerms(scene_->samplers[size_t(k)], r)) sum += t.weight * plannedPenalty(t);
     }
     return sum / termWeights_;
 }

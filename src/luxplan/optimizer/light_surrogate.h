@@ -32,7 +32,8 @@ public:
     const std::vector<int>& samplers() const { return standIns_; }
 
     // Eq. 3's L for the layout whose world transforms are `world`, the stood-in
-    // samplers read from the fields, every other term at penalty 0.
+    // samplers read from the fields, their bands narrowed by a tenth of their width at
+    // each finite end (what the surrogate cannot see), every other term at penalty 0.
     double lighting(const std::vector<Transform>& world) const;
     // A stood-in sampler's value (its points' mean) there.
     double value(int sampler, const std::vector<Transform>& world) const;
