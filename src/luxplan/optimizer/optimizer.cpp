@@ -359,7 +359,9 @@ void Optimizer::initialize(const std::function<void(int drawn, int most)>& drawi
     }
     planned_ = false;
     if (options_.start == StartFrom::Uniform && surrogate_ && !levels_.empty()) start = plannedStart(std::move(start));
-    if (planned_) cycleStartT_ = std::min(options_.schedule.start, options_.restartTemperature);
+    // A plan is refined, not left: its first cycle starts cold, at the schedule's end
+    // (the noise floor then sets the temperature); the later cycles warm again as ever.
+    if (planned_) cycleStartT_ = options_.schedule.end;
     current_ = start;
     if (lighting_) lighting_->revert();
     currentEval_ = evaluate(current_, worldTransforms(*scene_, current_));

@@ -133,8 +133,8 @@ struct OptimizerOptions {
     // can trace the empty room): from the drawn start, a chain of planIterations proposals
     // on the light surrogate (optimizer/light_surrogate.h: the desks' illuminance read
     // from the room without its furniture) and the exact rules, cooling on the schedule,
-    // no light traced; its best is where the traced chain starts, at restartTemperature
-    // as a later cycle does. 0: off (the paper's start).
+    // no light traced; its best is where the traced chain starts, its first cycle cold
+    // (at the schedule's end: the noise floor sets the temperature). 0: off (the paper's start).
     int planIterations = 20000;
     int planPaths = 64;  // per cell of the surrogate's fields
     // StartFrom::Given's layout (optimize --start): every movable entity placed.
