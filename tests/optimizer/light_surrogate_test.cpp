@@ -139,6 +139,10 @@ TEST(PlannedStart, StartsTheSearchWhereTheDesksTargetHolds) {
         const OptimizerResult drawn = startOf(deskScene(0, seed));
         EXPECT_TRUE(planned.planned);
         EXPECT_FALSE(drawn.planned);
+        // A plan is refined, not left: its chain starts cold, at the schedule's end; a drawn one hot.
+        ASSERT_FALSE(planned.trace.empty());
+        EXPECT_EQ(planned.trace.front().temperature, 0.001);
+        EXPECT_EQ(drawn.trace.front().temperature, 0.1);
         ASSERT_TRUE(planned.startEvaluation.lightingEvaluated);
         const double e = planned.startEvaluation.samplers.samplers[0].value;
         EXPECT_GT(e, 300) << "seed " << seed;
