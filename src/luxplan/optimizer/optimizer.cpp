@@ -860,6 +860,7 @@ OptimizerResult Optimizer::resultOf(StopReason stop, std::vector<Snapshot> snaps
     r.feasible = feasible_;
     r.startFeasible = !startEval_.rejected;
     r.planned = planned_;
+    r.startSeconds = startSeconds_;
     r.levels = stats_;
     r.trace = trace_;
     r.snapshots = std::move(snapshots);

@@ -234,6 +234,7 @@ struct OptimizerResult {
     int confirmations = 0;  // zero-cost estimates measured again before stopping
     int independentMeasurements = 0;  // confirmations, candidate selection and report together
     double seconds = 0;
+    double startSeconds = 0;  // of `seconds`, the start's: its draws, the plan and its measurement
     StopReason stop = StopReason::Iterations;
     bool feasible = false;       // some layout passed the geometric test
     bool startFeasible = false;  // the start did

@@ -146,6 +146,7 @@ std::string reportJson(const Scene& scene, const OptimizerResult& r, const RunSe
         j["report_measurement"] = {{"seed", r.reportSeed}, {"paths_per_point", paths}};
     }
     j["seconds"] = r.seconds;
+    j["start_seconds"] = r.startSeconds;
     j["stop_reason"] = stopReasonName(r.stop);
     const Evaluation& start = r.startEvaluation;
     const bool startUnlit = !start.lightingEvaluated && !scene.samplers.empty() && scene.objective.lightingWeight > 0;
