@@ -7,7 +7,7 @@ import subprocess
 import pytest
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-TIMES = {"seconds", "annual_seconds", "samplers_seconds"}
+TIMES = {"seconds", "start_seconds", "annual_seconds", "samplers_seconds"}
 
 
 def cli(*args, check=True):
