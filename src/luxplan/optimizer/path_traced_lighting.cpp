@@ -4,10 +4,9 @@
 
 #include <luxplan/annual/scene_year.h>
 #include <luxplan/constraints/penalty.h>
-#include <luxplan/core/estimator.h>
-#include <luxplan/core/parallel.h>
 #include <luxplan/core/rng.h>
 #include <luxplan/json/fields.h>
+#include <luxplan/pathtracer/illuminance_at.h>
 
 namespace luxplan {
 namespace {
@@ -90,18 +89,7 @@ std::vector<double> PathTracedLighting::emptyRoomIlluminance(const std::vector<V
         if (scene_.entities[e].parent < 0 && scene_.entities[e].movable()) away.placements[e].position.z -= kOutOfTheWay;
     const EmbreeScene rt(scene_, away);
     const PathTracer tracer(rt, tracer_.daylight(), searchTracing_);
-    std::vector<double> lux(points.size(), 0.0);
-    paths = std::max(1, paths);
-    parallelFor(points.size(), [&](size_t i) {
-        RayStats stats;
-        MeanEstimator estimate;
-        for (int path = 0; path < paths; ++path) {
-            Rng rng(hashValues({seed, kEmptyRoomTag, uint64_t(i), uint64_t(path)}));
-            estimate.add(tracer.illuminanceSample(points[i], Vec3(0, 0, 1), rng, stats));
-        }
-        lux[i] = estimate.mean();
-    });
-    return lux;
+    return illuminanceAt(tracer, points, Vec3(0, 0, 1), paths, seed, kEmptyRoomTag).values;
 }
 
 void PathTracedLighting::setLightRoulette(double share) {

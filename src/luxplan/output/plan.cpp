@@ -5,15 +5,13 @@
 #include <cmath>
 #include <cstdio>
 
-#include <luxplan/core/estimator.h>
 #include <luxplan/core/format.h>
-#include <luxplan/core/parallel.h>
-#include <luxplan/core/rng.h>
 #include <luxplan/scene/room.h>
 #include <luxplan/emitters/emitter_shape.h>
 #include <luxplan/lightsamplers/sampler_type.h>
 #include <luxplan/output/contours.h>
 #include <luxplan/output/label_font.h>
+#include <luxplan/pathtracer/illuminance_at.h>
 #include <luxplan/optimizer/sampler_report.h>
 
 namespace luxplan {
@@ -230,23 +228,13 @@ IlluminanceGrid measureWorkPlane(const PathTracer& tracer, const Bounds3& room, 
     // so every cell centre is inside.
     grid.origin = {room.lo.x - (grid.nx * grid.cellSize - size.x) / 2,
                    room.lo.y - (grid.ny * grid.cellSize - size.y) / 2};
-    const size_t cells = size_t(grid.nx) * size_t(grid.ny);
-    grid.values.assign(cells, 0.0);
-    grid.errors.assign(cells, 0.0);
-    paths = std::max(1, paths);
-    const Vec3 up{0, 0, 1};
-
-    parallelFor(cells, [&](size_t cell) {
-        Vec3 p = grid.cellCenter(int(cell % size_t(grid.nx)), int(cell / size_t(grid.nx)));
-        RayStats stats;
-        MeanEstimator estimate;
-        for (int path = 0; path < paths; ++path) {
-            Rng rng(hashValues({seed, kWorkPlaneTag, uint64_t(cell), uint64_t(path)}));
-            estimate.add(tracer.illuminanceSample(p, up, rng, stats));
-        }
-        grid.values[cell] = estimate.mean();
-        grid.errors[cell] = estimate.standardError();
-    });
+    std::vector<Vec3> centres;
+    centres.reserve(size_t(grid.nx) * size_t(grid.ny));
+    for (int j = 0; j < grid.ny; ++j)
+        for (int i = 0; i < grid.nx; ++i) centres.push_back(grid.cellCenter(i, j));
+    PointIlluminance lux = illuminanceAt(tracer, centres, Vec3(0, 0, 1), paths, seed, kWorkPlaneTag);
+    grid.values = std::move(lux.values);
+    grid.errors = std::move(lux.errors);
     return grid;
 }
 
