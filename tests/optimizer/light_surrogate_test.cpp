@@ -1,6 +1,7 @@
 // The light surrogate (optimizer/light_surrogate.h) and the planned start it serves: which
-// samplers it stands in for, its fields against a closed form, the empty room against a
-// scene built without the furniture, and the chain's start against the drawn one.
+// samplers it stands in for, its fields and pose tables against closed forms, the empty
+// room and a pose alone in it against scenes built without the furniture, and the
+// chain's start against the drawn one.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -57,7 +58,7 @@ TEST(LightSurrogate, StandsInForTheUpwardPlanesThatFurnitureCarries) {
     for (const Vec3& p : points) EXPECT_NEAR(p.z, 0.75, 1e-12);
     EXPECT_NEAR(points.front().x, 0.125, 1e-12);
     EXPECT_NEAR(points.back().y, 3.875, 1e-12);
-    EXPECT_THROW(surrogate.lighting(worldTransforms(scene, initialLayout(scene))), std::logic_error);  // no field yet
+    EXPECT_THROW(surrogate.lighting(initialLayout(scene), worldTransforms(scene, initialLayout(scene))), std::logic_error);  // no field yet
 
     // A scene whose planes stand still has nothing to plan.
     const Scene still = windowRoom().sampler("desk", planarSampler({3, 2, 0.75}, {0, 0, 1}, {0, 1, 0}, {1, 1}, {2, 2}), 300).build();
@@ -80,17 +81,17 @@ TEST(LightSurrogate, ReadsALinearFieldExactlyAndScoresItAsEq3) {
         return worldTransforms(scene, layout);
     };
     // Bilinear interpolation is exact for a linear field, and the task grid is centred on the desk.
-    EXPECT_NEAR(surrogate.value(0, at(3, 2, 90)), 100 + 150 + 160, 1e-9);
-    EXPECT_NEAR(surrogate.lighting(at(3, 2, 90)), 0, 1e-12);  // 410 lx: inside [300, 500] by more than a tenth
+    EXPECT_NEAR(surrogate.value(0, layout, at(3, 2, 90)), 100 + 150 + 160, 1e-9);
+    EXPECT_NEAR(surrogate.lighting(layout, at(3, 2, 90)), 0, 1e-12);  // 410 lx: inside [300, 500] by more than a tenth
     // 490 lx: inside the band, not by a tenth of its width. The desk's term alone, against
     // [320, 480], over every term's weight (three samplers of weight 1).
-    const double v = surrogate.value(0, at(3, 3, 0));
+    const double v = surrogate.value(0, layout, at(3, 3, 0));
     EXPECT_NEAR(v, 490, 1e-9);
     const LightSamplerSpec& task = scene.samplers[0];
-    EXPECT_NEAR(surrogate.lighting(at(3, 3, 0)), penalty(490, 320, 480, task.tolerance, kLightingStiffness) / 3, 1e-12);
-    EXPECT_GT(surrogate.lighting(at(3, 3, 0)), 0);
+    EXPECT_NEAR(surrogate.lighting(layout, at(3, 3, 0)), penalty(490, 320, 480, task.tolerance, kLightingStiffness) / 3, 1e-12);
+    EXPECT_GT(surrogate.lighting(layout, at(3, 3, 0)), 0);
     // Past the cell centres the field holds its edge value (x = 0.125 m), the desk out in the wall.
-    EXPECT_NEAR(surrogate.value(0, at(-5, 2, 0)), 100 + 50 * 0.125 + 160, 1e-9);
+    EXPECT_NEAR(surrogate.value(0, layout, at(-5, 2, 0)), 100 + 50 * 0.125 + 160, 1e-9);
 }
 
 // The empty room: the furniture is not there while it is traced, and what is left is
@@ -120,6 +121,146 @@ TEST(LightSurrogate, TheEmptyRoomIsTheRoomWithoutItsFurniture) {
     // (each about `there`'s).
     EXPECT_NEAR(a[0], there.value, 4 * std::sqrt(2.0) * there.standardError);
     EXPECT_EQ(lighting.emptyRoomIlluminance({{3, 2, 0.75}}, 4000, 11), a);  // seeded
+}
+
+// Two workstations built alike, each a frame with a screen whose eye looks south at the
+// window (y = 0), and a cabinet: the eyes' samplers go to pose tables, one shared.
+Scene workstationScene(bool withCabinet = true, int planIterations = 0) {
+    SceneBuilder b = windowRoom();
+    OptimizerSettings settings;
+    settings.iterations = 0;
+    settings.planIterations = planIterations;
+    b.optimizer(settings);
+    for (const char* name : {"ws1", "ws2"}) {
+        b.entity(name, {std::string(name) == "ws1" ? 2.0 : 4.0, 2.5, 0})
+            .region({1, 1}, {5, 3}, {0, 90, 180, 270})
+            .part({1.2, 0.6, 0.05}, "wood", Vec3(0, 0, 0.72))
+            .entity("screen", {0, -0.2, 0})
+            .rangeRegion({-0.3, -0.25}, {0.3, -0.15}, -30, 30)
+            .part({0.5, 0.02, 0.3}, "wood", Vec3(0, 0, 1.0))
+            .sampler("eye", directionalSampler({0, 0.5, 1.2}, {0, -1, 0}, {0, 0, 1}, 60, 2), 0, 100)
+            .end()
+            .end();
+    }
+    if (withCabinet) b.entity("cabinet", {3, 1.2, 0}).region({1, 1}, {5, 3}).part({2.5, 0.4, 2.2}, "wood", Vec3(0, 0, 1.1)).end();
+    return b.build();
+}
+
+// The eye of workstation `ws`'s screen.
+int eyeOf(const Scene& scene, const std::string& ws) {
+    for (size_t k = 0; k < scene.samplers.size(); ++k)
+        if (scene.samplers[k].entity >= 0 && scene.entities[size_t(scene.samplers[k].entity)].path == ws + ".screen") return int(k);
+    return -1;
+}
+
+// The tables: which samplers, the poses traced (one query for two pieces built alike),
+// a table linear in x and y read back exactly at the nearest heading, and its term in L.
+TEST(LightSurrogate, TablesTheScreensEyesByTheirWorkstationsPose) {
+    const Scene scene = workstationScene();
+    LightSurrogate surrogate(scene);
+    EXPECT_TRUE(surrogate.samplers().empty());  // no upward plane: no field
+    ASSERT_TRUE(surrogate.hasPoseTables());
+    // The screens turn on their frames: the tables hold them at the scene's placement.
+    EXPECT_EQ(surrogate.heldAtScenePlacement(), (std::vector<int>{scene.findEntity("ws1.screen"), scene.findEntity("ws2.screen")}));
+    ASSERT_FALSE(surrogate.empty());
+    const int ws1 = scene.findEntity("ws1"), ws2 = scene.findEntity("ws2");
+    const std::vector<LightSurrogate::PoseQuery> queries = surrogate.poseQueries();
+    ASSERT_EQ(queries.size(), 1u);  // ws2's table is ws1's
+    EXPECT_EQ(queries[0].entity, ws1);
+    ASSERT_EQ(queries[0].samplers.size(), 1u);
+    EXPECT_EQ(queries[0].samplers[0], eyeOf(scene, "ws1"));
+    // 4 x 2 m every half metre: 9 x 5 nodes, at each of 4 headings.
+    ASSERT_EQ(queries[0].placements.size(), 9u * 5u * 4u);
+    EXPECT_EQ(queries[0].placements[0].position, Vec3(1, 1, 0));
+    EXPECT_EQ(queries[0].placements[9 * 5].rotationDeg, 90);
+    EXPECT_EQ(queries[0].placements[9 * 5 - 1].position, Vec3(5, 3, 0));
+
+    std::vector<std::vector<double>> values;
+    for (const Placement& p : queries[0].placements) values.push_back({30 * p.position.x + 20 * p.position.y + 1000 * std::round(p.rotationDeg / 90)});
+    EXPECT_THROW(surrogate.setPoseValues({{{1.0}}}), std::invalid_argument);
+    surrogate.setIlluminance({});
+    surrogate.setPoseValues({values});
+    Layout layout = initialLayout(scene);
+    layout.placements[size_t(ws2)].position = {2.25, 1.7, 0};
+    layout.placements[size_t(ws2)].rotationDeg = 88;  // nearest heading: 90
+    const std::vector<Transform> world = worldTransforms(scene, layout);
+    const int eye2 = eyeOf(scene, "ws2");
+    EXPECT_NEAR(surrogate.value(eye2, layout, world), 67.5 + 34 + 1000, 1e-9);
+    layout.placements[size_t(ws2)].rotationDeg = 350;  // heading 0, across the turn
+    EXPECT_NEAR(surrogate.value(eye2, layout, world), 67.5 + 34, 1e-9);
+    layout.placements[size_t(ws2)].position = {9, -3, 0};  // clamped at the grid's corner (5, 1)
+    EXPECT_NEAR(surrogate.value(eye2, layout, world), 150 + 20, 1e-9);
+    // Each eye's term against [0, 90]: the band's top narrowed by a tenth, its bottom (0) kept.
+    const double v1 = surrogate.value(eyeOf(scene, "ws1"), layout, world);
+    EXPECT_NEAR(v1, 60 + 50, 1e-9);
+    const LightSamplerSpec& eye = scene.samplers[size_t(eye2)];
+    const double expected = (penalty(v1, 0, 90, eye.tolerance, kLightingStiffness) + penalty(170, 0, 90, eye.tolerance, kLightingStiffness)) / 2;
+    EXPECT_GT(expected, 0);
+    EXPECT_NEAR(surrogate.lighting(layout, world), expected, 1e-12);
+    // A traced look scales each sampler by what it read over the surrogate, within a factor 2.
+    std::vector<SamplerResult> traced(scene.samplers.size());
+    traced[size_t(eye2)].value = 0.5 * 170;
+    traced[size_t(eyeOf(scene, "ws1"))].value = 10 * v1;
+    surrogate.correct(layout, world, traced);
+    EXPECT_NEAR(surrogate.value(eye2, layout, world), 85, 1e-9);
+    EXPECT_NEAR(surrogate.value(eyeOf(scene, "ws1"), layout, world), 2 * v1, 1e-9);
+    layout.placements[size_t(ws2)].position = {2.25, 1.7, 0};
+    EXPECT_NEAR(surrogate.value(eye2, layout, world), 0.5 * (67.5 + 34), 1e-9);  // everywhere
+    EXPECT_THROW(surrogate.correct(layout, world, {}), std::invalid_argument);
+    // An evaluator that cannot trace the tables: their samplers count as met.
+    surrogate.setPoseValues({});
+    EXPECT_FALSE(surrogate.hasPoseTables());
+    EXPECT_EQ(surrogate.lighting(layout, world), 0);
+}
+
+// A table's pose is traced with its own furniture and no other: as a scene built
+// without the cabinet measures it, and not as one with the cabinet before the window.
+TEST(LightSurrogate, APoseIsTracedWithItsOwnFurnitureAlone) {
+    const Scene scene = workstationScene();
+    const int ws1 = scene.findEntity("ws1"), k = eyeOf(scene, "ws1");
+    Placement at = initialLayout(scene).placements[size_t(ws1)];
+    at.position = {3, 2.5, 0};
+    Scene alone = workstationScene(false);
+    alone.entities[size_t(alone.findEntity("ws1"))].position = at.position;
+    alone.entities[size_t(alone.findEntity("ws2"))].position.z -= 1000;
+    Scene cabinet = scene;
+    cabinet.entities[size_t(cabinet.findEntity("ws1"))].position = at.position;
+    cabinet.entities[size_t(cabinet.findEntity("ws2"))].position.z -= 1000;
+    const SamplerResult truth = test::SceneLab(alone).measure(4000, 5).samplers[size_t(eyeOf(alone, "ws1"))];
+    const double blocked = test::SceneLab(cabinet).measure(1000, 5).samplers[size_t(k)].value;
+    ASSERT_GT(truth.value, 100);
+    EXPECT_LT(blocked, 0.7 * truth.value);  // the cabinet shades the window: the test can tell
+
+    MeasureOptions measure;
+    measure.pathsPerPoint = 32;
+    const test::SceneLab lab(scene);
+    PathTracedLighting lighting(scene, &*lab.daylight, measure);
+    const std::vector<std::vector<double>> v = lighting.aloneInEmptyRoom(ws1, {at}, {k}, 4000, 11);
+    ASSERT_EQ(v.size(), 1u);
+    ASSERT_EQ(v[0].size(), 1u);
+    EXPECT_NEAR(v[0][0], truth.value, 4 * std::sqrt(2.0) * truth.standardError);
+    EXPECT_EQ(lighting.aloneInEmptyRoom(ws1, {at}, {k}, 4000, 11), v);  // seeded
+}
+
+// A plan holds the screens where the tables traced them (the scene's placement) and
+// moves the workstations; the traced chain turns the screens.
+TEST(PlannedStart, HoldsWhatTheTablesHoldStill) {
+    const Scene scene = workstationScene(true, 2000);
+    MeasureOptions measure;
+    measure.pathsPerPoint = 16, measure.seed = 2;
+    const test::SceneLab lab(scene);
+    PathTracedLighting lighting(scene, &*lab.daylight, measure);
+    OptimizerOptions options = optimizerOptions(scene);
+    options.planTablePaths = 4;
+    const OptimizerResult r = Optimizer(scene, options, &lighting).run();
+    ASSERT_TRUE(r.planned);
+    const Layout initial = initialLayout(scene);
+    for (const char* held : {"ws1.screen", "ws2.screen"}) {
+        const size_t e = size_t(scene.findEntity(held));
+        EXPECT_EQ(r.best.placements[e].position, initial.placements[e].position) << held;
+        EXPECT_EQ(r.best.placements[e].rotationDeg, initial.placements[e].rotationDeg) << held;
+    }
+    EXPECT_NE(r.best.placements[size_t(scene.findEntity("ws1"))].position, initial.placements[size_t(scene.findEntity("ws1"))].position);
 }
 
 OptimizerResult startOf(const Scene& scene) {

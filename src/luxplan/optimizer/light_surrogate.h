@@ -5,9 +5,17 @@
 // points. Where a desk stands in the room's light decides most of its illuminance; what
 // the furniture adds (its shadows, its reflections) and the samplers it cannot stand in
 // for (screens' glare, walls, annual goals, fixed points) are left to the chain, which
-// traces them. Their terms count as met here, in L's denominator all the same.
+// traces them.
+// Samplers that move with furniture but are not upward planes (a screen's glare eye)
+// read a pose table instead: their values with the furniture that carries them, and no
+// other movable piece, at the nodes of a grid of its positions (at most half a metre
+// apart) and at each of its headings, traced once (LightingEvaluator::
+// aloneInEmptyRoom). A table keys on the topmost movable entity above the sampler (the
+// workstation a screen stands on); pieces built alike share one. Every other term (fixed
+// points, annual goals) counts as met here, in L's denominator all the same.
 #pragma once
 
+#include <array>
 #include <vector>
 
 #include <luxplan/core/math.h>
@@ -18,11 +26,11 @@ namespace luxplan {
 
 class LightSurrogate {
 public:
-    // `cellMetres`: the grid's cells (the room's box split evenly, centred as the plan's
+    // `cellMetres`: the fields' cells (the room's box split evenly, centred as the plan's
     // work plane is). A scene without a room shell or without such samplers is empty().
     LightSurrogate(const Scene& scene, double cellMetres = 0.25);
 
-    bool empty() const { return fields_.empty(); }
+    bool empty() const { return fields_.empty() && tables_.empty(); }
     // Where the illuminance is wanted, facing up: every field's cell centres, in order.
     std::vector<Vec3> points() const;
     // Their measured illuminance (lx), in points()'s order.
@@ -31,12 +39,37 @@ public:
     // The samplers it stands in for (Scene::samplers indices).
     const std::vector<int>& samplers() const { return standIns_; }
 
-    // Eq. 3's L for the layout whose world transforms are `world`, the stood-in
-    // samplers read from the fields, their bands narrowed by a tenth of their width at
-    // each finite end (what the surrogate cannot see), every other term at penalty 0.
-    double lighting(const std::vector<Transform>& world) const;
-    // A stood-in sampler's value (its points' mean) there.
-    double value(int sampler, const std::vector<Transform>& world) const;
+    // The pose tables: each one's entity, the placements where it is traced (heading by
+    // heading, the grid row by row, x fastest) and its samplers (Scene::samplers indices).
+    struct PoseQuery {
+        int entity = -1;
+        std::vector<Placement> placements;
+        std::vector<int> samplers;
+    };
+    // One query per table that must be traced (a table shared with an earlier one is not
+    // asked again).
+    std::vector<PoseQuery> poseQueries() const;
+    // Their values, in poseQueries()'s order: per query, per placement, per sampler.
+    // Not called (or called with an empty list): the tables' samplers count as met.
+    void setPoseValues(const std::vector<std::vector<std::vector<double>>>& values);
+    bool hasPoseTables() const { return !tables_.empty(); }
+    // The movable entities between a table's samplers and its entity (a monitor on its
+    // workstation): the tables hold them at the scene's placement, and so must a plan.
+    const std::vector<int>& heldAtScenePlacement() const { return held_; }
+
+    // Scales each stood-in sampler's values by what light traced at `layout` (`traced`,
+    // one result per Scene::samplers entry) read there over what the surrogate reads, at
+    // most a factor kMaxCorrection either way: what the furniture adds or takes (a desk's
+    // own shadows), as far as one layout can tell it.
+    void correct(const Layout& layout, const std::vector<Transform>& world, const std::vector<SamplerResult>& traced);
+
+    // Eq. 3's L for `layout`, whose world transforms are `world`: the stood-in samplers
+    // read from the fields and the tables, their bands narrowed by a tenth of their
+    // width at each bound above 0 (what the surrogate cannot see), every other term at
+    // penalty 0.
+    double lighting(const Layout& layout, const std::vector<Transform>& world) const;
+    // A stood-in sampler's value (its points' mean, or its table's value) there.
+    double value(int sampler, const Layout& layout, const std::vector<Transform>& world) const;
 
 private:
     struct Field {
@@ -46,12 +79,32 @@ private:
         std::vector<double> lux;  // row-major, x fastest
         double at(Vec2 p, double cell) const;  // bilinear between cell centres, clamped at the edges
     };
+    // A table's grid of positions (nodes from lo, `step` apart, clamped at the ends),
+    // its headings, and its values: [heading][row][column][sampler].
+    struct PoseTable {
+        int entity = -1;
+        std::vector<int> samplers;
+        Vec2 lo, step;
+        int nx = 1, ny = 1;
+        std::vector<double> headingsDeg;
+        std::vector<double> values;
+        int sharesWith = -1;  // an earlier table built alike, whose values it takes
+        bool traced = false;
+        std::vector<Placement> placements(const Scene& scene) const;
+        double at(int samplerSlot, const Placement& p) const;
+    };
+    void addPoseTables();
     std::vector<double> pointValues(int sampler, const std::vector<Transform>& world) const;
+    double tableValue(int sampler, const Layout& layout) const;
 
     const Scene* scene_;
     double cell_;
     std::vector<Field> fields_;
     std::vector<int> fieldOf_;    // per sampler: its field, -1 when not stood in for
+    std::vector<PoseTable> tables_;
+    std::vector<int> held_;
+    std::vector<double> factor_;  // per sampler: correct()'s scale (1: none)
+    std::vector<std::array<int, 2>> tableOf_;  // per sampler: its table and slot there, or -1
     std::vector<int> standIns_;
     double termWeights_ = 0;      // L's denominator: every term's weight, every sampler's
     bool ready_ = false;

@@ -79,6 +79,16 @@ public:
         (void)points, (void)paths, (void)seed;
         return {};
     }
+    // The values of `samplers` (Scene::samplers indices, carried by `entity` or its
+    // members) with `entity` at each of `placements`, in the room without its other
+    // movable furniture, `paths` paths per point from `seed` (the same at every
+    // placement): the light surrogate's pose tables. Per placement, one value per
+    // sampler. Commits nothing. Empty: this evaluator cannot tell.
+    virtual std::vector<std::vector<double>> aloneInEmptyRoom(int entity, const std::vector<Placement>& placements,
+                                                              const std::vector<int>& samplers, int paths, uint64_t seed) {
+        (void)entity, (void)placements, (void)samplers, (void)paths, (void)seed;
+        return {};
+    }
     // The chain accepted (commit) or refused (revert) the layout last evaluated: an
     // evaluator that keeps work between layouts (the path cache) keeps it for the
     // accepted layout only. Evaluations measure against the last committed layout.

@@ -389,58 +389,110 @@ void Optimizer::initialize(const std::function<void(int drawn, int most)>& drawi
 Layout Optimizer::plannedStart(Layout start) {
     if (!surrogate_->ready()) {
         // The room without its furniture, traced once for every run of this optimizer.
-        std::vector<double> lux = lighting_->emptyRoomIlluminance(surrogate_->points(), options_.planPaths,
-                                                                  hashValues({options_.seed, kStreamTag, kPlanStream}));
-        if (lux.empty()) {
+        const uint64_t seed = hashValues({options_.seed, kStreamTag, kPlanStream});
+        const std::vector<Vec3> points = surrogate_->points();
+        std::vector<double> lux;
+        if (!points.empty()) {
+            lux = lighting_->emptyRoomIlluminance(points, options_.planPaths, seed);
+            if (lux.empty()) {  // the evaluator cannot tell
+                surrogate_.reset();
+                return start;
+            }
+        }
+        surrogate_->setIlluminance(lux);
+        // The pose tables: each piece that carries a screen's eye, alone in the room.
+        std::vector<std::vector<std::vector<double>>> tables;
+        for (const LightSurrogate::PoseQuery& q : surrogate_->poseQueries()) {
+            tables.push_back(lighting_->aloneInEmptyRoom(q.entity, q.placements, q.samplers, options_.planTablePaths, seed));
+            if (tables.back().empty()) {
+                tables.clear();
+                break;
+            }
+        }
+        surrogate_->setPoseValues(tables);
+        if (surrogate_->empty()) {
             surrogate_.reset();
             return start;
         }
-        surrogate_->setIlluminance(lux);
     }
     // Metropolis on C's stand-in, w L_surrogate + (1 - w) G, the rules exact: a rejected
     // start is repaired first, as the chain's is (step()).
     const double w = scene_->objective.lightingWeight;
     Rng rng(hashValues({options_.seed, kStreamTag, kPlanStream}));
-    auto costOf = [&](const std::vector<Transform>& world, double g) { return w * surrogate_->lighting(world) + (1 - w) * g; };
-    std::vector<Transform> world = worldTransforms(*scene_, start);
-    GeometryResult g = geometry_.evaluate(world);
-    geometry_.commit();
-    bool feasible = !g.rejected;
-    double violation = g.violation, cost = feasible ? costOf(world, g.cost) : kInf;
-    Layout best = start;
-    double bestCost = cost;
-    const int n = options_.planIterations;
-    const Schedule& schedule = options_.schedule;
-    for (int i = 0; i < n; ++i) {
-        const double t = schedule.temperature(i, n);
-        const MoveSet& moves = levels_[levels_.size() == 1 ? 0 : rng.uniformInt(uint32_t(levels_.size()))];
-        Layout proposed = start;
-        const Proposal p = moves.propose(proposed, rng);
-        if (!p.valid) continue;
-        world = worldTransforms(*scene_, proposed);
-        const GeometryResult pg = geometry_.evaluate(world);
-        double proposedCost = kInf;
-        bool accept = false;
-        if (!feasible) {
-            accept = !pg.rejected || pg.violation <= violation;
-            if (!pg.rejected) proposedCost = costOf(world, pg.cost);
-        } else if (!pg.rejected) {
-            proposedCost = costOf(world, pg.cost);
-            const double logA = -(proposedCost - cost) / t + p.logHastings;
-            accept = logA >= 0 || rng.uniform() < std::exp(logA);
+    auto costOf = [&](const Layout& layout, const std::vector<Transform>& world, double g) {
+        return w * surrogate_->lighting(layout, world) + (1 - w) * g;
+    };
+    // What the tables hold still (a monitor on its desk) stands at the scene's placement
+    // and stays there: the traced chain turns it.
+    const Layout scenePlacement = initialLayout(*scene_);
+    std::vector<int> held;
+    for (int e : surrogate_->heldAtScenePlacement())
+        if (scenePlacement.placements[size_t(e)].region >= 0) {
+            held.push_back(e);
+            start.placements[size_t(e)] = scenePlacement.placements[size_t(e)];
         }
-        if (!accept) {
-            geometry_.revert();
-            continue;
+    auto movesHeld = [&](const Layout& proposed) {
+        for (int e : held) {
+            const Placement &a = proposed.placements[size_t(e)], &b = scenePlacement.placements[size_t(e)];
+            if (a.position != b.position || a.rotationDeg != b.rotationDeg) return true;
         }
+        return false;
+    };
+    // A chain of `n` proposals from `from` at the schedule's temperatures from proposal
+    // `skip` of skip + n on: its best feasible layout and cost (kInf: never feasible).
+    auto chain = [&](Layout from, int n, int skip) {
+        std::vector<Transform> world = worldTransforms(*scene_, from);
+        const GeometryResult g = geometry_.evaluate(world);
         geometry_.commit();
-        start = std::move(proposed);
-        feasible = feasible || !pg.rejected;
-        violation = pg.violation, cost = proposedCost;
-        if (feasible && cost < bestCost) best = start, bestCost = cost;
-    }
-    if (!std::isfinite(bestCost)) return start;  // never feasible: the chain repairs it
+        bool feasible = !g.rejected;
+        double violation = g.violation, cost = feasible ? costOf(from, world, g.cost) : kInf;
+        std::pair<Layout, double> best{from, cost};
+        for (int i = 0; i < n; ++i) {
+            const double t = options_.schedule.temperature(skip + i, skip + n);
+            const MoveSet& moves = levels_[levels_.size() == 1 ? 0 : rng.uniformInt(uint32_t(levels_.size()))];
+            Layout proposed = from;
+            const Proposal p = moves.propose(proposed, rng);
+            if (!p.valid || movesHeld(proposed)) continue;
+            world = worldTransforms(*scene_, proposed);
+            const GeometryResult pg = geometry_.evaluate(world);
+            double proposedCost = kInf;
+            bool accept = false;
+            if (!feasible) {
+                accept = !pg.rejected || pg.violation <= violation;
+                if (!pg.rejected) proposedCost = costOf(proposed, world, pg.cost);
+            } else if (!pg.rejected) {
+                proposedCost = costOf(proposed, world, pg.cost);
+                const double logA = -(proposedCost - cost) / t + p.logHastings;
+                accept = logA >= 0 || rng.uniform() < std::exp(logA);
+            }
+            if (!accept) {
+                geometry_.revert();
+                continue;
+            }
+            geometry_.commit();
+            from = std::move(proposed);
+            feasible = feasible || !pg.rejected;
+            violation = pg.violation, cost = proposedCost;
+            if (feasible && cost < best.second) best = {from, cost};
+        }
+        return best;
+    };
+    const int n = options_.planIterations;
+    auto [best, bestCost] = chain(std::move(start), n, 0);
+    if (!std::isfinite(bestCost)) return best;  // never feasible: the chain repairs it
     planned_ = true;
+    // One traced look at the plan: each stood-in sampler's surrogate is scaled by what
+    // the light traced there says of it (the furniture's own shadows on a desk, what the
+    // other pieces add to a screen), and the plan's last quarter runs again from its best.
+    LightingBreakdown seen;
+    lighting_->evaluate(best, worldTransforms(*scene_, best), &seen);
+    lighting_->revert();
+    if (seen.samplers.size() == scene_->samplers.size()) {
+        surrogate_->correct(best, worldTransforms(*scene_, best), seen.samplers);
+        const int quarter = n / 4;
+        auto refined = chain(best, quarter, n - quarter);
+        if (refined.second < kInf) best = std::move(refined.first);
+    }
     // The rules' cache stands at the chain's last layout: the caller evaluates `best` from there.
     return best;
 }

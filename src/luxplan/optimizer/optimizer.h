@@ -136,7 +136,8 @@ struct OptimizerOptions {
     // no light traced; its best is where the traced chain starts, its first cycle cold
     // (at the schedule's end: the noise floor sets the temperature). 0: off (the paper's start).
     int planIterations = 20000;
-    int planPaths = 64;  // per cell of the surrogate's fields
+    int planPaths = 64;       // per cell of the surrogate's fields
+    int planTablePaths = 32;  // per point or stratum of a pose table's samplers, at each pose
     // StartFrom::Given's layout (optimize --start): every movable entity placed.
     std::optional<Layout> startLayout;
     // Best-so-far snapshots (OptimizerResult::snapshots) at this many checkpoints,

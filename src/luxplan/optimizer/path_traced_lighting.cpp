@@ -13,6 +13,7 @@ namespace {
 
 constexpr uint64_t kFreshTag = 0x6672657368ULL;  // "fresh"
 constexpr uint64_t kEmptyRoomTag = 0x656d707479ULL;  // "empty"
+constexpr uint64_t kAloneTag = 0x616c6f6e65ULL;      // "alone"
 // How far below the floor the movable furniture goes while the empty room is traced:
 // under the room's own floor, no path from inside reaches it.
 constexpr double kOutOfTheWay = 1000;
@@ -90,6 +91,49 @@ std::vector<double> PathTracedLighting::emptyRoomIlluminance(const std::vector<V
     const EmbreeScene rt(scene_, away);
     const PathTracer tracer(rt, tracer_.daylight(), searchTracing_);
     return illuminanceAt(tracer, points, Vec3(0, 0, 1), paths, seed, kEmptyRoomTag).values;
+}
+
+std::vector<std::vector<double>> PathTracedLighting::aloneInEmptyRoom(int entity, const std::vector<Placement>& placements,
+                                                                      const std::vector<int>& samplers, int paths,
+                                                                      uint64_t seed) {
+    // A copy of the scene whose samplers are these alone, so that a measurement traces them only.
+    Scene alone = scene_;
+    alone.samplers.clear();
+    for (Entity& e : alone.entities) e.samplers.clear();
+    for (int k : samplers) {
+        const LightSamplerSpec& s = scene_.samplers.at(size_t(k));
+        if (s.entity >= 0) alone.entities[size_t(s.entity)].samplers.push_back(int(alone.samplers.size()));
+        alone.samplers.push_back(s);
+    }
+    int root = entity;
+    while (scene_.entities[size_t(root)].parent >= 0) root = scene_.entities[size_t(root)].parent;
+    Layout layout = initialLayout(alone);
+    for (size_t e = 0; e < alone.entities.size(); ++e)
+        if (int(e) != root && alone.entities[e].parent < 0 && alone.entities[e].movable())
+            layout.placements[e].position.z -= kOutOfTheWay;
+    EmbreeScene rt(alone, layout);
+    PathTracer tracer(rt, tracer_.daylight(), searchTracing_);
+    MeasureOptions options = options_;
+    options.pathsPerPoint = std::max(1, paths);
+    options.seed = hashValues({seed, kAloneTag});
+    options.adaptive = false;
+    options.choiceError = false;
+    options.lightFloors.clear();
+    options.pathsDone = nullptr;
+    std::vector<std::vector<double>> values;
+    values.reserve(placements.size());
+    for (const Placement& p : placements) {
+        layout.placements[size_t(entity)] = p;
+        const std::vector<Transform> world = worldTransforms(alone, layout);
+        for (size_t i = 0; i < world.size(); ++i) rt.setEntityTransform(int(i), world[i]);
+        rt.commit();
+        tracer.updateLayout();
+        const MeasureResult m = measureSamplers(tracer, options);
+        std::vector<double> v;
+        for (const SamplerResult& r : m.samplers) v.push_back(r.value);
+        values.push_back(std::move(v));
+    }
+    return values;
 }
 
 void PathTracedLighting::setLightRoulette(double share) {

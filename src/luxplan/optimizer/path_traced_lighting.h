@@ -50,6 +50,9 @@ public:
     void setSearchMargin(double z) override { margin_ = z; }
     // Traced in a ray tracer of its own, the movable furniture far below the floor.
     std::vector<double> emptyRoomIlluminance(const std::vector<Vec3>& points, int paths, uint64_t seed) override;
+    // Traced in a ray tracer of its own, on a copy of the scene that holds only those samplers.
+    std::vector<std::vector<double>> aloneInEmptyRoom(int entity, const std::vector<Placement>& placements,
+                                                      const std::vector<int>& samplers, int paths, uint64_t seed) override;
     // Every path the cache reads back is traced again and compared (CheckedPaths): a
     // diagnostic, at the cost of a full evaluation and more.
     void setCheckCache(bool on) { checkCache_ = on; }
