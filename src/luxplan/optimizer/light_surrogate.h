@@ -1,18 +1,17 @@
 // A stand-in for the light, for planning where the chain starts (OptimizerOptions::
-// plannedStart): every upward planar sampler that moves with furniture (a desk's task
-// grid) reads the horizontal illuminance of the room without its movable furniture,
-// measured once on a grid of cells at the sampler's height and interpolated at its
-// points. Where a desk stands in the room's light decides most of its illuminance; what
-// the furniture adds (its shadows, its reflections) and the samplers it cannot stand in
-// for (screens' glare, walls, annual goals, fixed points) are left to the chain, which
-// traces them.
-// Samplers that move with furniture but are not upward planes (a screen's glare eye)
-// read a pose table instead: their values with the furniture that carries them, and no
-// other movable piece, at the nodes of a grid of its positions (at most half a metre
-// apart) and at each of its headings, traced once (LightingEvaluator::
-// aloneInEmptyRoom). A table keys on the topmost movable entity above the sampler (the
-// workstation a screen stands on); pieces built alike share one. Every other term (fixed
-// points, annual goals) counts as met here, in L's denominator all the same.
+// plannedStart). Every upward planar sampler that moves with furniture (a desk's task
+// grid) reads a field: the horizontal illuminance of the room without its movable
+// furniture, measured once on a grid of cells at the sampler's height and interpolated
+// at its points. Every other sampler that moves with furniture (a screen's glare eye)
+// reads a pose table: its values with the piece that carries it (the topmost movable
+// entity above it, the workstation a screen stands on) and no other movable piece, at
+// the nodes of a grid of the piece's positions (at most half a metre apart) and at each
+// of its headings, traced once (LightingEvaluator::aloneInEmptyRoom); pieces built
+// alike share one. Where a piece stands in the room's light decides most of what its
+// samplers read; what the other furniture adds (shadows, reflections) enters as one
+// scale per sampler from a traced look (correct()). Glare surveys, statistics goals,
+// fixed points and annual goals are left to the chain, which traces them: their terms
+// count as met here, in L's denominator all the same.
 #pragma once
 
 #include <array>
@@ -36,7 +35,7 @@ public:
     // Their measured illuminance (lx), in points()'s order.
     void setIlluminance(const std::vector<double>& values);
     bool ready() const { return ready_; }
-    // The samplers it stands in for (Scene::samplers indices).
+    // The samplers its fields stand in for (Scene::samplers indices).
     const std::vector<int>& samplers() const { return standIns_; }
 
     // The pose tables: each one's entity, the placements where it is traced (heading by

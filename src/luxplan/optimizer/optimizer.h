@@ -132,9 +132,11 @@ struct OptimizerOptions {
     // The planned start (StartFrom::Uniform, a geometric schedule, a lighting hook that
     // can trace the empty room): from the drawn start, a chain of planIterations proposals
     // on the light surrogate (optimizer/light_surrogate.h: the desks' illuminance read
-    // from the room without its furniture) and the exact rules, cooling on the schedule,
-    // no light traced; its best is where the traced chain starts, its first cycle cold
-    // (at the schedule's end: the noise floor sets the temperature). 0: off (the paper's start).
+    // from the room without its furniture, the screens' glare from pose tables) and the
+    // exact rules, cooling on the schedule, no light traced; one traced look at its best
+    // corrects the surrogate and its last quarter runs again. Its best is where the
+    // traced chain starts, its first cycle cold (at the schedule's end: the noise floor
+    // sets the temperature). 0: off (the paper's start).
     int planIterations = 20000;
     int planPaths = 64;       // per cell of the surrogate's fields
     int planTablePaths = 32;  // per point or stratum of a pose table's samplers, at each pose
