@@ -83,4 +83,6 @@ def test_ctrl_c_returns_the_best_layout_so_far():
     r = subprocess.run([sys.executable, "-c", code], cwd=ROOT, capture_output=True, text=True, env=env, timeout=120)
     assert r.returncode == 0, r.stderr
     got = json.loads(r.stdout.strip().splitlines()[-1])
-    assert got["stop"] == "cancelled" and got["layout"] and 0 < got["iterations"] < 10**7
+    # The signal may come while the start is planned (its tables and look take seconds on
+    # a busy machine): the run then stops before its first iteration, with the start.
+    assert got["stop"] == "cancelled" and got["layout"] and 0 <= got["iterations"] < 10**7
