@@ -124,17 +124,23 @@ double plannedPenalty(const LightingTerm& t) {
                    t.tolerance, kLightingStiffness);
 }
 
+// Bilinear interpolation on an nx x ny grid of nodes at the grid position (u, v) (in
+// nodes from the first), clamped at the edges; value(i, j) reads node (i, j).
+template <typename Value>
+double bilinear(double u, double v, int nx, int ny, const Value& value) {
+    u = std::clamp(u, 0.0, double(nx - 1)), v = std::clamp(v, 0.0, double(ny - 1));
+    const int i = std::min(int(u), std::max(0, nx - 2)), j = std::min(int(v), std::max(0, ny - 2));
+    const int i1 = std::min(i + 1, nx - 1), j1 = std::min(j + 1, ny - 1);
+    const double fu = u - i, fv = v - j;
+    return (1 - fv) * ((1 - fu) * value(i, j) + fu * value(i1, j)) + fv * ((1 - fu) * value(i, j1) + fu * value(i1, j1));
+}
+
 }  // namespace
 
 double LightSurrogate::Field::at(Vec2 p, double cell) const {
     // Cell centres at origin + (i + 1/2) cell: the position in cells from the first centre.
-    const double u = std::clamp((p.x - origin.x) / cell - 0.5, 0.0, double(nx - 1));
-    const double v = std::clamp((p.y - origin.y) / cell - 0.5, 0.0, double(ny - 1));
-    const int i = std::min(int(u), std::max(0, nx - 2)), j = std::min(int(v), std::max(0, ny - 2));
-    const int i1 = std::min(i + 1, nx - 1), j1 = std::min(j + 1, ny - 1);
-    const double fu = u - i, fv = v - j;
-    auto value = [&](int a, int b) { return lux[size_t(b) * size_t(nx) + size_t(a)]; };
-    return (1 - fv) * ((1 - fu) * value(i, j) + fu * value(i1, j)) + fv * ((1 - fu) * value(i, j1) + fu * value(i1, j1));
+    return bilinear((p.x - origin.x) / cell - 0.5, (p.y - origin.y) / cell - 0.5, nx, ny,
+                    [&](int a, int b) { return lux[size_t(b) * size_t(nx) + size_t(a)]; });
 }
 
 LightSurrogate::LightSurrogate(const Scene& scene, double cellMetres)
@@ -234,14 +240,9 @@ double LightSurrogate::PoseTable::at(int slot, const Placement& p) const {
     for (size_t k = 1; k < headingsDeg.size(); ++k)
         if (std::abs(headingDifference(headingsDeg[k], p.rotationDeg)) < std::abs(headingDifference(headingsDeg[h], p.rotationDeg)))
             h = k;
-    const double u = step.x > 0 ? std::clamp((p.position.x - lo.x) / step.x, 0.0, double(nx - 1)) : 0.0;
-    const double v = step.y > 0 ? std::clamp((p.position.y - lo.y) / step.y, 0.0, double(ny - 1)) : 0.0;
-    const int i = std::min(int(u), std::max(0, nx - 2)), j = std::min(int(v), std::max(0, ny - 2));
-    const int i1 = std::min(i + 1, nx - 1), j1 = std::min(j + 1, ny - 1);
-    const double fu = u - i, fv = v - j;
     const size_t n = samplers.size();
-    auto value = [&](int a, int b) { return values[((h * size_t(ny) + size_t(b)) * size_t(nx) + size_t(a)) * n + size_t(slot)]; };
-    return (1 - fv) * ((1 - fu) * value(i, j) + fu * value(i1, j)) + fv * ((1 - fu) * value(i, j1) + fu * value(i1, j1));
+    return bilinear(step.x > 0 ? (p.position.x - lo.x) / step.x : 0.0, step.y > 0 ? (p.position.y - lo.y) / step.y : 0.0, nx,
+                    ny, [&](int a, int b) { return values[((h * size_t(ny) + size_t(b)) * size_t(nx) + size_t(a)) * n + size_t(slot)]; });
 }
 
 std::vector<LightSurrogate::PoseQuery> LightSurrogate::poseQueries() const {

@@ -18,6 +18,16 @@ constexpr uint64_t kAloneTag = 0x616c6f6e65ULL;      // "alone"
 // under the room's own floor, no path from inside reaches it.
 constexpr double kOutOfTheWay = 1000;
 
+// The scene's placement with every top-level movable entity but `keep` (-1: none) far
+// below the floor: the room without its furniture.
+Layout furnitureAway(const Scene& scene, int keep = -1) {
+    Layout away = initialLayout(scene);
+    for (size_t e = 0; e < scene.entities.size(); ++e)
+        if (int(e) != keep && scene.entities[e].parent < 0 && scene.entities[e].movable())
+            away.placements[e].position.z -= kOutOfTheWay;
+    return away;
+}
+
 }  // namespace
 
 PathTracedLighting::PathTracedLighting(const Scene& scene, const DaylightEnvironment* daylight, const MeasureOptions& options,
@@ -85,10 +95,7 @@ double PathTracedLighting::measureIndependently(const Layout& /*layout*/, const 
 }
 
 std::vector<double> PathTracedLighting::emptyRoomIlluminance(const std::vector<Vec3>& points, int paths, uint64_t seed) {
-    Layout away = initialLayout(scene_);
-    for (size_t e = 0; e < scene_.entities.size(); ++e)
-        if (scene_.entities[e].parent < 0 && scene_.entities[e].movable()) away.placements[e].position.z -= kOutOfTheWay;
-    const EmbreeScene rt(scene_, away);
+    const EmbreeScene rt(scene_, furnitureAway(scene_));
     const PathTracer tracer(rt, tracer_.daylight(), searchTracing_);
     return illuminanceAt(tracer, points, Vec3(0, 0, 1), paths, seed, kEmptyRoomTag).values;
 }
@@ -107,10 +114,7 @@ std::vector<std::vector<double>> PathTracedLighting::aloneInEmptyRoom(int entity
     }
     int root = entity;
     while (scene_.entities[size_t(root)].parent >= 0) root = scene_.entities[size_t(root)].parent;
-    Layout layout = initialLayout(alone);
-    for (size_t e = 0; e < alone.entities.size(); ++e)
-        if (int(e) != root && alone.entities[e].parent < 0 && alone.entities[e].movable())
-            layout.placements[e].position.z -= kOutOfTheWay;
+    Layout layout = furnitureAway(alone, root);
     EmbreeScene rt(alone, layout);
     PathTracer tracer(rt, tracer_.daylight(), searchTracing_);
     MeasureOptions options = options_;
