@@ -44,13 +44,14 @@ TEST(SunPatchesCli, AnUnknownChoiceIsAnError) {
 
 // optimize's default samples the patches in the report but not in the search: the search
 // (its start and its chain, trace.csv) is the one of `off`, the report's measurement is
-// not. (Nor is the choice among the best layouts: it measures them again as the report does.)
+// not. (Nor is the choice among the best layouts, nor among the plans: they measure them
+// again as the report does; so the start here is drawn, not planned.)
 TEST(SunPatchesCli, OptimizeSamplesThemForTheReportOnly) {
     test::TempDir dir;
     auto run = [&](const std::string& name, const std::string& extra) {
         const auto out = dir.path() / name;
         test::CliResult r = test::runCli("optimize " + kOffice + " -o " + out.string() +
-                                         " --iterations 60 --paths 16 --seed 2 --threads 2 -q --no-pictures " + extra);
+                                         " --iterations 60 --paths 16 --seed 2 --threads 2 -q --no-pictures --set plan_iterations=0 " + extra);
         EXPECT_EQ(r.exitCode, 0) << r.output;
         std::ifstream trace(out / "trace.csv"), report(out / "report.json");
         std::stringstream chain;
@@ -62,7 +63,6 @@ TEST(SunPatchesCli, OptimizeSamplesThemForTheReportOnly) {
     EXPECT_EQ(standard.first, off.first);
     EXPECT_EQ(standard.second["start"], off.second["start"]);
     EXPECT_NE(standard.second["C"], off.second["C"]);
-    EXPECT_NE(on.second["start"], off.second["start"]);
     EXPECT_NE(on.first, off.first);
 }
 

@@ -36,6 +36,7 @@ json everyKey() {
                 {"restart_share", 0.4},
                 {"guided", false},
                 {"plan_iterations", 321},
+                {"plans", 3},
                 {"suggestions", 3},
                 {"margin", 1.5},
                 {"adaptive_share", false},

@@ -78,6 +78,26 @@ TEST(Candidates, ALayoutWithinTheSeparationReplacesItsCandidateOnlyWhenBetter) {
     EXPECT_FALSE(sameCandidate(s, at(s, 2), at(s, 3), CandidateSeparation{0.1, 10}));
 }
 
+TEST(Candidates, OneKeptWithItsMeasurementIsNeverReplaced) {
+    // A confirmation, or the plan chosen by its look: a layout within the separation
+    // with a lower search estimate comes beside it, never in its place.
+    const Scene s = slots();
+    Candidates c(s, 1, CandidateSeparation{0.1, 10});
+    Candidate measured{at(s, 2), costing(0.5), costing(0.3), 0};
+    c.keep(measured);
+    c.offer(at(s, 2, 5), costing(0.1), 7);
+    ASSERT_EQ(c.all().size(), 2u);
+    EXPECT_EQ(c.all()[0].iteration, 7);
+    EXPECT_FALSE(c.all()[0].independent);
+    EXPECT_EQ(c.all()[1].iteration, 0);
+    ASSERT_TRUE(c.all()[1].independent);
+    EXPECT_EQ(c.all()[1].independent->cost, 0.3);
+    c.offer(at(s, 2, 3), costing(0.05), 8);  // the offered one is replaced as ever
+    ASSERT_EQ(c.all().size(), 2u);
+    EXPECT_EQ(c.all()[0].iteration, 8);
+    EXPECT_EQ(c.all()[1].iteration, 0);
+}
+
 // The search's estimate is lucky at x = 9 (0.2, truly 0.9); everywhere else, and in
 // every independent measurement, L is 0.5 + 0.1 |x - 5|. Independent measurements
 // also record their seeds and uses.

@@ -295,5 +295,68 @@ TEST(PlannedStart, StartsTheSearchWhereTheDesksTargetHolds) {
     EXPECT_LT(drawnMet, 4);  // or this test could not fail
 }
 
+OptimizerResult plannedRun(const Scene& scene, int plans, int iterations = 1) {
+    MeasureOptions measure;
+    measure.pathsPerPoint = 64, measure.seed = 2;
+    const test::SceneLab lab(scene);
+    PathTracedLighting lighting(scene, &*lab.daylight, measure);
+    lighting.setSelectionPaths(256);
+    OptimizerOptions options = optimizerOptions(scene);
+    options.plans = plans;
+    options.iterations = iterations;
+    return Optimizer(scene, options, &lighting).run();
+}
+
+const Candidate* plannedCandidate(const OptimizerResult& r) {
+    for (const Candidate& c : r.candidates)
+        if (c.iteration == 0 && c.independent) return &c;
+    return nullptr;
+}
+
+// The start is the plan whose look reads the lowest C, and stays a candidate with that
+// look: the first plan is the same with one plan or four, so four never read higher.
+TEST(PlannedStart, ChoosesThePlanItsLookReadsLowestAndKeepsIt) {
+    for (uint64_t seed = 1; seed <= 3; ++seed) {
+        const Scene scene = deskScene(2000, seed);
+        const OptimizerResult one = plannedRun(scene, 1, 40), four = plannedRun(scene, 4, 40);
+        ASSERT_TRUE(one.planned && four.planned);
+        const Candidate *a = plannedCandidate(one), *b = plannedCandidate(four);
+        ASSERT_TRUE(a && b) << "seed " << seed;
+        EXPECT_LE(b->independent->cost, a->independent->cost) << "seed " << seed;
+        EXPECT_EQ(plannedRun(scene, 4, 40).best.placements[0].position, four.best.placements[0].position);  // seeded
+    }
+    Scene scene = deskScene(2000, 1);
+    OptimizerOptions options = optimizerOptions(scene);
+    options.plans = 0;
+    EXPECT_THROW(Optimizer(scene, options, nullptr), std::invalid_argument);
+}
+
+// A plan whose look meets every goal with the margin confirms the start: the run stops
+// there, at iteration 0, after that one confirmation.
+TEST(PlannedStart, ALookThatMeetsEveryGoalEndsTheRunAtItsStart) {
+    OptimizerSettings settings;
+    settings.iterations = 500;
+    settings.seed = 3;
+    settings.planIterations = 2000;
+    const Scene scene = windowRoom()
+                            .entity("desk", {3, 3, 0})
+                            .region({1, 0.6}, {5, 3.4}, {0, 90})
+                            .part({1.2, 0.6, 0.72}, "wood", Vec3(0, 0, 0.36))
+                            .sampler("desk.task", planarSampler({0, 0, 0.75}, {0, 0, 1}, {0, 1, 0}, {1, 0.5}, {3, 2}), 300, 500)
+                            .end()
+                            .lightingWeight(1)
+                            .optimizer(settings)
+                            .build();
+    const OptimizerResult r = plannedRun(scene, 8, 500);
+    ASSERT_TRUE(r.planned);
+    EXPECT_EQ(r.stop, StopReason::ZeroCost);
+    EXPECT_EQ(r.iterations, 0);
+    EXPECT_EQ(r.confirmations, 1);
+    EXPECT_EQ(r.bestEvaluation.cost, 0);
+    const double lux = r.bestEvaluation.samplers.samplers[0].value;
+    EXPECT_GT(lux, 300);
+    EXPECT_LT(lux, 500);
+}
+
 }  // namespace
 }  // namespace luxplan

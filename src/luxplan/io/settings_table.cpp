@@ -175,6 +175,10 @@ const std::vector<SettingKey>& settingKeys() {
          "the planned start: proposals of a chain on the desks' illuminance in the room without its furniture and the "
          "exact rules, no light traced, whose best is where the search starts (from uniform draws only); 0: the drawn start",
          intKey("plan_iterations", &S::planIterations, Range::closed(0, 1000000))},
+        {"plans", "whole number", rangeText(Range::closed(1, 64)), "8", "optimize",
+         "plans of the planned start, each corrected by a traced look; the start is the one whose independent measurement "
+         "reads the lowest C, and one that meets every goal ends the planning",
+         intKey("plans", &S::plans, Range::closed(1, 64))},
         {"suggestions", "whole number", rangeText(Range::closed(0, 50)), "0", "optimize",
          "distinct layouts written beside the result (optimize --suggestions)",
          intKey("suggestions", &S::suggestions, Range::closed(0, 50))},

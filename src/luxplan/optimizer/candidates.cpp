@@ -27,7 +27,8 @@ void Candidates::offer(const Layout& layout, const Evaluation& evaluation, int i
     if (evaluation.rejected) return;
     auto byCost = [](const Candidate& c, double cost) { return c.search.cost <= cost; };
     for (auto it = kept_.begin(); it != kept_.end(); ++it) {
-        if (!sameCandidate(*scene_, it->layout, layout, separation_)) continue;
+        // One kept by keep() stays whatever comes: its measurement is what it is kept for.
+        if (it->independent || !sameCandidate(*scene_, it->layout, layout, separation_)) continue;
         if (evaluation.cost >= it->search.cost) return;
         kept_.erase(it);
         break;

@@ -30,8 +30,9 @@ bool sameCandidate(const Scene& scene, const Layout& a, const Layout& b, const C
 class Candidates {
 public:
     Candidates(const Scene& scene, int capacity, CandidateSeparation separation);
-    // A feasible layout the chain reached: kept if it beats the candidate it is the
-    // same as, or, being new, the worst one (or there is room).
+    // A feasible layout the chain reached: kept if it beats the offered candidate it is
+    // the same as, or, being new, the worst one (or there is room). Those kept by keep()
+    // are never replaced.
     void offer(const Layout& layout, const Evaluation& evaluation, int iteration);
     // A candidate that must be kept whatever its rank (a measured confirmation: the run
     // may stop on it), beyond the capacity if need be; it takes the place of the one

@@ -14,6 +14,7 @@
 // count as met here, in L's denominator all the same.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <vector>
 
@@ -61,6 +62,8 @@ public:
     // most a factor kMaxCorrection either way: what the furniture adds or takes (a desk's
     // own shadows), as far as one layout can tell it.
     void correct(const Layout& layout, const std::vector<Transform>& world, const std::vector<SamplerResult>& traced);
+    // Back to the uncorrected surrogate (every scale 1): the next plan's own look corrects it.
+    void clearCorrection() { std::fill(factor_.begin(), factor_.end(), 1.0); }
 
     // Eq. 3's L for `layout`, whose world transforms are `world`: the stood-in samplers
     // read from the fields and the tables, their bands narrowed by a tenth of their

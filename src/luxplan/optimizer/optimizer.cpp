@@ -25,6 +25,8 @@ constexpr uint64_t kSelectionStream = 1, kReportStream = 2;
 // The noise floor follows the last ~64 lighting evaluations.
 constexpr double kNoiseMemory = 1.0 / 64;
 constexpr uint64_t kPolishStream = 4, kPlanStream = 5;
+// The plans' traced looks: independent measurements, apart from the selection's and the report's.
+constexpr uint64_t kLookStream = 3;
 // The light surrogate's cells (m): a desk's task grid spans several.
 constexpr double kSurrogateCell = 0.25;
 // The polish's step scales, times MoveOptions::sigmaFraction: 5%, 1% and 0.25% of a
@@ -65,6 +67,7 @@ OptimizerOptions optimizerOptions(const OptimizerSettings& s) {
     o.restartTemperature = s.temperatureStart / 5;
     o.guidedMoves = s.guided;
     o.planIterations = s.planIterations;
+    o.plans = s.plans;
     o.suggestions = s.suggestions;
     o.marginZ = s.margin;
     o.adaptiveShare = s.adaptiveShare;
@@ -97,6 +100,7 @@ Optimizer::Optimizer(const Scene& scene, OptimizerOptions options, LightingEvalu
     check(options_.restartTemperature > 0, "restart temperature must be > 0");
     check(options_.suggestions >= 0, "suggestions must be >= 0");
     check(options_.planIterations >= 0 && options_.planPaths >= 1, "plan iterations must be >= 0 and plan paths >= 1");
+    check(options_.plans >= 1, "plans must be >= 1");
     check(options_.start != StartFrom::Given ||
               (options_.startLayout && options_.startLayout->placements.size() == scene.entities.size()),
           "a given start needs a layout of every entity");
@@ -313,7 +317,7 @@ double Optimizer::temperature() const {
     return std::max(t, std::sqrt(noiseVariance_));
 }
 
-void Optimizer::initialize(const std::function<void(int drawn, int most)>& drawing) {
+void Optimizer::initialize(const std::function<void(int drawn, int most)>& drawing, const std::atomic<bool>* cancel) {
     using Clock = std::chrono::steady_clock;
     const auto started = Clock::now();
     auto lastHeard = started;
@@ -358,7 +362,8 @@ void Optimizer::initialize(const std::function<void(int drawn, int most)>& drawi
         }
     }
     planned_ = false;
-    if (options_.start == StartFrom::Uniform && surrogate_ && !levels_.empty()) start = plannedStart(std::move(start));
+    planLook_.reset();
+    if (options_.start == StartFrom::Uniform && surrogate_ && !levels_.empty()) start = plannedStart(std::move(start), cancel);
     // A plan is refined, not left: its first cycle starts cold, at the schedule's end
     // (the noise floor then sets the temperature); the later cycles warm again as ever.
     if (planned_) cycleStartT_ = options_.schedule.end;
@@ -378,6 +383,20 @@ void Optimizer::initialize(const std::function<void(int drawn, int most)>& drawi
     yieldGain_ = {}, yieldPaths_ = {}, yieldCount_ = {};
     candidates_.clear();
     candidates_.offer(current_, currentEval_, 0);
+    // The plan chosen by its look stays a candidate with that measurement: the traced
+    // chain's estimates are lower by luck (the winner's curse), and it must not lose
+    // the plan to them.
+    startConfirmed_ = false;
+    if (planLook_ && !currentEval_.rejected) {
+        candidates_.keep(Candidate{current_, currentEval_, planLook_, 0});
+        // A look that meets every goal is a confirmation of the start, held to the
+        // same standard as one of the chain's zeros (confirmBest).
+        if (options_.stopAtZeroCost && planLook_->geometry == 0 && planLook_->lighting == 0) {
+            const Evaluation asBest = asConfirmed(currentEval_, *planLook_);
+            ++confirmations_;
+            if (asBest.cost == 0) bestEval_ = currentEval_ = asBest, startConfirmed_ = true;
+        }
+    }
     suggestions_.clear();
     suggestions_.offer(current_, currentEval_, 0);
     trace_.clear();
@@ -386,7 +405,7 @@ void Optimizer::initialize(const std::function<void(int drawn, int most)>& drawi
     startSeconds_ = std::chrono::duration<double>(Clock::now() - started).count();
 }
 
-Layout Optimizer::plannedStart(Layout start) {
+Layout Optimizer::plannedStart(Layout start, const std::atomic<bool>* cancel) {
     if (!surrogate_->ready()) {
         // The room without its furniture, traced once for every run of this optimizer.
         const uint64_t seed = hashValues({options_.seed, kStreamTag, kPlanStream});
@@ -439,14 +458,19 @@ Layout Optimizer::plannedStart(Layout start) {
         return false;
     };
     // A chain of `n` proposals from `from` at the schedule's temperatures from proposal
-    // `skip` of skip + n on: its best feasible layout and cost (kInf: never feasible).
+    // `skip` of skip + n on: its best feasible layout, its stand-in cost (kInf: never
+    // feasible) and G there.
+    struct Planned {
+        Layout layout;
+        double cost = kInf, geometry = 0;
+    };
     auto chain = [&](Layout from, int n, int skip) {
         std::vector<Transform> world = worldTransforms(*scene_, from);
         const GeometryResult g = geometry_.evaluate(world);
         geometry_.commit();
         bool feasible = !g.rejected;
         double violation = g.violation, cost = feasible ? costOf(from, world, g.cost) : kInf;
-        std::pair<Layout, double> best{from, cost};
+        Planned best{from, cost, g.cost};
         for (int i = 0; i < n; ++i) {
             const double t = options_.schedule.temperature(skip + i, skip + n);
             const MoveSet& moves = levels_[levels_.size() == 1 ? 0 : rng.uniformInt(uint32_t(levels_.size()))];
@@ -473,26 +497,76 @@ Layout Optimizer::plannedStart(Layout start) {
             from = std::move(proposed);
             feasible = feasible || !pg.rejected;
             violation = pg.violation, cost = proposedCost;
-            if (feasible && cost < best.second) best = {from, cost};
+            if (feasible && cost < best.cost) best = {from, cost, pg.cost};
         }
         return best;
     };
+    // A traced look at a plan: the light measured independently of the search's random
+    // numbers (the selection's paths), every plan's look with the same ones, so that
+    // their differences owe little to noise.
+    auto look = [&](const Planned& plan) {
+        Evaluation e;
+        e.geometry = plan.geometry;
+        e.lighting = lighting_->measureIndependently(plan.layout, worldTransforms(*scene_, plan.layout), &e.samplers,
+                                                     independentSeed(kLookStream), IndependentUse::Selection);
+        lighting_->revert();
+        e.lightingEvaluated = true;
+        e.costError = costError(e);
+        e.cost = scene_->objective.cost(e.lighting, e.geometry);
+        return e;
+    };
+    // Several plans, each from the drawn start on its own stretch of the plan's random
+    // stream. Each is looked at once, its surrogate scaled by what the look read (the
+    // furniture's own shadows on a desk, what the other pieces add to a screen), and its
+    // last quarter runs again; the refined plan is looked at too. The start is the plan
+    // whose look reads the lowest C: the surrogate's error is as large as the differences
+    // between arrangements, the looks' is not. A look that meets every goal as the
+    // run's stop reads it ends the planning.
     const int n = options_.planIterations;
-    auto [best, bestCost] = chain(std::move(start), n, 0);
-    if (!std::isfinite(bestCost)) return best;  // never feasible: the chain repairs it
-    planned_ = true;
-    // One traced look at the plan: each stood-in sampler's surrogate is scaled by what
-    // the light traced there says of it (the furniture's own shadows on a desk, what the
-    // other pieces add to a screen), and the plan's last quarter runs again from its best.
-    LightingBreakdown seen;
-    lighting_->evaluate(best, worldTransforms(*scene_, best), &seen);
-    lighting_->revert();
-    if (seen.samplers.size() == scene_->samplers.size()) {
-        surrogate_->correct(best, worldTransforms(*scene_, best), seen.samplers);
+    Planned chosen;
+    Evaluation chosenLook;
+    // Ranked by the look's C, then (several at 0) by its C under the search's margin:
+    // the one further inside its bands.
+    auto margined = [&](const Evaluation& e) {
+        if (e.samplers.samplers.size() != scene_->samplers.size()) return e.cost;
+        return scene_->objective.cost(lightingCostOfResults(*scene_, e.samplers.samplers, options_.marginZ), e.geometry);
+    };
+    double chosenMargined = kInf;
+    auto consider = [&](const Planned& plan, const Evaluation& e) {
+        // Solved as the run's stop would read it (initialize(), confirmBest()): the look
+        // with the margin, its errors widened by how far the search's estimate reads.
+        if (e.geometry == 0 && e.lighting == 0 && e.samplers.samplers.size() == scene_->samplers.size()) {
+            Evaluation search = e;
+            search.lighting = lighting_->evaluate(plan.layout, worldTransforms(*scene_, plan.layout), &search.samplers);
+            lighting_->revert();
+            if (asConfirmed(search, e).cost == 0) {
+                chosen = plan, chosenLook = e;
+                return true;
+            }
+        }
+        const double m = margined(e);
+        if (chosen.cost == kInf || e.cost < chosenLook.cost || (e.cost == chosenLook.cost && m < chosenMargined))
+            chosen = plan, chosenLook = e, chosenMargined = m;
+        return false;
+    };
+    for (int plan = 0; plan < options_.plans; ++plan) {
+        if (plan > 0 && cancel && cancel->load(std::memory_order_relaxed)) break;
+        surrogate_->clearCorrection();
+        Planned best = chain(start, n, 0);
+        if (!std::isfinite(best.cost)) continue;  // never feasible
+        const Evaluation seen = look(best);
+        if (consider(best, seen)) break;
+        if (seen.samplers.samplers.size() != scene_->samplers.size()) continue;
+        surrogate_->correct(best.layout, worldTransforms(*scene_, best.layout), seen.samplers.samplers);
         const int quarter = n / 4;
-        auto refined = chain(best, quarter, n - quarter);
-        if (refined.second < kInf) best = std::move(refined.first);
+        Planned refined = chain(best.layout, quarter, n - quarter);
+        if (!std::isfinite(refined.cost)) continue;
+        if (consider(refined, look(refined))) break;
     }
+    if (!std::isfinite(chosen.cost)) return start;  // never feasible: the chain repairs it
+    planned_ = true;
+    planLook_ = chosenLook;
+    const Layout best = std::move(chosen.layout);
     // The rules' cache stands at the chain's last layout: the caller evaluates `best` from there.
     return best;
 }
@@ -783,7 +857,6 @@ Evaluation Optimizer::confirmBest() {
     // independently of the search's random numbers.
     ++confirmations_;
     ++independentMeasurements_;
-    const Evaluation bestSearch = bestEval_;
     Evaluation confirmed = bestEval_;
     confirmed.lighting = lighting_->measureIndependently(best_, worldTransforms(*scene_, best_), &confirmed.samplers,
                                                          independentSeed(kSelectionStream), IndependentUse::Selection);
@@ -792,6 +865,10 @@ Evaluation Optimizer::confirmBest() {
     // Kept among the candidates with its measurement, even past their capacity: the
     // run may stop on it, and the result must be chosen among what it stopped on.
     candidates_.keep(Candidate{best_, bestEval_, confirmed, bestIteration_});
+    return asConfirmed(bestEval_, confirmed);
+}
+
+Evaluation Optimizer::asConfirmed(const Evaluation& search, const Evaluation& confirmed) const {
     // The best's cost from here: the confirmation's, with the search's margin (a
     // layout at a band's edge is met in one measurement in two: not a zero to stop on).
     // The margin's error is the larger of the confirmation's own and what the two
@@ -801,10 +878,10 @@ Evaluation Optimizer::confirmBest() {
     Evaluation asBest = confirmed;
     if (confirmed.samplers.samplers.size() == scene_->samplers.size()) {
         std::vector<SamplerResult> spread = confirmed.samplers.samplers;
-        const auto& search = bestSearch.samplers.samplers;
-        for (size_t k = 0; k < spread.size() && search.size() == spread.size(); ++k)
+        const auto& estimated = search.samplers.samplers;
+        for (size_t k = 0; k < spread.size() && estimated.size() == spread.size(); ++k)
             spread[k].standardError =
-                std::max(spread[k].standardError, std::abs(spread[k].value - search[k].value) / std::sqrt(2.0));
+                std::max(spread[k].standardError, std::abs(spread[k].value - estimated[k].value) / std::sqrt(2.0));
         asBest.lighting = lightingCostOfResults(*scene_, spread, options_.marginZ);
         asBest.cost = scene_->objective.cost(asBest.lighting, asBest.geometry);
     }
@@ -848,7 +925,7 @@ OptimizerResult Optimizer::run(const ProgressCallback& progress, const std::atom
         reported = iteration_;
         progress(progressNow(seconds(), first));
     };
-    int confirmedZeroAt = -1;  // the best iteration whose zero cost a confirmation held
+    int confirmedZeroAt = startConfirmed_ && iteration_ == 0 ? 0 : -1;  // the best iteration whose zero a confirmation held
 
     // Best-so-far snapshots at the checkpoints still ahead, and where the run stops.
     std::vector<Snapshot> snapshots;

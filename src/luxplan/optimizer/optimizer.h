@@ -134,10 +134,14 @@ struct OptimizerOptions {
     // on the light surrogate (optimizer/light_surrogate.h: the desks' illuminance read
     // from the room without its furniture, the screens' glare from pose tables) and the
     // exact rules, cooling on the schedule, no light traced; one traced look at its best
-    // corrects the surrogate and its last quarter runs again. Its best is where the
-    // traced chain starts, its first cycle cold (at the schedule's end: the noise floor
-    // sets the temperature). 0: off (the paper's start).
+    // (measured independently, at the selection's paths) corrects the surrogate and its
+    // last quarter runs again, looked at too. Of `plans` such plans, the one whose look
+    // reads the lowest C is where the traced chain starts, its first cycle cold (at the
+    // schedule's end: the noise floor sets the temperature), and stays a candidate with
+    // that look; a look that meets every goal with the margin ends the planning.
+    // planIterations 0: off (the paper's start).
     int planIterations = 20000;
+    int plans = 8;
     int planPaths = 64;       // per cell of the surrogate's fields
     int planTablePaths = 32;  // per point or stratum of a pose table's samplers, at each pose
     // StartFrom::Given's layout (optimize --start): every movable entity placed.
@@ -263,7 +267,8 @@ public:
     // second call starts the same chain again. Called by run() when not called before.
     // `drawing` hears of the uniform start's draws (how many so far, of at most how
     // many) while none passes the geometric rules, about twice a second.
-    void initialize(const std::function<void(int drawn, int most)>& drawing = {});
+    // `cancel` ends the planned start between its plans.
+    void initialize(const std::function<void(int drawn, int most)>& drawing = {}, const std::atomic<bool>* cancel = nullptr);
     // One proposal at the level the hierarchy schedule gives, then the Metropolis test.
     void step();
     // Runs to the iteration limit, C = 0 or cancellation (checked before every
@@ -305,7 +310,7 @@ private:
     double differenceVariance(const Evaluation& a, const Evaluation& b) const;
     void noteNoise(const Evaluation& proposed);
     // The polish: from the best layout, zero temperature, fine steps (OptimizerOptions::polishShare).
-    Layout plannedStart(Layout start);
+    Layout plannedStart(Layout start, const std::atomic<bool>* cancel);
     void startPolish();
     // The polish's level of statistics (added on first use).
     LevelStats& polishLevel();
@@ -341,6 +346,9 @@ private:
     // The best layout measured again independently, kept among the candidates: its cost
     // from here, with the search's margin.
     Evaluation confirmBest();
+    // An independent measurement of a layout as the stop reads it: its cost under the
+    // search's margin, each error at least what the search's estimate and it differ by.
+    Evaluation asConfirmed(const Evaluation& search, const Evaluation& confirmed) const;
     // The run's result once it stopped (all but its seconds).
     OptimizerResult resultOf(StopReason stop, std::vector<Snapshot> snapshots);
     // The result: the candidates measured independently, the best of them measured again.
@@ -358,6 +366,8 @@ private:
     GeometryEvaluator geometry_;
     std::unique_ptr<LightSurrogate> surrogate_;  // the planned start's (null: none)
     bool planned_ = false;                        // this run's chain started from a plan
+    std::optional<Evaluation> planLook_;          // the chosen plan's traced look (an independent measurement)
+    bool startConfirmed_ = false;                 // that look confirmed the start's zero: the run is solved
     std::unique_ptr<LightMap> lightMap_;  // OptimizerOptions::guidedMoves (null: off or nothing to map)
     std::vector<MoveSet> levels_;
     // Nesting: per top-level entity, the index of its members' move set in focusSets_

@@ -71,6 +71,7 @@ struct SearchSettings {
     double restartShare = 0.3;       // the schedule's cycles, each later one from the polished best
     bool guided = true;              // the guided move from the light map (optimizer/light_map.h)
     int planIterations = 20000;      // the planned start's proposals on the light surrogate; 0: none
+    int plans = 8;                   // the planned start's plans, the best by a traced look
     int suggestions = 0;             // distinct layouts written beside the result (optimize --suggestions)
     double margin = 2;               // the search's margin inside every lighting band, in standard errors
     bool adaptiveShare = true;       // the object level's share by what the levels' proposals yield
