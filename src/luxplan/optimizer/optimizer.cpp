@@ -527,10 +527,6 @@ Layout Optimizer::plannedStart(Layout start, const std::atomic<bool>* cancel) {
     Evaluation chosenLook;
     // Ranked by the look's C, then (several at 0) by its C under the search's margin:
     // the one further inside its bands.
-    auto margined = [&](const Evaluation& e) {
-        if (e.samplers.samplers.size() != scene_->samplers.size()) return e.cost;
-        return scene_->objective.cost(lightingCostOfResults(*scene_, e.samplers.samplers, options_.marginZ), e.geometry);
-    };
     double chosenMargined = kInf;
     auto consider = [&](const Planned& plan, const Evaluation& e) {
         // Solved as the run's stop would read it (initialize(), confirmBest()): the look
@@ -544,7 +540,7 @@ Layout Optimizer::plannedStart(Layout start, const std::atomic<bool>* cancel) {
                 return true;
             }
         }
-        const double m = margined(e);
+        const double m = costUnderMargin(e);
         if (chosen.cost == kInf || e.cost < chosenLook.cost || (e.cost == chosenLook.cost && m < chosenMargined))
             chosen = plan, chosenLook = e, chosenMargined = m;
         return false;
@@ -566,9 +562,8 @@ Layout Optimizer::plannedStart(Layout start, const std::atomic<bool>* cancel) {
     if (!std::isfinite(chosen.cost)) return start;  // never feasible: the chain repairs it
     planned_ = true;
     planLook_ = chosenLook;
-    const Layout best = std::move(chosen.layout);
-    // The rules' cache stands at the chain's last layout: the caller evaluates `best` from there.
-    return best;
+    // The rules' cache stands at the chain's last layout: the caller evaluates the plan from there.
+    return chosen.layout;
 }
 
 namespace {
@@ -868,6 +863,11 @@ Evaluation Optimizer::confirmBest() {
     return asConfirmed(bestEval_, confirmed);
 }
 
+double Optimizer::costUnderMargin(const Evaluation& e) const {
+    if (e.samplers.samplers.size() != scene_->samplers.size()) return e.cost;
+    return scene_->objective.cost(lightingCostOfResults(*scene_, e.samplers.samplers, options_.marginZ), e.geometry);
+}
+
 Evaluation Optimizer::asConfirmed(const Evaluation& search, const Evaluation& confirmed) const {
     // The best's cost from here: the confirmation's, with the search's margin (a
     // layout at a band's edge is met in one measurement in two: not a zero to stop on).
@@ -1074,14 +1074,10 @@ void Optimizer::chooseResult(OptimizerResult& r) {
         // Between equal costs (several at 0), the one with the lower cost under the
         // search's margin: the one further inside its bands, likelier met in another
         // measurement.
-        auto withMargin = [&](const Evaluation& e) {
-            if (e.samplers.samplers.size() != scene_->samplers.size()) return e.cost;
-            return scene_->objective.cost(lightingCostOfResults(*scene_, e.samplers.samplers, options_.marginZ), e.geometry);
-        };
         std::vector<double> margined(all.size());
         for (size_t i = 0; i < all.size(); ++i) {
             if (!all[i].independent) all[i].independent = measure(all[i].layout, all[i].search, kSelectionStream);
-            margined[i] = withMargin(*all[i].independent);
+            margined[i] = costUnderMargin(*all[i].independent);
             const double c = all[i].independent->cost, best = all[chosen].independent->cost;
             if (c < best || (c == best && margined[i] < margined[chosen])) chosen = i;
         }

@@ -349,6 +349,9 @@ private:
     // An independent measurement of a layout as the stop reads it: its cost under the
     // search's margin, each error at least what the search's estimate and it differ by.
     Evaluation asConfirmed(const Evaluation& search, const Evaluation& confirmed) const;
+    // C with every lighting band narrowed by the search's margin (options_.marginZ errors):
+    // between equal costs, the layout further inside its bands.
+    double costUnderMargin(const Evaluation& e) const;
     // The run's result once it stopped (all but its seconds).
     OptimizerResult resultOf(StopReason stop, std::vector<Snapshot> snapshots);
     // The result: the candidates measured independently, the best of them measured again.
