@@ -126,7 +126,7 @@ api::OptimizeHooks progressHooks(bool quiet) {
     hooks.cancel = &interrupted;
     if (quiet) return hooks;
     struct State {
-        bool tty = isatty(STDERR_FILENO), drew = false, feasibleSeen = false;
+        bool tty = isatty(STDERR_FILENO), drew = false, planned = false, feasibleSeen = false;
         std::chrono::steady_clock::time_point lastLine = std::chrono::steady_clock::now();
     };
     auto state = std::make_shared<State>();
@@ -139,6 +139,15 @@ api::OptimizeHooks progressHooks(bool quiet) {
         std::cerr << (state->tty ? "\r" : "") << "drawing a start layout: " << drawn << " of at most " << most
                   << " draws, none within the geometric rules' hard limits yet" << (state->tty ? "\033[K" : "\n")
                   << std::flush;
+    };
+    hooks.planning = [state](int looked, int plans, double lowestC) {
+        // The plans take seconds before the first proposal (about one a second on 2 threads).
+        if (!state->tty && state->drew && std::chrono::steady_clock::now() - state->lastLine < std::chrono::seconds(5)) return;
+        if (state->drew && state->tty && !state->planned) std::cerr << "\n";  // after the draws' line
+        state->lastLine = std::chrono::steady_clock::now();
+        state->drew = state->planned = true;
+        std::cerr << (state->tty ? "\r" : "") << "planning the start: " << looked << " of " << plans
+                  << " plans looked at, the lowest C " << lowestC << (state->tty ? "\033[K" : "\n") << std::flush;
     };
     hooks.started = [state](const Optimizer& optimizer) {
         if (state->drew && state->tty) std::cerr << "\n";

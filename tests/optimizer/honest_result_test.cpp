@@ -181,6 +181,35 @@ TEST(HonestResult, AConfirmedZeroIsTheResultEvenPastTheCandidatesCapacity) {
     EXPECT_LE(r.candidates.size(), size_t(o.candidates + r.confirmations));
 }
 
+// ManyZeros, recording where each selection measurement was taken.
+class ManyZerosCounted : public ManyZeros {
+public:
+    double measureIndependently(const Layout& l, const std::vector<Transform>& world, LightingBreakdown* out, uint64_t seed,
+                                IndependentUse use) override {
+        if (use == IndependentUse::Selection) measured.push_back(std::lround(world[0].t.x));
+        return ManyZeros::measureIndependently(l, world, out, seed, use);
+    }
+    std::vector<long> measured;
+};
+
+TEST(HonestResult, ARefutedZeroIsNotMeasuredAgain) {
+    const Scene s = slots();
+    OptimizerOptions o;
+    o.iterations = 5000;
+    o.start = StartFrom::Scene;
+    ManyZerosCounted light;
+    OptimizerResult r = Optimizer(s, o, &light).run();
+    ASSERT_EQ(r.stop, StopReason::ZeroCost);
+    EXPECT_DOUBLE_EQ(r.best.placements[0].position.x, 6);
+    // The chain comes back to slots it was told read 0.3: it borrows that, and no slot
+    // is confirmed twice (the confirmations come first; the final selection after).
+    EXPECT_GT(r.borrowedRefutations, 0);
+    ASSERT_GE(light.measured.size(), size_t(r.confirmations));
+    const std::set<long> confirmed(light.measured.begin(), light.measured.begin() + r.confirmations);
+    EXPECT_EQ(confirmed.size(), size_t(r.confirmations));
+    EXPECT_EQ(light.measured[size_t(r.confirmations) - 1], 6);
+}
+
 TEST(Candidates, KeptConfirmationsComeOnTopOfTheCapacity) {
     const Scene s = slots();
     Candidates c(s, 2, CandidateSeparation{0.1, 10});

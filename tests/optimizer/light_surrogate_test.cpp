@@ -3,7 +3,9 @@
 // room and a pose alone in it against scenes built without the furniture, and the
 // chain's start against the drawn one.
 #include <gtest/gtest.h>
+#include <tbb/global_control.h>
 
+#include <array>
 #include <cmath>
 
 #include <luxplan/constraints/penalty.h>
@@ -201,12 +203,13 @@ TEST(LightSurrogate, TablesTheScreensEyesByTheirWorkstationsPose) {
     std::vector<SamplerResult> traced(scene.samplers.size());
     traced[size_t(eye2)].value = 0.5 * 170;
     traced[size_t(eyeOf(scene, "ws1"))].value = 10 * v1;
-    surrogate.correct(layout, world, traced);
-    EXPECT_NEAR(surrogate.value(eye2, layout, world), 85, 1e-9);
-    EXPECT_NEAR(surrogate.value(eyeOf(scene, "ws1"), layout, world), 2 * v1, 1e-9);
+    const LightSurrogate::Correction correction = surrogate.correction(layout, world, traced);
+    EXPECT_NEAR(surrogate.value(eye2, layout, world, correction), 85, 1e-9);
+    EXPECT_NEAR(surrogate.value(eyeOf(scene, "ws1"), layout, world, correction), 2 * v1, 1e-9);
+    EXPECT_NEAR(surrogate.value(eye2, layout, world), 170, 1e-9);  // a value: the surrogate itself unchanged
     layout.placements[size_t(ws2)].position = {2.25, 1.7, 0};
-    EXPECT_NEAR(surrogate.value(eye2, layout, world), 0.5 * (67.5 + 34), 1e-9);  // everywhere
-    EXPECT_THROW(surrogate.correct(layout, world, {}), std::invalid_argument);
+    EXPECT_NEAR(surrogate.value(eye2, layout, world, correction), 0.5 * (67.5 + 34), 1e-9);  // everywhere
+    EXPECT_THROW(surrogate.correction(layout, world, {}), std::invalid_argument);
     // An evaluator that cannot trace the tables: their samplers count as met.
     surrogate.setPoseValues({});
     EXPECT_FALSE(surrogate.hasPoseTables());
@@ -295,7 +298,7 @@ TEST(PlannedStart, StartsTheSearchWhereTheDesksTargetHolds) {
     EXPECT_LT(drawnMet, 4);  // or this test could not fail
 }
 
-OptimizerResult plannedRun(const Scene& scene, int plans, int iterations = 1) {
+OptimizerResult plannedRun(const Scene& scene, int plans, int iterations = 1, const StartProgress& progress = {}) {
     MeasureOptions measure;
     measure.pathsPerPoint = 64, measure.seed = 2;
     const test::SceneLab lab(scene);
@@ -304,7 +307,9 @@ OptimizerResult plannedRun(const Scene& scene, int plans, int iterations = 1) {
     OptimizerOptions options = optimizerOptions(scene);
     options.plans = plans;
     options.iterations = iterations;
-    return Optimizer(scene, options, &lighting).run();
+    Optimizer optimizer(scene, options, &lighting);
+    optimizer.initialize(progress);
+    return optimizer.run();
 }
 
 const Candidate* plannedCandidate(const OptimizerResult& r) {
@@ -329,6 +334,45 @@ TEST(PlannedStart, ChoosesThePlanItsLookReadsLowestAndKeepsIt) {
     OptimizerOptions options = optimizerOptions(scene);
     options.plans = 0;
     EXPECT_THROW(Optimizer(scene, options, nullptr), std::invalid_argument);
+}
+
+// The plans run two at a time, each on its own random stream: one thread or two give
+// the same plan, its look and the same run.
+TEST(PlannedStart, TheSamePlanOnAnyThreadCount) {
+    const Scene scene = deskScene(2000, 2);
+    OptimizerResult one, two;
+    {
+        tbb::global_control only(tbb::global_control::max_allowed_parallelism, 1);
+        one = plannedRun(scene, 3, 40);
+    }
+    {
+        tbb::global_control both(tbb::global_control::max_allowed_parallelism, 2);
+        two = plannedRun(scene, 3, 40);
+    }
+    ASSERT_TRUE(one.planned && two.planned);
+    const Candidate *a = plannedCandidate(one), *b = plannedCandidate(two);
+    ASSERT_TRUE(a && b);
+    EXPECT_EQ(a->layout.placements[0].position, b->layout.placements[0].position);
+    EXPECT_EQ(a->layout.placements[0].rotationDeg, b->layout.placements[0].rotationDeg);
+    EXPECT_EQ(a->independent->cost, b->independent->cost);
+    EXPECT_EQ(one.best.placements[0].position, two.best.placements[0].position);
+}
+
+// initialize() tells the plans looked at after each pair, and the lowest C so far.
+TEST(PlannedStart, TellsThePlansAsTheyAreLookedAt) {
+    Scene scene = deskScene(2000, 2);
+    scene.samplers[0].targetMin = 5000, scene.samplers[0].targetMax = 6000;  // out of reach: no look ends the planning
+    std::vector<std::array<double, 3>> heard;
+    const OptimizerResult r =
+        plannedRun(scene, 3, 1, {{}, [&](int looked, int plans, double c) { heard.push_back({double(looked), double(plans), c}); }});
+    ASSERT_EQ(heard.size(), 2u);
+    EXPECT_EQ(heard[0][0], 2);
+    EXPECT_EQ(heard[1][0], 3);
+    EXPECT_EQ(heard[1][1], 3);
+    EXPECT_LE(heard[1][2], heard[0][2]);
+    const Candidate* start = plannedCandidate(r);
+    ASSERT_TRUE(start);
+    EXPECT_EQ(heard[1][2], start->independent->cost);
 }
 
 // A plan whose look meets every goal with the margin confirms the start: the run stops

@@ -126,7 +126,7 @@ std::unique_ptr<OptimizeRun> optimize(Scene original, const OptimizeRequest& req
 
     // With lighting weight 0 the chain never calls it, but the result's report does.
     Optimizer optimizer(scene, options, run->lighting.get());
-    optimizer.initialize(hooks.drawing, hooks.cancel);
+    optimizer.initialize({hooks.drawing, hooks.planning}, hooks.cancel);
     run->start = optimizer.current();  // the comparison picture's left side
     if (hooks.started) hooks.started(optimizer);
     run->result = optimizer.run(hooks.progress, hooks.cancel);

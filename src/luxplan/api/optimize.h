@@ -44,6 +44,7 @@ struct OptimizeHooks {
     std::function<void(const std::string&)> note;     // a line for stderr that a quiet run leaves out
     std::function<DaylightEnvironment(const DaylightParams&, const Site&)> bake;  // default: buildDaylight
     std::function<void(int drawn, int most)> drawing;  // the start's draws while none passes the rules
+    std::function<void(int looked, int plans, double lowestC)> planning;  // the planned start's plans (StartProgress)
     std::function<void(const Optimizer&)> started;     // the start drawn, before the first iteration
     ProgressCallback progress;
     const std::atomic<bool>* cancel = nullptr;  // once true, the search stops with its best so far

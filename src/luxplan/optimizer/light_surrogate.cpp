@@ -101,7 +101,7 @@ std::string tableSignature(const Scene& scene, int entity, const std::vector<int
     return out.str();
 }
 
-// correct() scales a sampler by at most this factor either way: a layout's look at the
+// correction() scales a sampler by at most this factor either way: a layout's look at the
 // light corrects the surrogate, it does not replace it.
 constexpr double kMaxCorrection = 2;
 
@@ -144,8 +144,8 @@ double LightSurrogate::Field::at(Vec2 p, double cell) const {
 }
 
 LightSurrogate::LightSurrogate(const Scene& scene, double cellMetres)
-    : scene_(&scene), cell_(cellMetres), fieldOf_(scene.samplers.size(), -1), tableOf_(scene.samplers.size(), {-1, -1}),
-      factor_(scene.samplers.size(), 1.0) {
+    : scene_(&scene), cell_(cellMetres), fieldOf_(scene.samplers.size(), -1),
+      tableOf_(scene.samplers.size(), {-1, -1}) {
     if (!(cellMetres > 0)) throw std::invalid_argument("LightSurrogate: the cells' size must be above 0");
     for (const LightSamplerSpec& s : scene.samplers) termWeights_ += s.weight * double(1 + s.statistics.size() + (s.annual ? 1 : 0));
     const RoomShell* room = scene.room();
@@ -279,21 +279,24 @@ void LightSurrogate::setPoseValues(const std::vector<std::vector<std::vector<dou
     if (q != values.size()) throw std::invalid_argument("LightSurrogate::setPoseValues: one list per query");
 }
 
-double LightSurrogate::tableValue(int sampler, const Layout& layout) const {
+double LightSurrogate::tableValue(int sampler, const Layout& layout, double scale) const {
     const auto [t, slot] = tableOf_[size_t(sampler)];
     const PoseTable& table = tables_[size_t(t)];
-    return factor_[size_t(sampler)] * table.at(slot, layout.placements[size_t(table.entity)]);
+    return scale * table.at(slot, layout.placements[size_t(table.entity)]);
 }
 
-void LightSurrogate::correct(const Layout& layout, const std::vector<Transform>& world, const std::vector<SamplerResult>& traced) {
-    if (traced.size() != scene_->samplers.size()) throw std::invalid_argument("LightSurrogate::correct: one result per sampler");
+LightSurrogate::Correction LightSurrogate::correction(const Layout& layout, const std::vector<Transform>& world,
+                                                      const std::vector<SamplerResult>& traced) const {
+    if (traced.size() != scene_->samplers.size())
+        throw std::invalid_argument("LightSurrogate::correction: one result per sampler");
+    Correction scale(traced.size(), 1.0);
     for (size_t k = 0; k < traced.size(); ++k) {
         const bool table = tableOf_[k][0] >= 0 && tables_[size_t(tableOf_[k][0])].traced;
         if (fieldOf_[k] < 0 && !table) continue;
-        factor_[k] = 1;
         const double v = value(int(k), layout, world), t = traced[k].value;
-        if (v > 0 && std::isfinite(t) && t >= 0) factor_[k] = std::clamp(t / v, 1 / kMaxCorrection, kMaxCorrection);
+        if (v > 0 && std::isfinite(t) && t >= 0) scale[k] = std::clamp(t / v, 1 / kMaxCorrection, kMaxCorrection);
     }
+    return scale;
 }
 
 std::vector<Vec3> LightSurrogate::points() const {
@@ -316,34 +319,42 @@ void LightSurrogate::setIlluminance(const std::vector<double>& values) {
     ready_ = true;
 }
 
-std::vector<double> LightSurrogate::pointValues(int sampler, const std::vector<Transform>& world) const {
+std::vector<double> LightSurrogate::pointValues(int sampler, const std::vector<Transform>& world, double scale) const {
     const LightSamplerSpec& s = scene_->samplers[size_t(sampler)];
     const Field& f = fields_[size_t(fieldOf_[size_t(sampler)])];
     Vec3 normal;
     std::vector<Vec3> probes = s.type->place(world[size_t(s.entity)])->coverageProbes(normal);
     std::vector<double> values(probes.size());
-    for (size_t i = 0; i < probes.size(); ++i) values[i] = factor_[size_t(sampler)] * f.at({probes[i].x, probes[i].y}, cell_);
+    for (size_t i = 0; i < probes.size(); ++i) values[i] = scale * f.at({probes[i].x, probes[i].y}, cell_);
     return values;
 }
 
-double LightSurrogate::value(int sampler, const Layout& layout, const std::vector<Transform>& world) const {
+namespace {
+double scaleOf(const LightSurrogate::Correction& correction, int sampler) {
+    return correction.empty() ? 1.0 : correction.at(size_t(sampler));
+}
+}  // namespace
+
+double LightSurrogate::value(int sampler, const Layout& layout, const std::vector<Transform>& world,
+                             const Correction& correction) const {
     if (!ready_) throw std::logic_error("LightSurrogate::value: no illuminance yet");
     const auto [t, slot] = tableOf_.at(size_t(sampler));
-    if (t >= 0 && tables_[size_t(t)].traced) return tableValue(sampler, layout);
+    if (t >= 0 && tables_[size_t(t)].traced) return tableValue(sampler, layout, scaleOf(correction, sampler));
     if (fieldOf_.at(size_t(sampler)) < 0) throw std::logic_error("LightSurrogate::value: not a stood-in sampler");
-    const std::vector<double> v = pointValues(sampler, world);
+    const std::vector<double> v = pointValues(sampler, world, scaleOf(correction, sampler));
     double sum = 0;
     for (double x : v) sum += x;
     return v.empty() ? 0.0 : sum / double(v.size());
 }
 
-double LightSurrogate::lighting(const Layout& layout, const std::vector<Transform>& world) const {
+double LightSurrogate::lighting(const Layout& layout, const std::vector<Transform>& world,
+                                const Correction& correction) const {
     if (!ready_) throw std::logic_error("LightSurrogate::lighting: no illuminance yet");
     if (!(termWeights_ > 0)) return 0.0;
     double sum = 0;
     for (int k : standIns_) {
         SamplerResult r;
-        r.points = pointValues(k, world);
+        r.points = pointValues(k, world, scaleOf(correction, k));
         r.pointErrors.assign(r.points.size(), 0.0);
         for (double x : r.points) r.value += x;
         r.value /= double(std::max<size_t>(1, r.points.size()));
@@ -354,7 +365,7 @@ double LightSurrogate::lighting(const Layout& layout, const std::vector<Transfor
         for (size_t slot = 0; slot < table.samplers.size(); ++slot) {
             const LightSamplerSpec& s = scene_->samplers[size_t(table.samplers[slot])];
             LightingTerm t;
-            t.value = tableValue(table.samplers[slot], layout);
+            t.value = tableValue(table.samplers[slot], layout, scaleOf(correction, table.samplers[slot]));
             t.targetMin = s.targetMin, t.targetMax = s.targetMax, t.tolerance = s.tolerance;
             sum += s.weight * plannedPenalty(t);  // its mean term only: a table holds no points
         }

@@ -9,7 +9,7 @@
 // of its headings, traced once (LightingEvaluator::aloneInEmptyRoom); pieces built
 // alike share one. Where a piece stands in the room's light decides most of what its
 // samplers read; what the other furniture adds (shadows, reflections) enters as one
-// scale per sampler from a traced look (correct()). Glare surveys, statistics goals,
+// scale per sampler from a traced look (correction()). Glare surveys, statistics goals,
 // fixed points and annual goals are left to the chain, which traces them: their terms
 // count as met here, in L's denominator all the same.
 #pragma once
@@ -57,21 +57,24 @@ public:
     // workstation): the tables hold them at the scene's placement, and so must a plan.
     const std::vector<int>& heldAtScenePlacement() const { return held_; }
 
-    // Scales each stood-in sampler's values by what light traced at `layout` (`traced`,
-    // one result per Scene::samplers entry) read there over what the surrogate reads, at
-    // most a factor kMaxCorrection either way: what the furniture adds or takes (a desk's
-    // own shadows), as far as one layout can tell it.
-    void correct(const Layout& layout, const std::vector<Transform>& world, const std::vector<SamplerResult>& traced);
-    // Back to the uncorrected surrogate (every scale 1): the next plan's own look corrects it.
-    void clearCorrection() { std::fill(factor_.begin(), factor_.end(), 1.0); }
+    // One scale per sampler (Scene::samplers order) on what the surrogate reads: what the
+    // furniture adds or takes (a desk's own shadows), as far as one traced layout can tell
+    // it. Empty: every scale 1. A value, so that plans corrected apart can run at once.
+    using Correction = std::vector<double>;
+    // What light traced at `layout` (`traced`, one result per Scene::samplers entry) read
+    // over what the uncorrected surrogate reads there, each stood-in sampler's, at most a
+    // factor kMaxCorrection either way (1 for the others).
+    Correction correction(const Layout& layout, const std::vector<Transform>& world,
+                          const std::vector<SamplerResult>& traced) const;
 
     // Eq. 3's L for `layout`, whose world transforms are `world`: the stood-in samplers
-    // read from the fields and the tables, their bands narrowed by a tenth of their
-    // width at each bound above 0 (what the surrogate cannot see), every other term at
-    // penalty 0.
-    double lighting(const Layout& layout, const std::vector<Transform>& world) const;
+    // read from the fields and the tables, scaled by `correction`, their bands narrowed by
+    // a tenth of their width at each bound above 0 (what the surrogate cannot see), every
+    // other term at penalty 0.
+    double lighting(const Layout& layout, const std::vector<Transform>& world, const Correction& correction = {}) const;
     // A stood-in sampler's value (its points' mean, or its table's value) there.
-    double value(int sampler, const Layout& layout, const std::vector<Transform>& world) const;
+    double value(int sampler, const Layout& layout, const std::vector<Transform>& world,
+                 const Correction& correction = {}) const;
 
 private:
     struct Field {
@@ -96,8 +99,8 @@ private:
         double at(int samplerSlot, const Placement& p) const;
     };
     void addPoseTables();
-    std::vector<double> pointValues(int sampler, const std::vector<Transform>& world) const;
-    double tableValue(int sampler, const Layout& layout) const;
+    std::vector<double> pointValues(int sampler, const std::vector<Transform>& world, double scale) const;
+    double tableValue(int sampler, const Layout& layout, double scale) const;
 
     const Scene* scene_;
     double cell_;
@@ -105,7 +108,6 @@ private:
     std::vector<int> fieldOf_;    // per sampler: its field, -1 when not stood in for
     std::vector<PoseTable> tables_;
     std::vector<int> held_;
-    std::vector<double> factor_;  // per sampler: correct()'s scale (1: none)
     std::vector<std::array<int, 2>> tableOf_;  // per sampler: its table and slot there, or -1
     std::vector<int> standIns_;
     double termWeights_ = 0;      // L's denominator: every term's weight, every sampler's

@@ -10,6 +10,7 @@
 #include <utility>
 
 #include <luxplan/constraints/penalty.h>
+#include <luxplan/core/parallel.h>
 #include <luxplan/optimizer/placement.h>
 
 namespace luxplan {
@@ -27,6 +28,9 @@ constexpr double kNoiseMemory = 1.0 / 64;
 constexpr uint64_t kPolishStream = 4, kPlanStream = 5;
 // The plans' traced looks: independent measurements, apart from the selection's and the report's.
 constexpr uint64_t kLookStream = 3;
+// The plans that run at once (Optimizer::plannedStart): a constant, not the thread count,
+// so that a seed gives the same plan on every machine.
+constexpr int kPlansAtOnce = 2;
 // The light surrogate's cells (m): a desk's task grid spans several.
 constexpr double kSurrogateCell = 0.25;
 // The polish's step scales, times MoveOptions::sigmaFraction: 5%, 1% and 0.25% of a
@@ -317,7 +321,7 @@ double Optimizer::temperature() const {
     return std::max(t, std::sqrt(noiseVariance_));
 }
 
-void Optimizer::initialize(const std::function<void(int drawn, int most)>& drawing, const std::atomic<bool>* cancel) {
+void Optimizer::initialize(const StartProgress& progress, const std::atomic<bool>* cancel) {
     using Clock = std::chrono::steady_clock;
     const auto started = Clock::now();
     auto lastHeard = started;
@@ -355,15 +359,15 @@ void Optimizer::initialize(const std::function<void(int drawn, int most)>& drawi
             leastViolation = g.violation;
             start = std::move(candidate);
             if (!g.rejected) break;
-            if (drawing && Clock::now() - lastHeard > std::chrono::milliseconds(500)) {
-                drawing(attempt + 1, options_.startAttempts);
+            if (progress.drawing && Clock::now() - lastHeard > std::chrono::milliseconds(500)) {
+                progress.drawing(attempt + 1, options_.startAttempts);
                 lastHeard = Clock::now();
             }
         }
     }
     planned_ = false;
     planLook_.reset();
-    if (options_.start == StartFrom::Uniform && surrogate_ && !levels_.empty()) start = plannedStart(std::move(start), cancel);
+    if (options_.start == StartFrom::Uniform && surrogate_ && !levels_.empty()) start = plannedStart(std::move(start), progress, cancel);
     // A plan is refined, not left: its first cycle starts cold, at the schedule's end
     // (the noise floor then sets the temperature); the later cycles warm again as ever.
     if (planned_) cycleStartT_ = options_.schedule.end;
@@ -376,7 +380,7 @@ void Optimizer::initialize(const std::function<void(int drawn, int most)>& drawi
     best_ = current_;
     bestEval_ = currentEval_;
     feasible_ = !currentEval_.rejected;
-    iteration_ = bestIteration_ = confirmations_ = independentMeasurements_ = 0;
+    iteration_ = bestIteration_ = confirmations_ = borrowedRefutations_ = independentMeasurements_ = 0;
     lightingEvaluations_ = 0;
     innerLeft_ = 0, focus_ = -1;
     noiseVariance_ = 0, noiseCount_ = 0;
@@ -405,7 +409,7 @@ void Optimizer::initialize(const std::function<void(int drawn, int most)>& drawi
     startSeconds_ = std::chrono::duration<double>(Clock::now() - started).count();
 }
 
-Layout Optimizer::plannedStart(Layout start, const std::atomic<bool>* cancel) {
+Layout Optimizer::plannedStart(Layout start, const StartProgress& progress, const std::atomic<bool>* cancel) {
     if (!surrogate_->ready()) {
         // The room without its furniture, traced once for every run of this optimizer.
         const uint64_t seed = hashValues({options_.seed, kStreamTag, kPlanStream});
@@ -437,9 +441,9 @@ Layout Optimizer::plannedStart(Layout start, const std::atomic<bool>* cancel) {
     // Metropolis on C's stand-in, w L_surrogate + (1 - w) G, the rules exact: a rejected
     // start is repaired first, as the chain's is (step()).
     const double w = scene_->objective.lightingWeight;
-    Rng rng(hashValues({options_.seed, kStreamTag, kPlanStream}));
-    auto costOf = [&](const Layout& layout, const std::vector<Transform>& world, double g) {
-        return w * surrogate_->lighting(layout, world) + (1 - w) * g;
+    using Correction = LightSurrogate::Correction;
+    auto costOf = [&](const Layout& layout, const std::vector<Transform>& world, double g, const Correction& correction) {
+        return w * surrogate_->lighting(layout, world, correction) + (1 - w) * g;
     };
     // What the tables hold still (a monitor on its desk) stands at the scene's placement
     // and stays there: the traced chain turns it.
@@ -457,6 +461,13 @@ Layout Optimizer::plannedStart(Layout start, const std::atomic<bool>* cancel) {
         }
         return false;
     };
+    // A plan's state: its own random stream and rules' cache, so that plans run at once
+    // and each draws the same numbers whatever runs beside it.
+    struct Planner {
+        Rng rng;
+        GeometryEvaluator geometry;
+        Correction correction;  // from its look (empty: none yet)
+    };
     // A chain of `n` proposals from `from` at the schedule's temperatures from proposal
     // `skip` of skip + n on: its best feasible layout, its stand-in cost (kInf: never
     // feasible) and G there.
@@ -464,12 +475,14 @@ Layout Optimizer::plannedStart(Layout start, const std::atomic<bool>* cancel) {
         Layout layout;
         double cost = kInf, geometry = 0;
     };
-    auto chain = [&](Layout from, int n, int skip) {
+    auto chain = [&](Planner& planner, Layout from, int n, int skip) {
+        GeometryEvaluator& geometry = planner.geometry;
+        Rng& rng = planner.rng;
         std::vector<Transform> world = worldTransforms(*scene_, from);
-        const GeometryResult g = geometry_.evaluate(world);
-        geometry_.commit();
+        const GeometryResult g = geometry.evaluate(world);
+        geometry.commit();
         bool feasible = !g.rejected;
-        double violation = g.violation, cost = feasible ? costOf(from, world, g.cost) : kInf;
+        double violation = g.violation, cost = feasible ? costOf(from, world, g.cost, planner.correction) : kInf;
         Planned best{from, cost, g.cost};
         for (int i = 0; i < n; ++i) {
             const double t = options_.schedule.temperature(skip + i, skip + n);
@@ -478,22 +491,22 @@ Layout Optimizer::plannedStart(Layout start, const std::atomic<bool>* cancel) {
             const Proposal p = moves.propose(proposed, rng);
             if (!p.valid || movesHeld(proposed)) continue;
             world = worldTransforms(*scene_, proposed);
-            const GeometryResult pg = geometry_.evaluate(world);
+            const GeometryResult pg = geometry.evaluate(world);
             double proposedCost = kInf;
             bool accept = false;
             if (!feasible) {
                 accept = !pg.rejected || pg.violation <= violation;
-                if (!pg.rejected) proposedCost = costOf(proposed, world, pg.cost);
+                if (!pg.rejected) proposedCost = costOf(proposed, world, pg.cost, planner.correction);
             } else if (!pg.rejected) {
-                proposedCost = costOf(proposed, world, pg.cost);
+                proposedCost = costOf(proposed, world, pg.cost, planner.correction);
                 const double logA = -(proposedCost - cost) / t + p.logHastings;
                 accept = logA >= 0 || rng.uniform() < std::exp(logA);
             }
             if (!accept) {
-                geometry_.revert();
+                geometry.revert();
                 continue;
             }
-            geometry_.commit();
+            geometry.commit();
             from = std::move(proposed);
             feasible = feasible || !pg.rejected;
             violation = pg.violation, cost = proposedCost;
@@ -515,13 +528,13 @@ Layout Optimizer::plannedStart(Layout start, const std::atomic<bool>* cancel) {
         e.cost = scene_->objective.cost(e.lighting, e.geometry);
         return e;
     };
-    // Several plans, each from the drawn start on its own stretch of the plan's random
-    // stream. Each is looked at once, its surrogate scaled by what the look read (the
-    // furniture's own shadows on a desk, what the other pieces add to a screen), and its
-    // last quarter runs again; the refined plan is looked at too. The start is the plan
-    // whose look reads the lowest C: the surrogate's error is as large as the differences
-    // between arrangements, the looks' is not. A look that meets every goal as the
-    // run's stop reads it ends the planning.
+    // Several plans, each from the drawn start on its own random stream. Each is looked
+    // at once, its surrogate scaled by what the look read (the furniture's own shadows on
+    // a desk, what the other pieces add to a screen), and its last quarter runs again; the
+    // refined plan is looked at too. The start is the plan whose look reads the lowest C:
+    // the surrogate's error is as large as the differences between arrangements, the
+    // looks' is not. A look that meets every goal as the run's stop reads it ends the
+    // planning.
     const int n = options_.planIterations;
     Planned chosen;
     Evaluation chosenLook;
@@ -545,24 +558,43 @@ Layout Optimizer::plannedStart(Layout start, const std::atomic<bool>* cancel) {
             chosen = plan, chosenLook = e, chosenMargined = m;
         return false;
     };
-    for (int plan = 0; plan < options_.plans; ++plan) {
-        if (plan > 0 && cancel && cancel->load(std::memory_order_relaxed)) break;
-        surrogate_->clearCorrection();
-        Planned best = chain(start, n, 0);
-        if (!std::isfinite(best.cost)) continue;  // never feasible
-        const Evaluation seen = look(best);
-        if (consider(best, seen)) break;
-        if (seen.samplers.samplers.size() != scene_->samplers.size()) continue;
-        surrogate_->correct(best.layout, worldTransforms(*scene_, best.layout), seen.samplers.samplers);
+    // The plans go kPlansAtOnce at a time: their chains at once (the looks trace on every
+    // thread themselves), then their looks in the plans' order. The batch is fixed, not the
+    // thread count, so that the same seed gives the same plan on any machine.
+    bool solvedPlan = false;
+    for (int first = 0; first < options_.plans && !solvedPlan; first += kPlansAtOnce) {
+        if (first > 0 && cancel && cancel->load(std::memory_order_relaxed)) break;
+        const int count = std::min(kPlansAtOnce, options_.plans - first);
+        std::vector<Planner> planners;
+        for (int k = 0; k < count; ++k)
+            planners.push_back({Rng(hashValues({options_.seed, kStreamTag, kPlanStream, uint64_t(first + k)})), geometry_, {}});
+        std::vector<Planned> best(static_cast<size_t>(count)), refined(static_cast<size_t>(count));
+        parallelFor(size_t(count), [&](size_t k) { best[k] = chain(planners[k], start, n, 0); });
+        std::vector<bool> refine(size_t(count), false);
+        int looked = first + count;  // or fewer, where a look ends the planning
+        for (size_t k = 0; k < size_t(count) && !solvedPlan; ++k) {
+            if (!std::isfinite(best[k].cost)) continue;  // never feasible
+            const Evaluation seen = look(best[k]);
+            solvedPlan = consider(best[k], seen);
+            if (solvedPlan) looked = first + int(k) + 1;
+            if (solvedPlan || seen.samplers.samplers.size() != scene_->samplers.size()) continue;
+            planners[k].correction =
+                surrogate_->correction(best[k].layout, worldTransforms(*scene_, best[k].layout), seen.samplers.samplers);
+            refine[k] = true;
+        }
         const int quarter = n / 4;
-        Planned refined = chain(best.layout, quarter, n - quarter);
-        if (!std::isfinite(refined.cost)) continue;
-        if (consider(refined, look(refined))) break;
+        if (!solvedPlan)
+            parallelFor(size_t(count), [&](size_t k) {
+                if (refine[k]) refined[k] = chain(planners[k], best[k].layout, quarter, n - quarter);
+            });
+        for (size_t k = 0; k < size_t(count) && !solvedPlan; ++k)
+            if (refine[k] && std::isfinite(refined[k].cost) && consider(refined[k], look(refined[k])))
+                solvedPlan = true, looked = first + int(k) + 1;
+        if (progress.planning && std::isfinite(chosen.cost)) progress.planning(looked, options_.plans, chosenLook.cost);
     }
     if (!std::isfinite(chosen.cost)) return start;  // never feasible: the chain repairs it
     planned_ = true;
     planLook_ = chosenLook;
-    // The rules' cache stands at the chain's last layout: the caller evaluates the plan from there.
     return chosen.layout;
 }
 
@@ -848,6 +880,22 @@ bool Optimizer::enoughSuggestions() const {
 }
 
 Evaluation Optimizer::confirmBest() {
+    // A zero the same as one an independent measurement already refuted (within the
+    // candidates' separation) reads as that measurement did: near a band's edge the
+    // chain's estimates read 0 again and again where the light does not, and each
+    // measurement at the selection's paths costs hundreds of the chain's steps. Only
+    // a refutation is borrowed; a zero is always measured at its own layout.
+    for (const Candidate& c : candidates_.all()) {
+        if (!c.independent || !sameCandidate(*scene_, c.layout, best_, options_.candidateSeparation)) continue;
+        Evaluation borrowed = *c.independent;
+        borrowed.geometry = bestEval_.geometry;
+        borrowed.cost = scene_->objective.cost(borrowed.lighting, borrowed.geometry);
+        const Evaluation refuted = asConfirmed(bestEval_, borrowed);
+        if (refuted.cost > 0) {
+            ++borrowedRefutations_;
+            return refuted;
+        }
+    }
     // A noisy estimate of L reaches 0 before the layout does: measure it again,
     // independently of the search's random numbers.
     ++confirmations_;
@@ -982,6 +1030,7 @@ OptimizerResult Optimizer::resultOf(StopReason stop, std::vector<Snapshot> snaps
     r.startEvaluation = startEval_;
     r.iterations = iteration_;
     r.confirmations = confirmations_;
+    r.borrowedRefutations = borrowedRefutations_;
     r.independentMeasurements = independentMeasurements_;
     r.samplerRanges = samplerRanges_;
     r.samplerRanges.resize(scene_->samplers.size());

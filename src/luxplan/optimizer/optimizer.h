@@ -239,6 +239,7 @@ struct OptimizerResult {
     int iterations = 0;  // proposals made
     int bestIteration = 0;
     int confirmations = 0;  // zero-cost estimates measured again before stopping
+    int borrowedRefutations = 0;  // zero-cost estimates refuted by an earlier measurement of the same candidate
     int independentMeasurements = 0;  // confirmations, candidate selection and report together
     double seconds = 0;
     double startSeconds = 0;  // of `seconds`, the start's: its draws, the plan and its measurement
@@ -258,6 +259,15 @@ struct OptimizerResult {
     OptimizerOptions options;
 };
 
+// What initialize() tells while it works; each may be empty. `drawing`: the uniform
+// start's draws (how many so far, of at most how many) while none passes the geometric
+// rules, about twice a second. `planning`: the planned start's plans looked at so far, of
+// how many, and the lowest C a look read (after each pair of plans).
+struct StartProgress {
+    std::function<void(int drawn, int most)> drawing;
+    std::function<void(int looked, int plans, double lowestC)> planning;
+};
+
 class Optimizer {
 public:
     // `lighting` may be null: L = 0 (so it is when the scene has no samplers).
@@ -265,10 +275,8 @@ public:
 
     // The start state (StartFrom); resets the counters and random streams, so a
     // second call starts the same chain again. Called by run() when not called before.
-    // `drawing` hears of the uniform start's draws (how many so far, of at most how
-    // many) while none passes the geometric rules, about twice a second.
-    // `cancel` ends the planned start between its plans.
-    void initialize(const std::function<void(int drawn, int most)>& drawing = {}, const std::atomic<bool>* cancel = nullptr);
+    // `cancel` ends the planned start between its pairs of plans.
+    void initialize(const StartProgress& progress = {}, const std::atomic<bool>* cancel = nullptr);
     // One proposal at the level the hierarchy schedule gives, then the Metropolis test.
     void step();
     // Runs to the iteration limit, C = 0 or cancellation (checked before every
@@ -310,7 +318,7 @@ private:
     double differenceVariance(const Evaluation& a, const Evaluation& b) const;
     void noteNoise(const Evaluation& proposed);
     // The polish: from the best layout, zero temperature, fine steps (OptimizerOptions::polishShare).
-    Layout plannedStart(Layout start, const std::atomic<bool>* cancel);
+    Layout plannedStart(Layout start, const StartProgress& progress, const std::atomic<bool>* cancel);
     void startPolish();
     // The polish's level of statistics (added on first use).
     LevelStats& polishLevel();
@@ -395,7 +403,7 @@ private:
     Evaluation currentEval_, bestEval_, startEval_;
     bool feasible_ = false;
     int iteration_ = 0, bestIteration_ = 0, traceEvery_ = 1;
-    int confirmations_ = 0, independentMeasurements_ = 0;
+    int confirmations_ = 0, borrowedRefutations_ = 0, independentMeasurements_ = 0;
     int64_t lightingEvaluations_ = 0;
     std::vector<TracePoint> trace_;
     Candidates candidates_;

@@ -122,6 +122,7 @@ std::string reportJson(const Scene& scene, const OptimizerResult& r, const RunSe
     j["iterations"] = r.iterations;
     j["best_iteration"] = r.bestIteration;
     j["zero_cost_confirmations"] = r.confirmations;
+    j["zero_cost_refutations_borrowed"] = r.borrowedRefutations;
     // How the result was chosen: the search's estimate of it, and every candidate with
     // its independent re-measure (the result is measured once more for C above).
     j["search_estimate"] = {{"C", json::numberOrNull(r.bestSearchEvaluation.cost)}, {"L", json::numberOrNull(r.bestSearchEvaluation.lighting)},
