@@ -565,14 +565,15 @@ Layout Optimizer::plannedStart(Layout start, const StartProgress& progress, cons
     for (int first = 0; first < options_.plans && !solvedPlan; first += kPlansAtOnce) {
         if (first > 0 && cancel && cancel->load(std::memory_order_relaxed)) break;
         const int count = std::min(kPlansAtOnce, options_.plans - first);
+        const auto batch = static_cast<size_t>(count);
         std::vector<Planner> planners;
         for (int k = 0; k < count; ++k)
             planners.push_back({Rng(hashValues({options_.seed, kStreamTag, kPlanStream, uint64_t(first + k)})), geometry_, {}});
-        std::vector<Planned> best(static_cast<size_t>(count)), refined(static_cast<size_t>(count));
-        parallelFor(size_t(count), [&](size_t k) { best[k] = chain(planners[k], start, n, 0); });
-        std::vector<bool> refine(size_t(count), false);
+        std::vector<Planned> best(batch), refined(batch);
+        parallelFor(batch, [&](size_t k) { best[k] = chain(planners[k], start, n, 0); });
+        std::vector<bool> refine(batch, false);
         int looked = first + count;  // or fewer, where a look ends the planning
-        for (size_t k = 0; k < size_t(count) && !solvedPlan; ++k) {
+        for (size_t k = 0; k < batch && !solvedPlan; ++k) {
             if (!std::isfinite(best[k].cost)) continue;  // never feasible
             const Evaluation seen = look(best[k]);
             solvedPlan = consider(best[k], seen);
@@ -584,10 +585,10 @@ Layout Optimizer::plannedStart(Layout start, const StartProgress& progress, cons
         }
         const int quarter = n / 4;
         if (!solvedPlan)
-            parallelFor(size_t(count), [&](size_t k) {
+            parallelFor(batch, [&](size_t k) {
                 if (refine[k]) refined[k] = chain(planners[k], best[k].layout, quarter, n - quarter);
             });
-        for (size_t k = 0; k < size_t(count) && !solvedPlan; ++k)
+        for (size_t k = 0; k < batch && !solvedPlan; ++k)
             if (refine[k] && std::isfinite(refined[k].cost) && consider(refined[k], look(refined[k])))
                 solvedPlan = true, looked = first + int(k) + 1;
         if (progress.planning && std::isfinite(chosen.cost)) progress.planning(looked, options_.plans, chosenLook.cost);
